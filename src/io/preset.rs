@@ -1,0 +1,217 @@
+//! Presets: TOML files of settings. A name is a file stem in `assets/presets/` (the shipped ones
+//! are also compiled in, so the binary works from any directory); a path is read as it is.
+
+use super::settings::{ImpactSetup, SettingValue};
+use std::fmt;
+use std::path::Path;
+
+/// Presets shipped with Pounding Lab, compiled in.
+pub const EMBEDDED: &[(&str, &str)] = &[
+    (
+        "paper-base",
+        include_str!("../../assets/presets/paper-base.toml"),
+    ),
+    (
+        "equal-bars",
+        include_str!("../../assets/presets/equal-bars.toml"),
+    ),
+    (
+        "short-bars",
+        include_str!("../../assets/presets/short-bars.toml"),
+    ),
+    (
+        "long-bars",
+        include_str!("../../assets/presets/long-bars.toml"),
+    ),
+    (
+        "stiff-linear",
+        include_str!("../../assets/presets/stiff-linear.toml"),
+    ),
+    (
+        "paper-slabs",
+        include_str!("../../assets/presets/paper-slabs.toml"),
+    ),
+];
+
+/// The default scene.
+pub const DEFAULT_PRESET: &str = "paper-base";
+
+/// A preset that could not be used: which file, which line, which key, why.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PresetError {
+    pub source: String,
+    pub line: Option<usize>,
+    pub key: Option<String>,
+    pub message: String,
+}
+
+impl fmt::Display for PresetError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}", self.source)?;
+        if let Some(l) = self.line {
+            write!(f, ", line {l}")?;
+        }
+        if let Some(k) = &self.key {
+            write!(f, ", {k}")?;
+        }
+        write!(f, ": {}", self.message)
+    }
+}
+
+impl std::error::Error for PresetError {}
+
+/// Finds a preset's text: an existing file path, else `assets/presets/NAME.toml` under the
+/// working directory, else a compiled-in preset. Returns (text, where it came from).
+pub fn find(name_or_path: &str) -> Result<(String, String), PresetError> {
+    let path = Path::new(name_or_path);
+    if path.is_file() {
+        return std::fs::read_to_string(path)
+            .map(|t| (t, name_or_path.to_string()))
+            .map_err(|e| PresetError {
+                source: name_or_path.to_string(),
+                line: None,
+                key: None,
+                message: format!("cannot read: {e}"),
+            });
+    }
+    let local = Path::new("assets/presets").join(format!("{name_or_path}.toml"));
+    if local.is_file()
+        && let Ok(text) = std::fs::read_to_string(&local)
+    {
+        return Ok((text, local.display().to_string()));
+    }
+    if let Some((name, text)) = EMBEDDED.iter().find(|(n, _)| *n == name_or_path) {
+        return Ok((text.to_string(), format!("preset {name}")));
+    }
+    let names: Vec<&str> = EMBEDDED.iter().map(|(n, _)| *n).collect();
+    Err(PresetError {
+        source: name_or_path.to_string(),
+        line: None,
+        key: None,
+        message: format!("no such file or preset; presets: {}", names.join(", ")),
+    })
+}
+
+fn line_of(text: &str, offset: usize) -> usize {
+    text[..offset.min(text.len())]
+        .bytes()
+        .filter(|&b| b == b'\n')
+        .count()
+        + 1
+}
+
+/// The settings of a preset as (key, value, line), material keys first so that explicit E, nu
+/// and rho in the same table override them.
+pub fn parse(text: &str, source: &str) -> Result<Vec<(String, SettingValue, usize)>, PresetError> {
+    use toml::de::{DeTable, DeValue};
+    let err = |line, key: Option<String>, message: String| PresetError {
+        source: source.to_string(),
+        line,
+        key,
+        message,
+    };
+    let table = DeTable::parse(text).map_err(|e| {
+        err(
+            e.span().map(|s| line_of(text, s.start)),
+            None,
+            e.message().to_string(),
+        )
+    })?;
+    let mut out = Vec::new();
+    let scalar = |key: &str, v: &DeValue, line: usize| -> Result<SettingValue, PresetError> {
+        match v {
+            DeValue::String(s) => Ok(SettingValue::Text(s.to_string())),
+            DeValue::Boolean(b) => Ok(SettingValue::Bool(*b)),
+            DeValue::Integer(i) => i64::from_str_radix(&i.as_str().replace('_', ""), i.radix())
+                .map(|x| SettingValue::Number(x as f64))
+                .map_err(|e| {
+                    err(
+                        Some(line),
+                        Some(key.to_string()),
+                        format!("bad integer: {e}"),
+                    )
+                }),
+            DeValue::Float(x) => {
+                let t = x.as_str().replace('_', "");
+                let t = match t.as_str() {
+                    "nan" | "+nan" | "-nan" => "NaN".to_string(),
+                    "inf" | "+inf" => "inf".to_string(),
+                    _ => t,
+                };
+                t.parse::<f64>().map(SettingValue::Number).map_err(|e| {
+                    err(
+                        Some(line),
+                        Some(key.to_string()),
+                        format!("bad number: {e}"),
+                    )
+                })
+            }
+            _ => Err(err(
+                Some(line),
+                Some(key.to_string()),
+                "expected a number, a word or true/false".into(),
+            )),
+        }
+    };
+    for (k, v) in table.get_ref().iter() {
+        let name = k.get_ref().to_string();
+        let line = line_of(text, k.span().start);
+        match v.get_ref() {
+            DeValue::Table(inner) => {
+                let mut keys = std::collections::HashSet::new();
+                for (ik, iv) in inner.iter() {
+                    let full = format!("{name}.{}", ik.get_ref());
+                    let l = line_of(text, ik.span().start);
+                    keys.insert(ik.get_ref().to_string());
+                    out.push((full.clone(), scalar(&full, iv.get_ref(), l)?, l));
+                }
+                if keys.contains("radius") && keys.contains("area") {
+                    return Err(err(
+                        Some(line),
+                        Some(format!("{name}.area")),
+                        "give radius or area, not both".into(),
+                    ));
+                }
+            }
+            // Descriptive metadata, shown by front ends, not settings.
+            DeValue::String(_) if name == "name" || name == "description" => {}
+            other => out.push((name.clone(), scalar(&name, other, line)?, line)),
+        }
+    }
+    out.sort_by_key(|(k, _, _)| !k.ends_with(".material"));
+    Ok(out)
+}
+
+/// Loads a preset by name or path onto a fresh default setup.
+pub fn load(name_or_path: &str) -> Result<ImpactSetup, PresetError> {
+    let (text, source) = find(name_or_path)?;
+    let mut setup = ImpactSetup::default();
+    apply_text(&mut setup, &text, &source)?;
+    Ok(setup)
+}
+
+/// Applies a preset's text onto a setup.
+pub fn apply_text(setup: &mut ImpactSetup, text: &str, source: &str) -> Result<(), PresetError> {
+    for (key, value, line) in parse(text, source)? {
+        setup.apply(&key, &value).map_err(|e| PresetError {
+            source: source.to_string(),
+            line: Some(line),
+            key: Some(e.field.clone()),
+            message: e.message,
+        })?;
+    }
+    Ok(())
+}
+
+/// The description line of a compiled-in preset.
+pub fn description(text: &str) -> Option<String> {
+    let table = toml::de::DeTable::parse(text).ok()?;
+    table
+        .get_ref()
+        .iter()
+        .find(|(k, _)| k.get_ref() == "description")
+        .and_then(|(_, v)| match v.get_ref() {
+            toml::de::DeValue::String(s) => Some(s.to_string()),
+            _ => None,
+        })
+}

@@ -1,0 +1,303 @@
+//! `KEY = VALUE` settings: the one place where named keys meet the scenario. Presets (TOML) and
+//! `--set KEY=VALUE` overrides both go through [`ImpactSetup::apply`], so they accept exactly the
+//! same keys with exactly the same checks.
+
+use crate::model::bar::{EndShape, Section};
+use crate::model::contact::LawKind;
+use crate::model::impact::ModelKind;
+use crate::model::material::MaterialPreset;
+use crate::model::scenario::{ImpactScenario, InputError, Reading};
+
+/// A value as typed by a user: TOML gives it typed, the command line as text.
+#[derive(Debug, Clone, PartialEq)]
+pub enum SettingValue {
+    Number(f64),
+    Text(String),
+    Bool(bool),
+}
+
+impl SettingValue {
+    /// Reads command-line text: a number where it parses as one, a boolean for true/false.
+    pub fn from_cli(text: &str) -> Self {
+        let t = text.trim();
+        match t {
+            "true" => SettingValue::Bool(true),
+            "false" => SettingValue::Bool(false),
+            _ => t
+                .parse::<f64>()
+                .map(SettingValue::Number)
+                .unwrap_or_else(|_| SettingValue::Text(t.to_string())),
+        }
+    }
+
+    fn describe(&self) -> String {
+        match self {
+            SettingValue::Number(x) => x.to_string(),
+            SettingValue::Text(s) => format!("'{s}'"),
+            SettingValue::Bool(b) => b.to_string(),
+        }
+    }
+}
+
+/// Every key, with what it sets. Keys for both bars are listed once with `barN`.
+pub const IMPACT_KEYS: &[(&str, &str)] = &[
+    (
+        "model",
+        "sears|wave|lumped-hertz|lumped-linear|kelvin|stereo|fe",
+    ),
+    (
+        "barN.material",
+        "steel|concrete: sets E, nu and rho (later keys override them)",
+    ),
+    ("barN.youngs_modulus", "Young's modulus E [Pa], > 0"),
+    ("barN.poisson_ratio", "Poisson's ratio nu, in (-1, 0.5)"),
+    ("barN.density", "density rho [kg/m^3], > 0"),
+    ("barN.length", "length L [m], > 0"),
+    ("barN.radius", "radius of a circular rod [m], > 0"),
+    (
+        "barN.area",
+        "cross-section area of any section [m^2], > 0 (instead of radius)",
+    ),
+    (
+        "barN.added_mass",
+        "superimposed mass spread over the bar [kg], >= 0",
+    ),
+    (
+        "barN.velocity",
+        "velocity before impact [m/s], positive to the right",
+    ),
+    (
+        "barN.end_radius",
+        "radius of the rounded impacting end [m], or flat",
+    ),
+    ("contact.law", "hertz|linear"),
+    (
+        "contact.stiffness",
+        "contact stiffness (N/m^1.5 hertz, N/m linear), or auto (Hertz from the ends, linear from E A/(L/n))",
+    ),
+    (
+        "contact.zone_scale",
+        "multiplier on Sears' zone length d, > 0",
+    ),
+    (
+        "contact.zone_length",
+        "zone length d for both bars [m] instead of Sears' Eq. 5, or auto",
+    ),
+    (
+        "contact.divisions",
+        "n in the paper's linear stiffness E A/(L/n), > 0",
+    ),
+    (
+        "contact.restitution",
+        "target restitution for kelvin and stereo, in [0, 1]",
+    ),
+    ("sears.reading", "paper|collocated|end"),
+    ("solver.dt", "time step [s], > 0"),
+    (
+        "solver.window",
+        "simulated span [s], >= 0; 0 runs until the bars separate for good",
+    ),
+    ("solver.max_steps", "step budget, >= 1"),
+    (
+        "solver.refine",
+        "true|false: refine a step too coarse for the contact's time scale",
+    ),
+    ("fe.segments", "finite elements per bar, in [1, 1000000]"),
+    (
+        "fe.courant",
+        "fraction of the explicit stability limit, in (0, 1)",
+    ),
+];
+
+/// A scenario and the model to run it with.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ImpactSetup {
+    pub scenario: ImpactScenario,
+    pub model: ModelKind,
+}
+
+impl Default for ImpactSetup {
+    fn default() -> Self {
+        ImpactSetup {
+            scenario: ImpactScenario::default(),
+            model: ModelKind::Sears,
+        }
+    }
+}
+
+fn number(key: &str, v: &SettingValue) -> Result<f64, InputError> {
+    match v {
+        SettingValue::Number(x) => Ok(*x),
+        other => Err(InputError::new(
+            key,
+            format!("expected a number, got {}", other.describe()),
+        )),
+    }
+}
+
+fn text<'a>(key: &str, v: &'a SettingValue) -> Result<&'a str, InputError> {
+    match v {
+        SettingValue::Text(s) => Ok(s),
+        other => Err(InputError::new(
+            key,
+            format!("expected a word, got {}", other.describe()),
+        )),
+    }
+}
+
+fn count(key: &str, v: &SettingValue) -> Result<usize, InputError> {
+    let x = number(key, v)?;
+    if x.is_finite() && x >= 0.0 && x.fract() == 0.0 && x <= 1e15 {
+        Ok(x as usize)
+    } else {
+        Err(InputError::new(
+            key,
+            format!("expected a whole number >= 0, got {x}"),
+        ))
+    }
+}
+
+fn choice<T: Copy>(
+    key: &str,
+    v: &SettingValue,
+    parse: impl Fn(&str) -> Option<T>,
+    allowed: &str,
+) -> Result<T, InputError> {
+    let s = text(key, v)?;
+    parse(s).ok_or_else(|| InputError::new(key, format!("unknown value '{s}': allowed {allowed}")))
+}
+
+impl ImpactSetup {
+    /// Sets one key. Unknown keys and ill-typed values are errors naming the key; range checks
+    /// happen in [`ImpactScenario::validate`] so that they see the final combination.
+    pub fn apply(&mut self, key: &str, value: &SettingValue) -> Result<(), InputError> {
+        let sc = &mut self.scenario;
+        if key == "model" {
+            self.model = choice(
+                key,
+                value,
+                ModelKind::from_name,
+                "sears|wave|lumped-hertz|lumped-linear|kelvin|stereo|fe",
+            )?;
+            return Ok(());
+        }
+        if let Some((bar_name, field)) = key.split_once('.')
+            && (bar_name == "bar1" || bar_name == "bar2")
+        {
+            let bar = if bar_name == "bar1" {
+                &mut sc.bar1
+            } else {
+                &mut sc.bar2
+            };
+            match field {
+                "material" => {
+                    bar.material = choice(
+                        key,
+                        value,
+                        |s| MaterialPreset::from_name(s).map(|m| m.material()),
+                        "steel|concrete",
+                    )?
+                }
+                "youngs_modulus" => bar.material.youngs_modulus_pa = number(key, value)?,
+                "poisson_ratio" => bar.material.poisson_ratio = number(key, value)?,
+                "density" => bar.material.density_kg_m3 = number(key, value)?,
+                "length" => bar.length_m = number(key, value)?,
+                "radius" => {
+                    bar.section = Section::Circular {
+                        radius_m: number(key, value)?,
+                    }
+                }
+                "area" => {
+                    bar.section = Section::Area {
+                        area_m2: number(key, value)?,
+                    }
+                }
+                "added_mass" => bar.added_mass_kg = number(key, value)?,
+                "velocity" => bar.velocity_m_s = number(key, value)?,
+                "end_radius" => {
+                    bar.end = match value {
+                        SettingValue::Text(s) if s == "flat" => EndShape::Flat,
+                        SettingValue::Number(r) => EndShape::Rounded { radius_m: *r },
+                        other => {
+                            return Err(InputError::new(
+                                key,
+                                format!("expected a radius in m or flat, got {}", other.describe()),
+                            ));
+                        }
+                    }
+                }
+                _ => return Err(unknown(key)),
+            }
+            return Ok(());
+        }
+        match key {
+            "contact.law" => {
+                sc.contact.law = choice(
+                    key,
+                    value,
+                    |s| {
+                        [LawKind::Hertz, LawKind::Linear]
+                            .into_iter()
+                            .find(|l| l.name() == s)
+                    },
+                    "hertz|linear",
+                )?
+            }
+            "contact.stiffness" => {
+                sc.contact.stiffness = match value {
+                    SettingValue::Text(s) if s == "auto" => None,
+                    other => Some(number(key, other)?),
+                }
+            }
+            "contact.zone_scale" => sc.contact.zone_scale = number(key, value)?,
+            "contact.zone_length" => {
+                sc.contact.zone_length_m = match value {
+                    SettingValue::Text(s) if s == "auto" => None,
+                    other => Some(number(key, other)?),
+                }
+            }
+            "contact.divisions" => sc.contact.divisions = number(key, value)?,
+            "contact.restitution" => sc.contact.restitution = number(key, value)?,
+            "sears.reading" => {
+                sc.reading = choice(key, value, Reading::from_name, "paper|collocated|end")?
+            }
+            "solver.dt" => sc.solver.dt_s = number(key, value)?,
+            "solver.window" => sc.solver.window_s = number(key, value)?,
+            "solver.max_steps" => sc.solver.max_steps = count(key, value)?,
+            "solver.refine" => {
+                sc.solver.refine = match value {
+                    SettingValue::Bool(b) => *b,
+                    other => {
+                        return Err(InputError::new(
+                            key,
+                            format!("expected true or false, got {}", other.describe()),
+                        ));
+                    }
+                }
+            }
+            "fe.segments" => sc.fe.segments = count(key, value)?,
+            "fe.courant" => sc.fe.courant = number(key, value)?,
+            _ => return Err(unknown(key)),
+        }
+        Ok(())
+    }
+
+    /// Applies `KEY=VALUE` text from the command line.
+    pub fn apply_assignment(&mut self, assignment: &str) -> Result<(), InputError> {
+        let (key, value) = assignment.split_once('=').ok_or_else(|| {
+            InputError::new(assignment, "expected KEY=VALUE (for example bar1.length=2)")
+        })?;
+        self.apply(key.trim(), &SettingValue::from_cli(value))
+    }
+}
+
+fn unknown(key: &str) -> InputError {
+    let known: Vec<&str> = IMPACT_KEYS.iter().map(|(k, _)| *k).collect();
+    InputError::new(
+        key,
+        format!(
+            "unknown key; known keys: {} (barN is bar1 or bar2)",
+            known.join(", ")
+        ),
+    )
+}

@@ -1,0 +1,183 @@
+//! Contact laws at the contact surface: force as a function of the approach delta.
+//!
+//! Every law is zero for delta <= 0 (no tension, no adhesion) and increasing for delta > 0, so
+//! the implicit step equation `delta + beta f(delta) = rhs` (beta >= 0) has exactly one root;
+//! [`ContactLaw::solve_implicit`] finds it.
+
+use super::bar::Bar;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LawKind {
+    /// F = k delta^(3/2), rounded ends.
+    Hertz,
+    /// F = kL delta, flat ends (the paper's Eq. 10).
+    Linear,
+}
+
+impl LawKind {
+    pub fn name(self) -> &'static str {
+        match self {
+            LawKind::Hertz => "hertz",
+            LawKind::Linear => "linear",
+        }
+    }
+}
+
+/// A contact law with its stiffness (N/m^1.5 for Hertz, N/m for linear).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactLaw {
+    pub kind: LawKind,
+    pub stiffness: f64,
+}
+
+impl ContactLaw {
+    pub fn hertz(k: f64) -> Self {
+        ContactLaw {
+            kind: LawKind::Hertz,
+            stiffness: k,
+        }
+    }
+
+    pub fn linear(k: f64) -> Self {
+        ContactLaw {
+            kind: LawKind::Linear,
+            stiffness: k,
+        }
+    }
+
+    #[inline]
+    pub fn force(&self, delta: f64) -> f64 {
+        if delta <= 0.0 {
+            return 0.0;
+        }
+        match self.kind {
+            LawKind::Hertz => self.stiffness * delta * delta.sqrt(),
+            LawKind::Linear => self.stiffness * delta,
+        }
+    }
+
+    /// dF/d delta.
+    #[inline]
+    pub fn tangent(&self, delta: f64) -> f64 {
+        if delta <= 0.0 {
+            return 0.0;
+        }
+        match self.kind {
+            LawKind::Hertz => 1.5 * self.stiffness * delta.sqrt(),
+            LawKind::Linear => self.stiffness,
+        }
+    }
+
+    /// Tangent stiffness at a given force level (used for the validity number a*tau).
+    pub fn tangent_at_force(&self, force: f64) -> f64 {
+        self.tangent(self.approach_at_force(force))
+    }
+
+    /// Inverse of the law: the approach that carries a force.
+    pub fn approach_at_force(&self, force: f64) -> f64 {
+        if force <= 0.0 {
+            return 0.0;
+        }
+        match self.kind {
+            LawKind::Hertz => (force / self.stiffness).powf(2.0 / 3.0),
+            LawKind::Linear => force / self.stiffness,
+        }
+    }
+
+    /// Elastic energy stored at approach delta [J].
+    pub fn energy(&self, delta: f64) -> f64 {
+        if delta <= 0.0 {
+            return 0.0;
+        }
+        match self.kind {
+            LawKind::Hertz => 0.4 * self.stiffness * delta * delta * delta.sqrt(),
+            LawKind::Linear => 0.5 * self.stiffness * delta * delta,
+        }
+    }
+
+    /// The unique root of `delta + beta f(delta) = rhs` for beta >= 0. `guess` is a hint (the
+    /// previous step's delta); any value works.
+    #[inline]
+    pub fn solve_implicit(&self, beta: f64, rhs: f64, guess: f64) -> f64 {
+        if rhs <= 0.0 {
+            return rhs;
+        }
+        if beta == 0.0 {
+            return rhs;
+        }
+        let bk = beta * self.stiffness;
+        match self.kind {
+            LawKind::Linear => rhs / (1.0 + bk),
+            LawKind::Hertz => {
+                // With s = sqrt(delta) the equation is the cubic bk s^3 + s^2 = rhs: convex and
+                // increasing for s >= 0, so Newton from above converges monotonically, without
+                // a square root per iteration.
+                let upper = rhs.sqrt().min((rhs / bk).cbrt());
+                let mut s = if guess > 0.0 {
+                    guess.sqrt().min(upper)
+                } else {
+                    upper
+                };
+                for _ in 0..60 {
+                    let s2 = s * s;
+                    let g = bk * s2 * s + s2 - rhs;
+                    let dg = 3.0 * bk * s2 + 2.0 * s;
+                    if dg <= 0.0 {
+                        break;
+                    }
+                    let step = g / dg;
+                    let next = (s - step).max(0.0);
+                    if (next - s).abs() <= 1e-15 * s.max(f64::MIN_POSITIVE) {
+                        s = next;
+                        break;
+                    }
+                    s = next;
+                }
+                s * s
+            }
+        }
+    }
+}
+
+/// Hertz stiffness k = (4/3) E* sqrt(R*) for the two impacting ends (paper Eqs. 3-4), or `None`
+/// when both ends are flat (Hertz theory needs a curved surface).
+pub fn hertz_stiffness(bar1: &Bar, bar2: &Bar) -> Option<f64> {
+    let curvature = bar1.end.curvature_per_m() + bar2.end.curvature_per_m();
+    if curvature <= 0.0 {
+        return None;
+    }
+    let compliance =
+        |b: &Bar| (1.0 - b.material.poisson_ratio.powi(2)) / b.material.youngs_modulus_pa;
+    let e_star = 1.0 / (compliance(bar1) + compliance(bar2));
+    let r_star = 1.0 / curvature;
+    Some(4.0 / 3.0 * e_star * r_star.sqrt())
+}
+
+/// The paper's linear contact stiffness: each bar contributes E A / (L / n), the two springs in
+/// series. With n = 10, E = 25 GPa, A = 8 m x 0.15 m and L = 10 m this gives 15 GN/m.
+pub fn paper_linear_stiffness(bar1: &Bar, bar2: &Bar, divisions: f64) -> f64 {
+    let k = |b: &Bar| b.axial_rigidity_n() * divisions / b.length_m;
+    let (k1, k2) = (k(bar1), k(bar2));
+    k1 * k2 / (k1 + k2)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn implicit_root_satisfies_equation_for_both_laws() {
+        for law in [ContactLaw::hertz(3.4e10), ContactLaw::linear(1e12)] {
+            for &beta in &[0.0, 1e-12, 1e-9, 1e-6, 1.0] {
+                for &rhs in &[-1e-3, 0.0, 1e-9, 1e-6, 3e-4, 1e-2] {
+                    let d = law.solve_implicit(beta, rhs, 1e-5);
+                    let residual = d + beta * law.force(d) - rhs;
+                    assert!(
+                        residual.abs() <= 1e-12 * rhs.abs().max(1e-12),
+                        "{law:?} {beta} {rhs}"
+                    );
+                }
+            }
+        }
+    }
+}

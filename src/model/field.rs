@@ -1,0 +1,151 @@
+//! Stress and particle velocity anywhere in a bar, from its wave history.
+//!
+//! With the history sum H(t) = F(t) + H(t - T) of the force on the impacting end (T = 2l/c),
+//! d'Alembert's solution for a free-free bar gives, at distance x from that end,
+//!   axial force N(x, t) = H(t - x/c) - H(t - (2l - x)/c)   (compression positive),
+//!   velocity change  dv = (H(t - x/c) + H(t - (2l - x)/c)) / Z, directed away from the contact.
+//! Beyond the simulated span the force is taken as zero, so H repeats with period T.
+
+use super::history::sample_at;
+
+/// How a history is stored.
+#[derive(Debug, Clone, PartialEq)]
+pub enum History {
+    /// Samples at t = n dt, n = 0, 1, ...
+    Uniform { dt_s: f64, values: Vec<f64> },
+    /// A step function: `values[k]` holds on [times[k], times[k+1]).
+    Steps { times: Vec<f64>, values: Vec<f64> },
+}
+
+/// The wave state of one bar, enough to evaluate its field at any point and time.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BarWaves {
+    /// Length of the elastic body the waves run in [m].
+    pub body_length_m: f64,
+    /// Length of a massless contact zone before the body (collocated Sears reading), else 0.
+    pub zone_length_m: f64,
+    pub wave_speed_m_s: f64,
+    pub area_m2: f64,
+    pub impedance_n_s_m: f64,
+    /// Rigid-body velocity before impact [m/s].
+    pub initial_velocity_m_s: f64,
+    /// +1 when the force pushes the bar towards +x of the lab (bar 2), -1 for bar 1.
+    pub push_direction: f64,
+    /// H(t) over the simulated span.
+    pub history: History,
+    /// End of the simulated span [s].
+    pub end_s: f64,
+}
+
+impl BarWaves {
+    pub fn round_trip_s(&self) -> f64 {
+        2.0 * self.body_length_m / self.wave_speed_m_s
+    }
+
+    /// Total length, zone included [m].
+    pub fn length_m(&self) -> f64 {
+        self.body_length_m + self.zone_length_m
+    }
+
+    /// H(t): zero before the impact, periodic after the simulated span.
+    pub fn history_at(&self, t_s: f64) -> f64 {
+        if t_s < 0.0 {
+            return 0.0;
+        }
+        let mut t = t_s;
+        let period = self.round_trip_s();
+        if t > self.end_s && period > 0.0 {
+            let k = ((t - self.end_s) / period).ceil();
+            t -= k * period;
+            if t < 0.0 {
+                return 0.0;
+            }
+        }
+        match &self.history {
+            History::Uniform { dt_s, values } => sample_at(values, *dt_s, t),
+            History::Steps { times, values } => {
+                let k = times.partition_point(|&x| x <= t);
+                if k == 0 { 0.0 } else { values[k - 1] }
+            }
+        }
+    }
+
+    /// Force on the impacting end of the body at time t [N]: F(t) = H(t) - H(t - T).
+    pub fn end_force_n(&self, t_s: f64) -> f64 {
+        self.history_at(t_s) - self.history_at(t_s - self.round_trip_s())
+    }
+
+    /// Axial stress at distance x from the impacting end [Pa], tension positive.
+    pub fn stress_pa(&self, x_m: f64, t_s: f64) -> f64 {
+        let x = x_m - self.zone_length_m;
+        if x < 0.0 {
+            return -self.end_force_n(t_s) / self.area_m2;
+        }
+        let x = x.min(self.body_length_m);
+        let c = self.wave_speed_m_s;
+        let n = self.history_at(t_s - x / c)
+            - self.history_at(t_s - (2.0 * self.body_length_m - x) / c);
+        -n / self.area_m2
+    }
+
+    /// Particle velocity at distance x from the impacting end [m/s], in the lab frame.
+    pub fn velocity_m_s(&self, x_m: f64, t_s: f64) -> f64 {
+        let x = (x_m - self.zone_length_m).clamp(0.0, self.body_length_m);
+        let c = self.wave_speed_m_s;
+        let g = self.history_at(t_s - x / c)
+            + self.history_at(t_s - (2.0 * self.body_length_m - x) / c);
+        self.initial_velocity_m_s + self.push_direction * g / self.impedance_n_s_m
+    }
+
+    /// Energy of the waves in the bar's own initial frame at time t [J]:
+    /// (1/Z) times the integral of H^2 over the last round trip.
+    pub fn wave_energy_j(&self, t_s: f64) -> f64 {
+        let period = self.round_trip_s();
+        let integral = match &self.history {
+            History::Uniform { dt_s, values } => {
+                integrate_square_uniform(values, *dt_s, t_s - period, t_s)
+            }
+            History::Steps { times, values } => {
+                integrate_square_steps(times, values, t_s - period, t_s)
+            }
+        };
+        integral / self.impedance_n_s_m
+    }
+}
+
+/// Trapezoid rule for the integral of v^2 over [a, b] on uniform samples (zero before t = 0).
+fn integrate_square_uniform(values: &[f64], dt: f64, a: f64, b: f64) -> f64 {
+    let a = a.max(0.0);
+    if b <= a || values.is_empty() {
+        return 0.0;
+    }
+    let at = |t: f64| sample_at(values, dt, t);
+    let i0 = (a / dt).ceil() as usize;
+    let i1 = ((b / dt).floor() as usize).min(values.len() - 1);
+    if i0 > i1 {
+        let (fa, fb) = (at(a), at(b));
+        return 0.5 * (fa * fa + fb * fb) * (b - a);
+    }
+    let mut sum = 0.0;
+    for i in i0..i1 {
+        sum += 0.5 * (values[i] * values[i] + values[i + 1] * values[i + 1]) * dt;
+    }
+    let (fa, f0) = (at(a), values[i0]);
+    sum += 0.5 * (fa * fa + f0 * f0) * (i0 as f64 * dt - a);
+    let (f1, fb) = (values[i1], at(b));
+    sum += 0.5 * (f1 * f1 + fb * fb) * (b - i1 as f64 * dt);
+    sum
+}
+
+/// Exact integral of v^2 over [a, b] for a step function.
+fn integrate_square_steps(times: &[f64], values: &[f64], a: f64, b: f64) -> f64 {
+    let mut sum = 0.0;
+    for k in 0..times.len() {
+        let lo = times[k].max(a);
+        let hi = times.get(k + 1).copied().unwrap_or(f64::INFINITY).min(b);
+        if hi > lo {
+            sum += values[k] * values[k] * (hi - lo);
+        }
+    }
+    sum
+}

@@ -1,0 +1,213 @@
+//! The delayed look-up engine shared by every d'Alembert model.
+//!
+//! A force F(t) on the end of a free-free bar of round-trip time T = 2L/c reaches a plane at x
+//! as the history sum H(t) = F(t) + H(t - T) taken at t - x/c and t - (2L - x)/c. Its integral
+//! Psi(t) = Phi(t) + Psi(t - T) (Phi = impulse so far) gives the plane's displacement. Both
+//! recursions need one delayed look-up per step, so the work per step stays constant however
+//! many reflections have happened.
+//!
+//! Histories are sampled on a uniform grid t_n = n dt with zeros before t = 0. A [`Tap`] reads a
+//! history at a fixed lag behind the newest sample with 4-point (cubic) Lagrange interpolation;
+//! because the lag is fixed, its stencil offset and weights are computed once. A lag shorter than
+//! one step puts weight on the newest (still unknown) sample: [`Tap::newest_weight`] says how
+//! much, so a solver can keep that part implicit.
+
+/// A history sampled at t = n dt from n = 0, read as zero before t = 0.
+#[derive(Debug, Clone, Default)]
+pub struct Series {
+    data: Vec<f64>,
+}
+
+impl Series {
+    pub fn with_capacity(capacity: usize) -> Self {
+        Series {
+            data: Vec::with_capacity(capacity),
+        }
+    }
+
+    #[inline]
+    pub fn push(&mut self, v: f64) {
+        self.data.push(v);
+    }
+
+    #[inline]
+    pub fn len(&self) -> usize {
+        self.data.len()
+    }
+
+    #[inline]
+    pub fn is_empty(&self) -> bool {
+        self.data.is_empty()
+    }
+
+    /// Sample n (n = 0 is t = 0).
+    #[inline]
+    pub fn get(&self, n: usize) -> f64 {
+        self.data[n]
+    }
+
+    #[inline]
+    pub fn last(&self) -> f64 {
+        *self.data.last().unwrap_or(&0.0)
+    }
+
+    /// Sample k counted from the end (0 = newest); zero before the start.
+    #[inline]
+    pub fn back(&self, k: usize) -> f64 {
+        let n = self.data.len();
+        if k < n { self.data[n - 1 - k] } else { 0.0 }
+    }
+
+    pub fn samples(&self) -> &[f64] {
+        &self.data
+    }
+
+    pub fn into_samples(self) -> Vec<f64> {
+        self.data
+    }
+}
+
+/// A fixed-lag cubic look-up into a [`Series`].
+#[derive(Debug, Clone, Copy)]
+pub struct Tap {
+    /// Stencil start, in samples relative to the newest sample (<= -3).
+    first: isize,
+    weights: [f64; 4],
+}
+
+impl Tap {
+    /// A tap reading the history `lag_s` behind the newest sample, on a grid of step `dt_s`.
+    pub fn new(lag_s: f64, dt_s: f64) -> Self {
+        debug_assert!(lag_s >= 0.0 && dt_s > 0.0);
+        let p = -lag_s / dt_s;
+        // Snap lags that are a whole number of steps up to rounding, so that the natural cases
+        // (lag 0, lag = T on a grid that divides T) read samples exactly.
+        let p = if (p - p.round()).abs() < 1e-9 {
+            p.round()
+        } else {
+            p
+        };
+        let j = p.floor() as isize;
+        let top = if lag_s >= dt_s || p <= -1.0 {
+            (j + 2).min(-1)
+        } else {
+            0
+        };
+        let first = top - 3;
+        let mut weights = [0.0; 4];
+        for (k, w) in weights.iter_mut().enumerate() {
+            let xk = (first + k as isize) as f64;
+            let mut v = 1.0;
+            for l in 0..4 {
+                if l != k {
+                    let xl = (first + l as isize) as f64;
+                    v *= (p - xl) / (xk - xl);
+                }
+            }
+            *w = v;
+        }
+        Tap { first, weights }
+    }
+
+    /// How many samples back the stencil reaches.
+    pub fn reach(&self) -> usize {
+        (-self.first) as usize
+    }
+
+    /// Weight on the newest sample (nonzero only for lags shorter than a step).
+    #[inline]
+    pub fn newest_weight(&self) -> f64 {
+        if self.first == -3 {
+            self.weights[3]
+        } else {
+            0.0
+        }
+    }
+
+    /// The look-up's value from samples already stored, for a newest sample that is about to be
+    /// pushed (index `series.len()`): everything except `newest_weight() * newest`.
+    #[inline(always)]
+    pub fn known_before_push(&self, series: &Series) -> f64 {
+        let raw = series.samples();
+        // The newest sample would sit at raw.len(); the stencil starts `first` before it.
+        let base = raw.len() as isize + self.first;
+        let w = &self.weights;
+        let stored = if self.first == -3 { 3 } else { 4 };
+        if base >= 0 {
+            let b = base as usize;
+            if stored == 3 {
+                let s: &[f64; 3] = raw[b..b + 3]
+                    .try_into()
+                    .expect("stencil inside the history");
+                w[0] * s[0] + w[1] * s[1] + w[2] * s[2]
+            } else {
+                let s: &[f64; 4] = raw[b..b + 4]
+                    .try_into()
+                    .expect("stencil inside the history");
+                (w[0] * s[0] + w[1] * s[1]) + (w[2] * s[2] + w[3] * s[3])
+            }
+        } else if base + stored as isize <= 0 {
+            // The whole stencil lies before t = 0, where the history is zero.
+            0.0
+        } else {
+            // A few early steps: the stencil straddles t = 0.
+            let mut sum = 0.0;
+            for k in (-base) as usize..stored {
+                sum += w[k] * raw[(base + k as isize) as usize];
+            }
+            sum
+        }
+    }
+}
+
+/// Cubic Lagrange interpolation of a uniformly sampled signal at time `t_s`, with zeros before
+/// the first sample and the last sample held after the end.
+pub fn sample_at(values: &[f64], dt_s: f64, t_s: f64) -> f64 {
+    if values.is_empty() || t_s < 0.0 {
+        return 0.0;
+    }
+    let p = t_s / dt_s;
+    let n = values.len();
+    if p >= (n - 1) as f64 {
+        return values[n - 1];
+    }
+    let j = p.floor() as isize;
+    let x = p - j as f64;
+    let at = |i: isize| {
+        if i < 0 {
+            0.0
+        } else {
+            values[(i as usize).min(n - 1)]
+        }
+    };
+    let (a, b, c, d) = (at(j - 1), at(j), at(j + 1), at(j + 2));
+    // Cubic through (-1, a), (0, b), (1, c), (2, d) evaluated at x.
+    let wa = -x * (x - 1.0) * (x - 2.0) / 6.0;
+    let wb = (x + 1.0) * (x - 1.0) * (x - 2.0) / 2.0;
+    let wc = -(x + 1.0) * x * (x - 2.0) / 2.0;
+    let wd = (x + 1.0) * x * (x - 1.0) / 6.0;
+    wa * a + wb * b + wc * c + wd * d
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tap_reproduces_cubics_exactly_at_any_lag() {
+        let dt = 0.1;
+        let f = |t: f64| 1.0 + 2.0 * t - 0.5 * t * t + 0.25 * t * t * t;
+        for &lag in &[0.0, 0.03, 0.1, 0.1234, 0.25, 1.0, 2.37] {
+            let tap = Tap::new(lag, dt);
+            let mut s = Series::with_capacity(100);
+            for n in 0..60 {
+                s.push(f(n as f64 * dt - 3.0));
+            }
+            let newest = f(60.0 * dt - 3.0);
+            let got = tap.known_before_push(&s) + tap.newest_weight() * newest;
+            let want = f(60.0 * dt - 3.0 - lag);
+            assert!((got - want).abs() < 1e-10, "lag {lag}: {got} vs {want}");
+            assert_eq!(tap.newest_weight() != 0.0, lag < dt, "lag {lag}");
+        }
+    }
+}

@@ -1,0 +1,468 @@
+//! The Sears impact model: a contact law at the contact surface, d'Alembert waves in the bars.
+//!
+//! All three readings share one form (physics.md, corrected Eq. 8):
+//!
+//!   delta(t) = w t - sum_i (1/Z_i) [Psi_i(t - s_i1) + Psi_i(t - s_i2)],
+//!   Psi_i(t) = Phi(t) + Psi_i(t - T_i),  Phi(t) = integral of F,  F = f(delta),
+//!
+//! with T_i = 2 l_i / c_i and two lags per bar:
+//! - paper: l = L, lags d/c and (2L - d)/c (the planes P_i at x = d_i);
+//! - collocated: l = L - d (the zone is a massless spring), lags 0 and T;
+//! - end: l = L, lags 0 and T (d -> 0).
+//!
+//! Numerics. On a uniform grid every lag of a step or more is a known look-up ([`Tap`]); lags
+//! shorter than a step put a known weight on the unknown Phi_{n+1}, so each step reduces to
+//!   delta_{n+1} = W - c0 Phi_{n+1},  Phi_{n+1} = P + q h F_{n+1},  F = f(delta),
+//! i.e. the monotone scalar equation delta + c0 q h f(delta) = W - c0 P, with one root.
+//! Where c0 = 0 (the paper reading with d/c >= h) the step is explicit and Phi is a quadrature.
+//! The quadrature blends the trapezoid rule (small error constant) with BDF2 (L-stable), by the
+//! local stiffness z = c0 f'(delta) h: pure trapezoid for z <= 0.5, pure BDF2 for z >= 2. Both
+//! are second order, so the blend is too, and stiff contact does not ring (the trapezoid alone
+//! rings, physics.md). The step after a kink (onset, separation) uses the one-step theta method.
+//! Onset and separation are located inside the step, and the impulse of the partial step is
+//! integrated up to (from) that instant, so durations are not quantised to the grid.
+
+use super::timestep::{choose_step, contact_time_scale};
+use super::{Raw, SearsDiagnostics, SolveError, peak_between};
+use crate::model::contact::ContactLaw;
+use crate::model::field::{BarWaves, History};
+use crate::model::history::{Series, Tap};
+use crate::model::scenario::{ImpactScenario, InputError, Reading};
+
+struct Channel {
+    inv_z: f64,
+    recur: Tap,
+    taps: [Tap; 2],
+    psi: Series,
+    /// Psi_{n+1} = (Phi_{n+1} + known) * gain: 1 / (1 - weight of the newest sample in the
+    /// recursion), 1 unless the round trip is shorter than a step.
+    gain: f64,
+    /// Sum of the taps' weights on the newest sample.
+    top: f64,
+}
+
+impl Channel {
+    /// The known part of this bar's contribution to delta_{n+1}, times Z, given the known part
+    /// `a` of Psi_{n+1}.
+    #[inline]
+    fn known_displacement(&self, a: f64) -> f64 {
+        self.taps[0].known_before_push(&self.psi)
+            + self.taps[1].known_before_push(&self.psi)
+            + self.top * a
+    }
+}
+
+/// The geometry of one reading: body lengths, lags, masses.
+struct Layout {
+    body_m: [f64; 2],
+    zone_m: [f64; 2],
+    lags_s: [[f64; 2]; 2],
+    round_trip_s: [f64; 2],
+    masses_kg: [f64; 2],
+}
+
+fn layout(sc: &ImpactScenario) -> Result<Layout, InputError> {
+    let bars = [sc.bar1, sc.bar2];
+    let zones = sc.zone_lengths_m();
+    let mut out = Layout {
+        body_m: [0.0; 2],
+        zone_m: [0.0; 2],
+        lags_s: [[0.0; 2]; 2],
+        round_trip_s: [0.0; 2],
+        masses_kg: [0.0; 2],
+    };
+    for i in 0..2 {
+        let (bar, d) = (&bars[i], zones[i]);
+        let c = bar.wave_speed_m_s();
+        let l = bar.length_m;
+        let name = if i == 0 { "bar1" } else { "bar2" };
+        match sc.reading {
+            Reading::Paper => {
+                if d > 2.0 * l {
+                    return Err(InputError::new(
+                        "contact.zone_scale",
+                        format!(
+                            "the paper reading is undefined here: {name}'s zone d = {d:.4} m exceeds twice its length ({:.4} m), so a reflection would arrive before it left; allowed: contact.zone_scale < {:.4} (or sears.reading = end)",
+                            2.0 * l,
+                            sc.contact.zone_scale * 2.0 * l / d
+                        ),
+                    ));
+                }
+                out.body_m[i] = l;
+                out.lags_s[i] = [d / c, (2.0 * l - d) / c];
+            }
+            Reading::Collocated => {
+                if d >= l {
+                    return Err(InputError::new(
+                        "contact.zone_scale",
+                        format!(
+                            "the collocated reading needs the zone shorter than the bar: {name}'s d = {d:.4} m >= L = {l:.4} m; allowed: contact.zone_scale < {:.4}",
+                            sc.contact.zone_scale * l / d
+                        ),
+                    ));
+                }
+                out.body_m[i] = l - d;
+                out.zone_m[i] = d;
+                out.lags_s[i] = [0.0, 2.0 * (l - d) / c];
+            }
+            Reading::End => {
+                out.body_m[i] = l;
+                out.lags_s[i] = [0.0, 2.0 * l / c];
+            }
+        }
+        out.round_trip_s[i] = 2.0 * out.body_m[i] / c;
+        out.masses_kg[i] = bar.effective_density_kg_m3() * bar.area_m2() * out.body_m[i];
+    }
+    Ok(out)
+}
+
+/// Values of a cubic (or, with fewer points, linear) interpolant of samples at x = -2, -1, 0, 1.
+struct LocalPoly {
+    y: [f64; 4],
+    cubic: bool,
+}
+
+impl LocalPoly {
+    fn eval(&self, x: f64) -> f64 {
+        let [a, b, c, d] = self.y;
+        if !self.cubic {
+            return c + (d - c) * x;
+        }
+        let wa = -(x + 1.0) * x * (x - 1.0) / 6.0;
+        let wb = (x + 2.0) * x * (x - 1.0) / 2.0;
+        let wc = -(x + 2.0) * (x + 1.0) * (x - 1.0) / 2.0;
+        let wd = (x + 2.0) * (x + 1.0) * x / 6.0;
+        wa * a + wb * b + wc * c + wd * d
+    }
+
+    /// The root in [0, 1] between y(0) and y(1), which have opposite signs (or y(0) = 0).
+    fn root(&self) -> f64 {
+        let (y0, y1) = (self.y[2], self.y[3]);
+        if y0 == 0.0 {
+            return 0.0;
+        }
+        let (mut lo, mut hi) = (0.0, 1.0);
+        let mut x = (y0 / (y0 - y1)).clamp(0.0, 1.0);
+        for _ in 0..60 {
+            let v = self.eval(x);
+            if v == 0.0 {
+                return x;
+            }
+            if (v > 0.0) == (y0 > 0.0) {
+                lo = x
+            } else {
+                hi = x
+            }
+            let eps = 1e-7;
+            let slope = (self.eval(x + eps) - self.eval(x - eps)) / (2.0 * eps);
+            let newton = x - v / slope;
+            x = if slope != 0.0 && newton > lo && newton < hi {
+                newton
+            } else {
+                0.5 * (lo + hi)
+            };
+            if hi - lo < 1e-14 {
+                break;
+            }
+        }
+        x
+    }
+
+    /// h times the integral of f(y(x)) over [a, b] (3-point Gauss).
+    fn integrate_force(&self, law: &ContactLaw, a: f64, b: f64, h: f64) -> f64 {
+        let mid = 0.5 * (a + b);
+        let half = 0.5 * (b - a);
+        let g = (0.6f64).sqrt();
+        let s = 5.0 * law.force(self.eval(mid - half * g))
+            + 8.0 * law.force(self.eval(mid))
+            + 5.0 * law.force(self.eval(mid + half * g));
+        h * half * s / 9.0
+    }
+}
+
+pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
+    let law = sc.contact_law()?;
+    let lay = layout(sc)?;
+    let bars = [sc.bar1, sc.bar2];
+    let z = bars.map(|b| b.impedance_n_s_m());
+    let w = sc.approach_velocity_m_s();
+    let [m1, m2] = lay.masses_kg;
+    let m_eff = m1 * m2 / (m1 + m2);
+    let z_eff = z[0] * z[1] / (z[0] + z[1]);
+    let scale = contact_time_scale(&law, w, m_eff, z_eff);
+    let t_long = lay.round_trip_s[0].max(lay.round_trip_s[1]);
+    let choice = choose_step(sc, scale, 2.0 * scale.lumped_duration_s.max(t_long));
+    let h = choice.dt_s;
+    let mut warnings: Vec<String> = choice.warning.into_iter().collect();
+
+    let expected = if sc.solver.window_s > 0.0 {
+        sc.solver.window_s
+    } else {
+        scale.lumped_duration_s.max(t_long)
+    };
+    let capacity = ((expected / h) as usize + 16).min(sc.solver.max_steps + 2);
+    let mut channels: Vec<Channel> = (0..2)
+        .map(|i| {
+            let recur = Tap::new(lay.round_trip_s[i], h);
+            let taps = lay.lags_s[i].map(|lag| Tap::new(lag, h));
+            let mut psi = Series::with_capacity(capacity);
+            psi.push(0.0);
+            let gain = 1.0 / (1.0 - recur.newest_weight());
+            Channel {
+                inv_z: 1.0 / z[i],
+                recur,
+                taps,
+                psi,
+                gain,
+                top: taps[0].newest_weight() + taps[1].newest_weight(),
+            }
+        })
+        .collect();
+    let mut phi = Series::with_capacity(capacity);
+    phi.push(0.0);
+    let mut force: Vec<f64> = Vec::with_capacity(capacity);
+    force.push(0.0);
+    let mut delta: Vec<f64> = Vec::with_capacity(capacity);
+    delta.push(0.0);
+
+    let n_stop = if sc.solver.window_s > 0.0 {
+        (sc.solver.window_s / h).ceil() as usize
+    } else {
+        usize::MAX
+    };
+    let mut contacts: Vec<(f64, Option<f64>, f64)> = Vec::new();
+    let mut contact_phi0 = 0.0;
+    let mut on = true;
+    let mut kink = true;
+    contacts.push((0.0, None, 0.0));
+    let mut n = 0usize;
+    // c0 depends only on the lags, so it is the same every step.
+    let c0: f64 = channels.iter().map(|ch| ch.inv_z * ch.top * ch.gain).sum();
+
+    while n < n_stop {
+        if n + 1 > sc.solver.max_steps {
+            return Err(SolveError::Budget {
+                max_steps: sc.solver.max_steps,
+                dt_s: h,
+                reached_s: n as f64 * h,
+            });
+        }
+        let t1 = (n + 1) as f64 * h;
+        let (r0, r1) = (
+            channels[0].recur.known_before_push(&channels[0].psi),
+            channels[1].recur.known_before_push(&channels[1].psi),
+        );
+        let wv = w * t1
+            - channels[0].inv_z * channels[0].known_displacement(r0 * channels[0].gain)
+            - channels[1].inv_z * channels[1].known_displacement(r1 * channels[1].gain);
+        let (fn_, phin, dn) = (force[n], phi.last(), delta[n]);
+        let free = wv - c0 * phin;
+        let (mut d1, mut f1, mut phi1, theta1);
+        if c0 == 0.0 {
+            // Explicit: delta_{n+1} depends on history alone; Phi by the trapezoid rule.
+            theta1 = 0.5;
+            d1 = wv;
+            f1 = law.force(d1);
+            phi1 = phin + 0.5 * h * (fn_ + f1);
+        } else {
+            let zs = c0 * h * law.tangent(dn.max(free));
+            let theta = ((zs - 0.5) / 1.5).clamp(0.0, 1.0);
+            theta1 = 0.5 + 0.5 * theta;
+            let (p, q) = if kink {
+                (phin + (1.0 - theta1) * h * fn_, theta1)
+            } else {
+                let tr = phin + 0.5 * h * fn_;
+                let bdf = (4.0 * phin - phi.back(1)) / 3.0;
+                (
+                    (1.0 - theta) * tr + theta * bdf,
+                    (1.0 - theta) * 0.5 + theta * 2.0 / 3.0,
+                )
+            };
+            d1 = law.solve_implicit(c0 * q * h, wv - c0 * p, dn);
+            f1 = law.force(d1);
+            phi1 = p + q * h * f1;
+        }
+        kink = false;
+        let local = || LocalPoly {
+            y: [
+                if n >= 2 { delta[n - 2] } else { 0.0 },
+                if n >= 1 { delta[n - 1] } else { 0.0 },
+                dn,
+                0.0,
+            ],
+            cubic: n >= 2,
+        };
+        let mut separated = false;
+        if on && d1 <= 0.0 {
+            // Separation inside (t_n, t_n+1].
+            let t_star;
+            if c0 == 0.0 {
+                let mut poly = local();
+                poly.y[3] = d1;
+                let x = poly.root();
+                phi1 = phin + poly.integrate_force(&law, 0.0, x, h);
+                t_star = n as f64 * h + x * h;
+            } else {
+                // Trapezoid sub-step of length s ending where delta = 0 (F = 0 there), with W
+                // linear over the step: delta_n + s (dW/h - c0 (1 - theta1) F_n) = 0.
+                let dw = wv - (dn + c0 * phin);
+                let denom = c0 * (1.0 - theta1) * fn_ - dw / h;
+                let s = if denom > 0.0 { dn / denom } else { f64::NAN };
+                if dw <= 0.0 && s > 0.0 && s <= h {
+                    phi1 = phin + s * (1.0 - theta1) * fn_;
+                    d1 = wv - c0 * phi1;
+                    t_star = n as f64 * h + s;
+                } else {
+                    t_star = t1;
+                }
+            }
+            f1 = 0.0;
+            on = false;
+            kink = true;
+            separated = true;
+            let last = contacts.last_mut().expect("a contact is open");
+            last.1 = Some(t_star);
+            last.2 = phi1 - contact_phi0;
+        } else if !on && d1 > 0.0 {
+            // Onset inside (t_n, t_n+1].
+            let t_on;
+            if c0 == 0.0 {
+                let mut poly = local();
+                poly.y[3] = d1;
+                let x = poly.root();
+                phi1 = phin + poly.integrate_force(&law, x, 1.0, h);
+                t_on = n as f64 * h + x * h;
+            } else {
+                let s0 = h * (-dn) / (free - dn);
+                let hp = h - s0;
+                let th = if c0 * hp * law.tangent(free) > 0.5 {
+                    1.0
+                } else {
+                    0.5
+                };
+                d1 = law.solve_implicit(c0 * th * hp, free, dn);
+                f1 = law.force(d1);
+                phi1 = phin + th * hp * f1;
+                t_on = n as f64 * h + s0;
+            }
+            on = true;
+            kink = true;
+            contact_phi0 = phin;
+            contacts.push((t_on, None, 0.0));
+        }
+        // Store the new samples: Psi_i(t_n+1) = Phi_n+1 + Psi_i(t_n+1 - T_i).
+        for (ch, r) in channels.iter_mut().zip([r0, r1]) {
+            let psi1 = (phi1 + r) * ch.gain;
+            ch.psi.push(psi1);
+        }
+        phi.push(phi1);
+        force.push(f1);
+        delta.push(d1);
+        n += 1;
+        if separated && sc.solver.window_s == 0.0 && w - phi1 / m_eff <= 0.0 {
+            break;
+        }
+    }
+    if let Some(last) = contacts.last_mut()
+        && last.1.is_none()
+    {
+        last.2 = phi.last() - contact_phi0;
+        warnings.push(format!(
+            "the contact was still on at the end of the simulated span (t = {:.4e} s)",
+            n as f64 * h
+        ));
+    }
+
+    let end_s = n as f64 * h;
+    let time_s: Vec<f64> = (0..=n).map(|k| k as f64 * h).collect();
+    let impulse = phi.last();
+    let waves = build_waves(sc, &lay, &force, h, end_s);
+    let vibration_j: f64 = (0..2)
+        .map(|i| waves[i].wave_energy_j(end_s) - impulse * impulse / (2.0 * lay.masses_kg[i]))
+        .sum();
+    let contact_j = if on {
+        law.energy(*delta.last().unwrap_or(&0.0))
+    } else {
+        0.0
+    };
+
+    let zones = sc.zone_lengths_m();
+    let c = bars.map(|b| b.wave_speed_m_s());
+    let plane_delays_s = [zones[0] / c[0], zones[1] / c[1]];
+    let first = contacts[0];
+    let peak = peak_between(&time_s, &force, first.0, first.1.unwrap_or(f64::INFINITY));
+    let kt = law.tangent_at_force(peak);
+    let a_tau = kt * (plane_delays_s[0] / z[0] + plane_delays_s[1] / z[1]);
+    if sc.reading == Reading::Paper {
+        for (i, bar) in bars.iter().enumerate() {
+            if zones[i] > bar.length_m {
+                warnings.push(format!(
+                    "bar{}'s zone d = {:.4} m is longer than the bar ({:.4} m): its plane P lies past the far end's mirror image; the paper reading is still defined (d < 2L) but physically doubtful",
+                    i + 1,
+                    zones[i],
+                    bar.length_m
+                ));
+            }
+        }
+    }
+    Ok(Raw {
+        time_s,
+        force_n: force,
+        approach_m: delta,
+        contacts,
+        impulse_ns: impulse,
+        masses_kg: lay.masses_kg,
+        vibration_j,
+        contact_j,
+        end_s,
+        waves: Some(waves),
+        sears: Some(SearsDiagnostics {
+            reading: sc.reading,
+            zone_lengths_m: zones,
+            plane_delays_s,
+            tangent_stiffness_n_m: kt,
+            a_tau,
+            creates_energy: false,
+        }),
+        warnings,
+        steps: n,
+        dt_s: h,
+        refined_from_s: choice.refined_from_s,
+        ..Raw::default()
+    })
+}
+
+/// H_i on the grid from the force samples: H_n = F_n + H(t_n - T_i).
+fn build_waves(
+    sc: &ImpactScenario,
+    lay: &Layout,
+    force: &[f64],
+    h: f64,
+    end_s: f64,
+) -> [BarWaves; 2] {
+    let bars = [sc.bar1, sc.bar2];
+    std::array::from_fn(|i| {
+        let bar = &bars[i];
+        let tap = Tap::new(lay.round_trip_s[i], h);
+        let mut hs = Series::with_capacity(force.len());
+        let b = 1.0 / (1.0 - tap.newest_weight());
+        for &f in force {
+            let v = (f + tap.known_before_push(&hs)) * b;
+            hs.push(v);
+        }
+        BarWaves {
+            body_length_m: lay.body_m[i],
+            zone_length_m: lay.zone_m[i],
+            wave_speed_m_s: bar.wave_speed_m_s(),
+            area_m2: bar.area_m2(),
+            impedance_n_s_m: bar.impedance_n_s_m(),
+            initial_velocity_m_s: bar.velocity_m_s,
+            push_direction: if i == 0 { -1.0 } else { 1.0 },
+            history: History::Uniform {
+                dt_s: h,
+                values: hs.into_samples(),
+            },
+            end_s,
+        }
+    })
+}

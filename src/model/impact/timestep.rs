@@ -1,0 +1,92 @@
+//! The contact's own time scale, and the step a run uses.
+
+use crate::model::contact::{ContactLaw, LawKind};
+use crate::model::scenario::ImpactScenario;
+
+/// Time scales of a contact between bodies of effective mass `m_eff` and (for elastic bars)
+/// effective impedance `z_eff` (infinite for rigid bodies), at approach velocity `w`.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct TimeScale {
+    /// The shortest time over which the force changes appreciably [s].
+    pub resolve_s: f64,
+    /// Contact duration of the lumped-mass limit [s].
+    pub lumped_duration_s: f64,
+}
+
+pub(crate) fn contact_time_scale(law: &ContactLaw, w: f64, m_eff: f64, z_eff: f64) -> TimeScale {
+    let k = law.stiffness;
+    let (f_lumped, lumped_duration_s) = match law.kind {
+        LawKind::Hertz => {
+            let dmax = (5.0 * m_eff * w * w / (4.0 * k)).powf(0.4);
+            (k * dmax.powf(1.5), 2.9432 * dmax / w)
+        }
+        LawKind::Linear => (
+            w * (k * m_eff).sqrt(),
+            std::f64::consts::PI * (m_eff / k).sqrt(),
+        ),
+    };
+    let f_est = f_lumped.min(z_eff * w);
+    // Rise time of a wave-limited force: Z_eff / k_t (infinite for rigid bodies).
+    let rise = z_eff / law.tangent_at_force(f_est);
+    TimeScale {
+        resolve_s: rise.min(lumped_duration_s / (2.0 * std::f64::consts::PI)),
+        lumped_duration_s,
+    }
+}
+
+/// The step a run uses: the user's, or a refined one where the user's is coarser than the
+/// contact's time scale and the refined run fits the step budget.
+pub(crate) struct StepChoice {
+    pub dt_s: f64,
+    pub refined_from_s: Option<f64>,
+    pub warning: Option<String>,
+}
+
+pub(crate) fn choose_step(
+    sc: &ImpactScenario,
+    scale: TimeScale,
+    expected_span_s: f64,
+) -> StepChoice {
+    let dt = sc.solver.dt_s;
+    let resolve = scale.resolve_s;
+    if !(resolve.is_finite() && resolve > 0.0) || dt <= resolve {
+        return StepChoice {
+            dt_s: dt,
+            refined_from_s: None,
+            warning: None,
+        };
+    }
+    let factor = (4.0 * dt / resolve).ceil();
+    let refined = dt / factor;
+    let span = if sc.solver.window_s > 0.0 {
+        sc.solver.window_s
+    } else {
+        expected_span_s
+    };
+    let steps = span / refined;
+    if sc.solver.refine && steps <= sc.solver.max_steps as f64 {
+        StepChoice {
+            dt_s: refined,
+            refined_from_s: Some(dt),
+            warning: Some(format!(
+                "solver.dt = {dt:e} s is coarser than the contact's time scale {resolve:.3e} s: refined to {refined:.3e} s"
+            )),
+        }
+    } else {
+        let why = if sc.solver.refine {
+            format!(
+                "refining to {refined:.3e} s would need about {steps:.0} steps, over solver.max_steps = {}",
+                sc.solver.max_steps
+            )
+        } else {
+            "solver.refine = false".to_string()
+        };
+        StepChoice {
+            dt_s: dt,
+            refined_from_s: None,
+            warning: Some(format!(
+                "solver.dt = {dt:e} s is coarser than the contact's time scale {resolve:.3e} s and was kept ({why}): the run is stable but the force's rise is not resolved; use solver.dt <= {resolve:.1e} s for accurate peaks"
+            )),
+        }
+    }
+}

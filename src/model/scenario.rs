@@ -1,0 +1,352 @@
+//! Everything one impact run needs, with the validation that turns bad input into an error that
+//! names the field and its allowed range.
+
+use super::bar::{Bar, EndShape, Section};
+use super::contact::{ContactLaw, LawKind, hertz_stiffness, paper_linear_stiffness};
+use super::material::MaterialPreset;
+use std::fmt;
+
+/// Which reading of the Sears model (see physics.md, "Three readings of Sears").
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Reading {
+    /// The paper's delayed planes: the law acts on the planes P_i at d_i, the force on the ends.
+    Paper,
+    /// The zone of length d is a massless spring; the bodies are bars of length L - d.
+    Collocated,
+    /// d -> 0: Saint-Venant bars with the contact law at their ends.
+    End,
+}
+
+impl Reading {
+    pub const ALL: [Reading; 3] = [Reading::Paper, Reading::Collocated, Reading::End];
+    pub fn name(self) -> &'static str {
+        match self {
+            Reading::Paper => "paper",
+            Reading::Collocated => "collocated",
+            Reading::End => "end",
+        }
+    }
+    pub fn from_name(s: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|r| r.name() == s)
+    }
+    /// Whether this reading conserves energy for an elastic contact law.
+    pub fn energy_consistent(self) -> bool {
+        !matches!(self, Reading::Paper)
+    }
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactSpec {
+    pub law: LawKind,
+    /// Explicit stiffness (N/m^1.5 Hertz, N/m linear); `None` derives it: Hertz from the ends,
+    /// linear from the paper's E A / (L / n) helper with `divisions` = n.
+    pub stiffness: Option<f64>,
+    /// Multiplier on Sears' zone length d (the paper varies it from 0.01 to 10).
+    pub zone_scale: f64,
+    /// Zone length for both bars [m] instead of Sears' Eq. 5 (the paper's slabs use L/10).
+    pub zone_length_m: Option<f64>,
+    /// n in the paper's kL = E A / (L / n) helper.
+    pub divisions: f64,
+    /// Target coefficient of restitution for the Kelvin-Voigt and stereomechanics models.
+    pub restitution: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SolverSettings {
+    /// Time step [s].
+    pub dt_s: f64,
+    /// Simulated span [s]; 0 runs until the bars separate for good (the first separation after
+    /// which their rigid-body velocities no longer approach).
+    pub window_s: f64,
+    /// Refuse runs longer than this many steps.
+    pub max_steps: usize,
+    /// Refine the step automatically when it is too coarse for the contact's own time scale.
+    pub refine: bool,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FeSettings {
+    /// Segments per bar.
+    pub segments: usize,
+    /// Fraction of the explicit stability limit min(dx / c) used as the step.
+    pub courant: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ImpactScenario {
+    pub bar1: Bar,
+    pub bar2: Bar,
+    pub contact: ContactSpec,
+    pub reading: Reading,
+    pub solver: SolverSettings,
+    pub fe: FeSettings,
+}
+
+impl Default for ImpactScenario {
+    /// The paper's parametric base case: steel rods of 0.1 m diameter, 1 m against 2 m, relative
+    /// velocity 1 m/s, the first bar's end rounded with a 0.1 m diameter, the second flat, 1 us.
+    fn default() -> Self {
+        let steel = MaterialPreset::Steel.material();
+        let rod = |length_m, velocity_m_s, end| Bar {
+            material: steel,
+            section: Section::Circular { radius_m: 0.05 },
+            length_m,
+            added_mass_kg: 0.0,
+            velocity_m_s,
+            end,
+        };
+        ImpactScenario {
+            bar1: rod(1.0, 1.0, EndShape::Rounded { radius_m: 0.05 }),
+            bar2: rod(2.0, 0.0, EndShape::Flat),
+            contact: ContactSpec {
+                law: LawKind::Hertz,
+                stiffness: None,
+                zone_scale: 1.0,
+                zone_length_m: None,
+                divisions: 10.0,
+                restitution: 0.65,
+            },
+            reading: Reading::Paper,
+            solver: SolverSettings {
+                dt_s: 1e-6,
+                window_s: 0.0,
+                max_steps: 4_000_000,
+                refine: true,
+            },
+            fe: FeSettings {
+                segments: 100,
+                courant: 0.9,
+            },
+        }
+    }
+}
+
+/// Bad input: which field, what it was, what is allowed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct InputError {
+    pub field: String,
+    pub message: String,
+}
+
+impl InputError {
+    pub fn new(field: impl Into<String>, message: impl Into<String>) -> Self {
+        InputError {
+            field: field.into(),
+            message: message.into(),
+        }
+    }
+}
+
+impl fmt::Display for InputError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: {}", self.field, self.message)
+    }
+}
+
+impl std::error::Error for InputError {}
+
+fn check_positive(field: &str, value: f64, unit: &str) -> Result<(), InputError> {
+    if value.is_finite() && value > 0.0 {
+        Ok(())
+    } else {
+        Err(InputError::new(
+            field,
+            format!("{value} is not allowed: must be a finite number > 0 {unit}"),
+        ))
+    }
+}
+
+fn check_range(
+    field: &str,
+    value: f64,
+    lo: f64,
+    hi: f64,
+    closed: bool,
+    unit: &str,
+) -> Result<(), InputError> {
+    let inside = if closed {
+        value >= lo && value <= hi
+    } else {
+        value > lo && value < hi
+    };
+    if value.is_finite() && inside {
+        Ok(())
+    } else {
+        let (l, r) = if closed { ('[', ']') } else { ('(', ')') };
+        Err(InputError::new(
+            field,
+            format!("{value} is not allowed: must lie in {l}{lo}, {hi}{r} {unit}"),
+        ))
+    }
+}
+
+fn validate_bar(prefix: &str, bar: &Bar) -> Result<(), InputError> {
+    let f = |name: &str| format!("{prefix}.{name}");
+    check_positive(&f("youngs_modulus"), bar.material.youngs_modulus_pa, "Pa")?;
+    check_range(
+        &f("poisson_ratio"),
+        bar.material.poisson_ratio,
+        -1.0,
+        0.5,
+        false,
+        "",
+    )?;
+    check_positive(&f("density"), bar.material.density_kg_m3, "kg/m^3")?;
+    check_positive(&f("length"), bar.length_m, "m")?;
+    match bar.section {
+        Section::Circular { radius_m } => check_positive(&f("radius"), radius_m, "m")?,
+        Section::Area { area_m2 } => check_positive(&f("area"), area_m2, "m^2")?,
+    }
+    if !(bar.added_mass_kg.is_finite() && bar.added_mass_kg >= 0.0) {
+        return Err(InputError::new(
+            f("added_mass"),
+            format!(
+                "{} is not allowed: must be a finite number >= 0 kg",
+                bar.added_mass_kg
+            ),
+        ));
+    }
+    if !bar.velocity_m_s.is_finite() {
+        return Err(InputError::new(
+            f("velocity"),
+            format!(
+                "{} is not allowed: must be a finite number in m/s",
+                bar.velocity_m_s
+            ),
+        ));
+    }
+    if let EndShape::Rounded { radius_m } = bar.end {
+        check_positive(&f("end_radius"), radius_m, "m (or `flat`)")?;
+    }
+    Ok(())
+}
+
+impl ImpactScenario {
+    pub fn validate(&self) -> Result<(), InputError> {
+        validate_bar("bar1", &self.bar1)?;
+        validate_bar("bar2", &self.bar2)?;
+        if let Some(k) = self.contact.stiffness {
+            check_positive(
+                "contact.stiffness",
+                k,
+                "(N/m^1.5 for hertz, N/m for linear)",
+            )?;
+        }
+        check_positive("contact.zone_scale", self.contact.zone_scale, "")?;
+        if let Some(d) = self.contact.zone_length_m {
+            check_positive("contact.zone_length", d, "m (or auto)")?;
+        }
+        check_positive("contact.divisions", self.contact.divisions, "")?;
+        check_range(
+            "contact.restitution",
+            self.contact.restitution,
+            0.0,
+            1.0,
+            true,
+            "",
+        )?;
+        check_positive("solver.dt", self.solver.dt_s, "s")?;
+        if !(self.solver.window_s.is_finite() && self.solver.window_s >= 0.0) {
+            return Err(InputError::new(
+                "solver.window",
+                format!(
+                    "{} is not allowed: must be a finite number >= 0 s (0 runs until the bars separate for good)",
+                    self.solver.window_s
+                ),
+            ));
+        }
+        if self.solver.max_steps == 0 {
+            return Err(InputError::new(
+                "solver.max_steps",
+                "0 is not allowed: must be at least 1",
+            ));
+        }
+        if !(1..=1_000_000).contains(&self.fe.segments) {
+            return Err(InputError::new(
+                "fe.segments",
+                format!(
+                    "{} is not allowed: must lie in [1, 1000000]",
+                    self.fe.segments
+                ),
+            ));
+        }
+        check_range("fe.courant", self.fe.courant, 0.0, 1.0, false, "")?;
+        if self.contact.law == LawKind::Hertz
+            && self.contact.stiffness.is_none()
+            && hertz_stiffness(&self.bar1, &self.bar2).is_none()
+        {
+            return Err(InputError::new(
+                "contact.law",
+                "hertz needs a rounded end on at least one bar (bar1.end_radius or bar2.end_radius), or an explicit contact.stiffness; both ends are flat",
+            ));
+        }
+        Ok(())
+    }
+
+    /// Relative approach velocity v1 - v2 [m/s].
+    pub fn approach_velocity_m_s(&self) -> f64 {
+        self.bar1.velocity_m_s - self.bar2.velocity_m_s
+    }
+
+    /// The contact law chosen by `contact.law`.
+    pub fn contact_law(&self) -> Result<ContactLaw, InputError> {
+        match self.contact.law {
+            LawKind::Hertz => self.hertz_law(),
+            LawKind::Linear => Ok(self.linear_law()),
+        }
+    }
+
+    /// Hertz law: the explicit stiffness when `contact.law = hertz` gives one, else from the ends.
+    pub fn hertz_law(&self) -> Result<ContactLaw, InputError> {
+        if let (LawKind::Hertz, Some(k)) = (self.contact.law, self.contact.stiffness) {
+            return Ok(ContactLaw::hertz(k));
+        }
+        hertz_stiffness(&self.bar1, &self.bar2)
+            .map(ContactLaw::hertz)
+            .ok_or_else(|| {
+                InputError::new(
+                    "bar1.end_radius",
+                    "a Hertz contact needs a rounded end on at least one bar; both ends are flat",
+                )
+            })
+    }
+
+    /// Linear law: the explicit stiffness when `contact.law = linear` gives one, else the paper's
+    /// E A / (L / n) helper.
+    pub fn linear_law(&self) -> ContactLaw {
+        match (self.contact.law, self.contact.stiffness) {
+            (LawKind::Linear, Some(k)) => ContactLaw::linear(k),
+            _ => ContactLaw::linear(paper_linear_stiffness(
+                &self.bar1,
+                &self.bar2,
+                self.contact.divisions,
+            )),
+        }
+    }
+
+    /// Sears' zone lengths d_i after the user's scale [m].
+    pub fn zone_lengths_m(&self) -> [f64; 2] {
+        let formula = [
+            self.bar1.sears_zone_length_m(),
+            self.bar2.sears_zone_length_m(),
+        ];
+        formula.map(|d| self.contact.zone_length_m.unwrap_or(d) * self.contact.zone_scale)
+    }
+
+    /// Effective mass m1 m2 / (m1 + m2) [kg].
+    pub fn effective_mass_kg(&self) -> f64 {
+        let (m1, m2) = (self.bar1.mass_kg(), self.bar2.mass_kg());
+        m1 * m2 / (m1 + m2)
+    }
+
+    /// The same impact seen with the bars' roles exchanged (mirror image): bar 2 becomes the left
+    /// bar and every velocity changes sign.
+    pub fn mirrored(&self) -> Self {
+        let mut m = *self;
+        m.bar1 = self.bar2;
+        m.bar2 = self.bar1;
+        m.bar1.velocity_m_s = -self.bar2.velocity_m_s;
+        m.bar2.velocity_m_s = -self.bar1.velocity_m_s;
+        m
+    }
+}
