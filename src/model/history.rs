@@ -76,8 +76,19 @@ pub struct Tap {
 }
 
 impl Tap {
-    /// A tap reading the history `lag_s` behind the newest sample, on a grid of step `dt_s`.
+    /// A cubic tap: fourth-order accurate on smooth histories.
     pub fn new(lag_s: f64, dt_s: f64) -> Self {
+        Self::with_order(lag_s, dt_s, true)
+    }
+
+    /// A linear tap: second-order but monotone, for histories with kinks at the grid scale (a
+    /// contact stiffer than the step resolves makes the force jump within a step, and a cubic
+    /// would overshoot there).
+    pub fn linear(lag_s: f64, dt_s: f64) -> Self {
+        Self::with_order(lag_s, dt_s, false)
+    }
+
+    fn with_order(lag_s: f64, dt_s: f64, cubic: bool) -> Self {
         debug_assert!(lag_s >= 0.0 && dt_s > 0.0);
         let p = -lag_s / dt_s;
         // Snap lags that are a whole number of steps up to rounding, so that the natural cases
@@ -95,6 +106,16 @@ impl Tap {
         };
         let first = top - 3;
         let mut weights = [0.0; 4];
+        if !cubic {
+            // Linear between the two nodes that bracket p (the stencil's last two when the lag is
+            // under a step or lands at its end).
+            let hi = (j + 1).min(top);
+            let lo_node = hi - 1;
+            let x = (p - lo_node as f64).clamp(0.0, 1.0);
+            weights[(lo_node - first) as usize] = 1.0 - x;
+            weights[(hi - first) as usize] = x;
+            return Tap { first, weights };
+        }
         for (k, w) in weights.iter_mut().enumerate() {
             let xk = (first + k as isize) as f64;
             let mut v = 1.0;
@@ -192,6 +213,25 @@ pub fn sample_at(values: &[f64], dt_s: f64, t_s: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn linear_tap_reproduces_lines_exactly_at_any_lag() {
+        let dt = 0.1;
+        let f = |t: f64| 1.0 + 2.0 * t;
+        for &lag in &[0.0, 0.03, 0.1, 0.1234, 0.25, 1.0, 2.37] {
+            let tap = Tap::linear(lag, dt);
+            let mut s = Series::with_capacity(100);
+            for n in 0..60 {
+                s.push(f(n as f64 * dt - 3.0));
+            }
+            let got = tap.known_before_push(&s) + tap.newest_weight() * f(60.0 * dt - 3.0);
+            assert!((got - f(60.0 * dt - 3.0 - lag)).abs() < 1e-12, "lag {lag}");
+            assert!(
+                tap.weights.iter().all(|&w| (0.0..=1.0).contains(&w)),
+                "monotone weights"
+            );
+        }
+    }
 
     #[test]
     fn tap_reproduces_cubics_exactly_at_any_lag() {

@@ -64,8 +64,7 @@ impl Link {
     fn push(&self, d: f64, u: f64) -> f64 {
         self.law.force(d) + self.damping_n_s_m * u
     }
-    /// The force while the contact lasts; the contact itself ends when `push` first reaches
-    /// zero (located by the integrator), so no clipping on delta is needed here.
+    /// The force reported while the contact lasts (never a pull).
     fn force(&self, d: f64, u: f64) -> f64 {
         self.push(d, u).max(0.0)
     }
@@ -73,17 +72,15 @@ impl Link {
 
 type State = [f64; 3]; // delta, delta', dissipated energy
 
+/// One RK4 step of the in-contact dynamics. No clipping: every step the integrator keeps lies
+/// inside the contact (the release is located separately), and clipping would put a kink in the
+/// stage that lands on the release instant (the dashpot's power c u^2 is finite there).
 fn rk4(link: &Link, m: f64, y: State, h: f64) -> State {
     let rate = |y: State| {
-        let f = link.force(y[0], y[1]);
         [
             y[1],
-            -f / m,
-            if f > 0.0 {
-                link.damping_n_s_m * y[1] * y[1]
-            } else {
-                0.0
-            },
+            -link.push(y[0], y[1]) / m,
+            link.damping_n_s_m * y[1] * y[1],
         ]
     };
     let add = |y: State, k: State, s: f64| [y[0] + s * k[0], y[1] + s * k[1], y[2] + s * k[2]];
@@ -99,7 +96,17 @@ fn integrate(sc: &ImpactScenario, link: Link) -> Result<Raw, SolveError> {
     let m = sc.effective_mass_kg();
     let w = sc.approach_velocity_m_s();
     let scale = contact_time_scale(&link.law, w, m, f64::INFINITY);
-    let h = sc.solver.dt_s.min(scale.lumped_duration_s / 200.0);
+    // Resolve both the spring's and (for a damped link) the dashpot's time scale m*/c.
+    let damping_time = if link.damping_n_s_m > 0.0 {
+        m / link.damping_n_s_m
+    } else {
+        f64::INFINITY
+    };
+    let h = sc
+        .solver
+        .dt_s
+        .min(scale.lumped_duration_s / 200.0)
+        .min(damping_time / 50.0);
     let still_pushing =
         |y: &State| link.push(y[0], y[1]) > 0.0 && (link.damping_n_s_m > 0.0 || y[0] > 0.0);
     let mut y: State = [0.0, w, 0.0];
@@ -127,32 +134,35 @@ fn integrate(sc: &ImpactScenario, link: Link) -> Result<Raw, SolveError> {
                     link.push(ys[0], ys[1])
                 }
             };
+            // Illinois false position: halving the stalled end's value keeps the bracket
+            // shrinking on both sides, so the end of contact is found to round-off.
             let (mut a, mut b) = (0.0, h);
             let (mut ga, mut gb) = (g(a), g(b));
-            for _ in 0..60 {
-                let s = if gb != ga {
-                    b - gb * (b - a) / (gb - ga)
-                } else {
-                    0.5 * (a + b)
-                };
-                let s = if s > a.min(b) && s < a.max(b) {
-                    s
-                } else {
-                    0.5 * (a + b)
-                };
+            let mut side = 0i8;
+            for _ in 0..100 {
+                let s = b - gb * (b - a) / (gb - ga);
+                let s = if s > a && s < b { s } else { 0.5 * (a + b) };
                 let gs = g(s);
                 if (gs > 0.0) == (ga > 0.0) {
                     a = s;
-                    ga = gs
+                    ga = gs;
+                    if side == 1 {
+                        gb *= 0.5;
+                    }
+                    side = 1;
                 } else {
                     b = s;
-                    gb = gs
+                    gb = gs;
+                    if side == -1 {
+                        ga *= 0.5;
+                    }
+                    side = -1;
                 }
-                if (b - a).abs() <= 1e-15 * h {
+                if b - a <= 1e-14 * h || gs == 0.0 {
                     break;
                 }
             }
-            let s = if ga.abs() < gb.abs() { a } else { b };
+            let s = a;
             y = rk4(&link, m, y, s);
             t += s;
             time_s.push(t);

@@ -296,7 +296,9 @@ pub(crate) fn peak_between(time: &[f64], force: &[f64], start: f64, end: f64) ->
         return fmax;
     }
     let denom = f0 - 2.0 * f1 + f2;
-    if denom >= 0.0 {
+    // A parabola only where the samples resolve a smooth maximum (second difference small against
+    // the peak); at a kink or an unresolved rise it would invent an overshoot.
+    if denom >= 0.0 || -denom > 0.01 * f1 {
         return fmax;
     }
     let x = 0.5 * (f0 - f2) / denom;

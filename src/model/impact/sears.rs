@@ -15,10 +15,11 @@
 //!   delta_{n+1} = W - c0 Phi_{n+1},  Phi_{n+1} = P + q h F_{n+1},  F = f(delta),
 //! i.e. the monotone scalar equation delta + c0 q h f(delta) = W - c0 P, with one root.
 //! Where c0 = 0 (the paper reading with d/c >= h) the step is explicit and Phi is a quadrature.
-//! The quadrature blends the trapezoid rule (small error constant) with BDF2 (L-stable), by the
-//! local stiffness z = c0 f'(delta) h: pure trapezoid for z <= 0.5, pure BDF2 for z >= 2. Both
-//! are second order, so the blend is too, and stiff contact does not ring (the trapezoid alone
-//! rings, physics.md). The step after a kink (onset, separation) uses the one-step theta method.
+//! The quadrature is a theta method whose weight follows the local stiffness z = c0 f'(delta) h
+//! ([`theta_for`]): the trapezoid rule where the step resolves the contact, backward Euler where
+//! it does not, never ringing (the trapezoid alone rings on stiff contact, physics.md). Where the
+//! step does not resolve the contact's rise, the force jumps within a step and look-ups into the
+//! history are linear (monotone) instead of cubic.
 //! Onset and separation are located inside the step, and the impulse of the partial step is
 //! integrated up to (from) that instant, so durations are not quantised to the grid.
 
@@ -180,6 +181,16 @@ impl LocalPoly {
     }
 }
 
+/// Weight of the new force in the theta method, from the step's stiffness ratio
+/// z = c0 f'(delta) h: the trapezoid rule (second order) as z -> 0, backward Euler (L-stable,
+/// exact in the quasi-static wave-theory limit) for z >= 2. The extra error against the
+/// trapezoid is (theta - 1/2) = O(z^2) = O(h^2) per unit of local error, so the scheme stays second
+/// order as the step shrinks; and theta >= 1 - 1/z everywhere, so the amplification factor
+/// (1 - (1 - theta) z) / (1 + theta z) is never negative: stiff contact never rings.
+fn theta_for(z: f64) -> f64 {
+    0.5 + 0.5 * (0.25 * z * z).min(1.0)
+}
+
 pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
     let law = sc.contact_law()?;
     let lay = layout(sc)?;
@@ -189,7 +200,10 @@ pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
     let [m1, m2] = lay.masses_kg;
     let m_eff = m1 * m2 / (m1 + m2);
     let z_eff = z[0] * z[1] / (z[0] + z[1]);
-    let scale = contact_time_scale(&law, w, m_eff, z_eff);
+    let mut scale = contact_time_scale(&law, w, m_eff, z_eff);
+    // A bar rings with its round trip during the contact: resolve that too.
+    let t_short = lay.round_trip_s[0].min(lay.round_trip_s[1]);
+    scale.resolve_s = scale.resolve_s.min(0.5 * t_short);
     let t_long = lay.round_trip_s[0].max(lay.round_trip_s[1]);
     let choice = choose_step(sc, scale, 2.0 * scale.lumped_duration_s.max(t_long));
     let h = choice.dt_s;
@@ -201,10 +215,21 @@ pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
         scale.lumped_duration_s.max(t_long)
     };
     let capacity = ((expected / h) as usize + 16).min(sc.solver.max_steps + 2);
+    // Where the step resolves the contact's rise the histories are smooth on the grid and cubic
+    // look-ups keep the error small; where it does not, the force jumps within a step and only
+    // monotone (linear) look-ups avoid overshoot at the echoes of those jumps.
+    let smooth = h <= 0.5 * scale.resolve_s;
+    let tap = |lag: f64| {
+        if smooth {
+            Tap::new(lag, h)
+        } else {
+            Tap::linear(lag, h)
+        }
+    };
     let mut channels: Vec<Channel> = (0..2)
         .map(|i| {
-            let recur = Tap::new(lay.round_trip_s[i], h);
-            let taps = lay.lags_s[i].map(|lag| Tap::new(lag, h));
+            let recur = tap(lay.round_trip_s[i]);
+            let taps = lay.lags_s[i].map(tap);
             let mut psi = Series::with_capacity(capacity);
             psi.push(0.0);
             let gain = 1.0 / (1.0 - recur.newest_weight());
@@ -233,7 +258,6 @@ pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
     let mut contacts: Vec<(f64, Option<f64>, f64)> = Vec::new();
     let mut contact_phi0 = 0.0;
     let mut on = true;
-    let mut kink = true;
     contacts.push((0.0, None, 0.0));
     let mut n = 0usize;
     // c0 depends only on the lags, so it is the same every step.
@@ -257,32 +281,20 @@ pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
             - channels[1].inv_z * channels[1].known_displacement(r1 * channels[1].gain);
         let (fn_, phin, dn) = (force[n], phi.last(), delta[n]);
         let free = wv - c0 * phin;
-        let (mut d1, mut f1, mut phi1, theta1);
+        let (mut d1, mut f1, mut phi1, theta);
         if c0 == 0.0 {
             // Explicit: delta_{n+1} depends on history alone; Phi by the trapezoid rule.
-            theta1 = 0.5;
+            theta = 0.5;
             d1 = wv;
             f1 = law.force(d1);
             phi1 = phin + 0.5 * h * (fn_ + f1);
         } else {
-            let zs = c0 * h * law.tangent(dn.max(free));
-            let theta = ((zs - 0.5) / 1.5).clamp(0.0, 1.0);
-            theta1 = 0.5 + 0.5 * theta;
-            let (p, q) = if kink {
-                (phin + (1.0 - theta1) * h * fn_, theta1)
-            } else {
-                let tr = phin + 0.5 * h * fn_;
-                let bdf = (4.0 * phin - phi.back(1)) / 3.0;
-                (
-                    (1.0 - theta) * tr + theta * bdf,
-                    (1.0 - theta) * 0.5 + theta * 2.0 / 3.0,
-                )
-            };
-            d1 = law.solve_implicit(c0 * q * h, wv - c0 * p, dn);
+            theta = theta_for(c0 * h * law.tangent(dn.max(free)));
+            let p = phin + (1.0 - theta) * h * fn_;
+            d1 = law.solve_implicit(c0 * theta * h, wv - c0 * p, dn);
             f1 = law.force(d1);
-            phi1 = p + q * h * f1;
+            phi1 = p + theta * h * f1;
         }
-        kink = false;
         let local = || LocalPoly {
             y: [
                 if n >= 2 { delta[n - 2] } else { 0.0 },
@@ -303,22 +315,31 @@ pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
                 phi1 = phin + poly.integrate_force(&law, 0.0, x, h);
                 t_star = n as f64 * h + x * h;
             } else {
-                // Trapezoid sub-step of length s ending where delta = 0 (F = 0 there), with W
-                // linear over the step: delta_n + s (dW/h - c0 (1 - theta1) F_n) = 0.
-                let dw = wv - (dn + c0 * phin);
-                let denom = c0 * (1.0 - theta1) * fn_ - dw / h;
-                let s = if denom > 0.0 { dn / denom } else { f64::NAN };
-                if dw <= 0.0 && s > 0.0 && s <= h {
-                    phi1 = phin + s * (1.0 - theta1) * fn_;
+                // A theta sub-step of length s = x h ending where delta = 0 (so F = 0 there):
+                // g(x) = W(t_n + x h) - c0 (Phi_n + (1 - theta) x h F_n) = 0, with W = delta +
+                // c0 Phi smooth and known on the grid, so a cubic through W_{n-2..n+1} locates it.
+                let w_at = |k: usize| delta[k] + c0 * phi.get(k);
+                let g = |x: f64, wk: f64| wk - c0 * (phin + (1.0 - theta) * x * h * fn_);
+                let poly = LocalPoly {
+                    y: [
+                        if n >= 2 { g(-2.0, w_at(n - 2)) } else { 0.0 },
+                        if n >= 1 { g(-1.0, w_at(n - 1)) } else { 0.0 },
+                        g(0.0, w_at(n)),
+                        g(1.0, wv),
+                    ],
+                    cubic: n >= 2,
+                };
+                if poly.y[3] <= 0.0 {
+                    let x = poly.root();
+                    phi1 = phin + x * h * (1.0 - theta) * fn_;
                     d1 = wv - c0 * phi1;
-                    t_star = n as f64 * h + s;
+                    t_star = n as f64 * h + x * h;
                 } else {
                     t_star = t1;
                 }
             }
             f1 = 0.0;
             on = false;
-            kink = true;
             separated = true;
             let last = contacts.last_mut().expect("a contact is open");
             last.1 = Some(t_star);
@@ -346,7 +367,6 @@ pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
                 t_on = n as f64 * h + s0;
             }
             on = true;
-            kink = true;
             contact_phi0 = phin;
             contacts.push((t_on, None, 0.0));
         }

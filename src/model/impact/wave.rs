@@ -94,7 +94,9 @@ pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
             delta += rate * (t - t_prev);
         }
         t_prev = t;
-        let echoes = [h[0].at(t - rt[0]), h[1].at(t - rt[1])];
+        // An echo is due exactly one round trip after its step; t - T_i can land an ulp short of
+        // the stored step time, so look up with the merging tolerance.
+        let echoes = [h[0].at(t - rt[0] + eps), h[1].at(t - rt[1] + eps)];
         let demand = (w - 2.0 * echoes[0] / z[0] - 2.0 * echoes[1] / z[1]) / compliance;
         let f_old = f;
         let mut separated = false;

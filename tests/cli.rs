@@ -1,0 +1,229 @@
+//! The `pounding` binary as a user and a script would call it.
+
+use std::process::{Command, Output};
+
+fn pounding(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_pounding"))
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+fn json(args: &[&str]) -> serde_json::Value {
+    let mut all = args.to_vec();
+    all.push("--json");
+    let o = pounding(&all);
+    assert!(o.status.success(), "{}", stderr(&o));
+    serde_json::from_str(&stdout(&o)).expect("one JSON object")
+}
+
+#[test]
+fn impact_without_arguments_runs_the_papers_base_case() {
+    let o = pounding(&["impact"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert!(
+        out.contains("preset paper-base") && out.contains("peak force") && out.contains("a tau"),
+        "{out}"
+    );
+}
+
+#[test]
+fn no_subcommand_runs_the_default_scene() {
+    let o = pounding(&[]);
+    assert!(o.status.success());
+    assert!(stdout(&o).contains("peak force"));
+}
+
+#[test]
+fn json_report_carries_the_promised_fields_in_si_units() {
+    let v = json(&["impact"]);
+    for key in [
+        "peak_force_n",
+        "contact_duration_s",
+        "restitution",
+        "impulse_ns",
+        "contacts",
+        "steps",
+        "solve_time_s",
+        "energy_balance_error",
+        "warnings",
+    ] {
+        assert!(v.get(key).is_some(), "missing {key}: {v}");
+    }
+    let peak = v["peak_force_n"].as_f64().unwrap();
+    assert!(peak > 1.3e5 && peak < 1.4e5, "{peak}");
+    assert_eq!(v["contacts"].as_u64(), Some(1));
+    assert!(v["warnings"].is_array());
+    let solve = v["solve_time_s"].as_f64().unwrap();
+    assert!(solve > 0.0 && solve < 1.0, "the solve alone: {solve}");
+}
+
+#[test]
+fn every_model_runs_from_the_command_line() {
+    for model in [
+        "sears",
+        "wave",
+        "lumped-hertz",
+        "lumped-linear",
+        "kelvin",
+        "stereo",
+        "fe",
+    ] {
+        let v = json(&["impact", "--model", model]);
+        assert_eq!(v["model"], model);
+        let e = v["restitution"].as_f64().unwrap();
+        assert!((0.0..=1.0).contains(&e), "{model}: e = {e}");
+    }
+    assert!(
+        json(&["impact", "--model", "stereo"])["peak_force_n"].is_null(),
+        "an instantaneous exchange has no peak"
+    );
+}
+
+#[test]
+fn set_overrides_reach_the_solver() {
+    let v = json(&[
+        "impact",
+        "--set",
+        "bar2.length=1",
+        "--set",
+        "sears.reading=end",
+        "--set",
+        "bar1.end_radius=0.1",
+    ]);
+    let e = v["restitution"].as_f64().unwrap();
+    assert!(e > 0.95 && e <= 1.0, "equal bars: {e}");
+    assert_eq!(v["sears"]["reading"], "end");
+    let w = json(&["impact", "--preset", "long-bars", "--model", "wave"]);
+    assert!((w["restitution"].as_f64().unwrap() - 0.5).abs() < 1e-12);
+}
+
+#[test]
+fn bad_values_exit_nonzero_and_name_the_field_and_range() {
+    for (set, field, range) in [
+        ("bar1.poisson_ratio=0.7", "bar1.poisson_ratio", "(-1, 0.5)"),
+        ("bar2.youngs_modulus=-5", "bar2.youngs_modulus", "> 0"),
+        ("bar1.length=nan", "bar1.length", "> 0"),
+        ("bar1.length=inf", "bar1.length", "> 0"),
+        ("solver.dt=0", "solver.dt", "> 0"),
+        ("bar1.radius=0", "bar1.radius", "> 0"),
+        ("contact.restitution=1.5", "contact.restitution", "[0, 1]"),
+        ("bar1.material=wood", "bar1.material", "steel|concrete"),
+        ("bar1.lenght=1", "bar1.lenght", "unknown key"),
+        (
+            "sears.reading=sideways",
+            "sears.reading",
+            "paper|collocated|end",
+        ),
+        ("bar1.velocity=fast", "bar1.velocity", "expected a number"),
+    ] {
+        let o = pounding(&["impact", "--set", set]);
+        assert!(!o.status.success(), "{set} must fail");
+        let err = stderr(&o);
+        assert!(err.contains(field) && err.contains(range), "{set}: {err}");
+        assert!(!err.contains("panicked"), "{err}");
+    }
+}
+
+#[test]
+fn bars_that_do_not_approach_report_no_impact() {
+    let v = json(&["impact", "--set", "bar2.velocity=2"]);
+    assert_eq!(v["impact"], false);
+    assert!(
+        v["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|w| w.as_str().unwrap().contains("not approaching"))
+    );
+}
+
+#[test]
+fn a_malformed_preset_is_reported_with_file_line_and_key() {
+    let dir = std::env::temp_dir().join(format!("pounding-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("typo.toml");
+    std::fs::write(
+        &file,
+        "model = \"sears\"\n\n[bar1]\nlength = 1.0\nlenght = 2.0\n",
+    )
+    .unwrap();
+    let o = pounding(&["impact", "--preset", file.to_str().unwrap()]);
+    assert!(!o.status.success());
+    let err = stderr(&o);
+    assert!(
+        err.contains("typo.toml") && err.contains("line 5") && err.contains("bar1.lenght"),
+        "{err}"
+    );
+    std::fs::write(&file, "[bar1\nlength = 1.0\n").unwrap();
+    let err = stderr(&pounding(&["impact", "--preset", file.to_str().unwrap()]));
+    assert!(err.contains("typo.toml") && err.contains("line 1"), "{err}");
+    let err = stderr(&pounding(&["impact", "--preset", "no-such-preset"]));
+    assert!(
+        err.contains("no-such-preset") && err.contains("paper-base"),
+        "{err}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn csv_has_a_header_with_units_and_one_row_per_sample() {
+    let dir = std::env::temp_dir().join(format!("pounding-csv-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("force.csv");
+    let o = pounding(&["impact", "--csv", file.to_str().unwrap(), "--json"]);
+    assert!(o.status.success());
+    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    let text = std::fs::read_to_string(&file).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some("time_s,force_n,approach_m"));
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len() as u64, v["steps"].as_u64().unwrap() + 1);
+    let peak = rows.iter().map(|r| r[1]).fold(0.0, f64::max);
+    assert!((peak - v["peak_force_n"].as_f64().unwrap()).abs() < 1e-3 * peak);
+    let err = stderr(&pounding(&["impact", "--csv", "/nonexistent-dir/x.csv"]));
+    assert!(err.contains("/nonexistent-dir/x.csv"), "{err}");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn a_run_over_the_step_budget_stops_with_a_message_naming_it() {
+    let o = pounding(&[
+        "impact",
+        "--set",
+        "solver.window=1",
+        "--set",
+        "solver.max_steps=1000",
+    ]);
+    assert!(!o.status.success());
+    assert!(
+        stderr(&o).contains("solver.max_steps = 1000"),
+        "{}",
+        stderr(&o)
+    );
+}
+
+#[test]
+fn every_shipped_preset_runs() {
+    let o = pounding(&["impact", "--list-presets"]);
+    let names: Vec<String> = stdout(&o)
+        .lines()
+        .map(|l| l.split_whitespace().next().unwrap().to_string())
+        .collect();
+    assert!(names.len() >= 5 && names.contains(&"paper-base".to_string()));
+    for name in names {
+        let v = json(&["impact", "--preset", &name]);
+        assert!(v["peak_force_n"].as_f64().unwrap() > 0.0, "{name}");
+    }
+}

@@ -1,0 +1,91 @@
+//! Helpers shared by the integration tests.
+#![allow(dead_code)]
+
+use pounding::model::field::BarWaves;
+use pounding::model::impact::{ImpactResult, ModelKind, solve};
+use pounding::model::scenario::ImpactScenario;
+
+pub fn run(model: ModelKind, sc: &ImpactScenario) -> ImpactResult {
+    solve(model, sc).unwrap_or_else(|e| panic!("{} should solve: {e}", model.name()))
+}
+
+pub fn rel(a: f64, b: f64) -> f64 {
+    (a - b).abs() / b.abs().max(f64::MIN_POSITIVE)
+}
+
+/// Z1 Z2 / (Z1 + Z2) (v1 - v2): the wave-theory force.
+pub fn wave_force(sc: &ImpactScenario) -> f64 {
+    let (z1, z2) = (sc.bar1.impedance_n_s_m(), sc.bar2.impedance_n_s_m());
+    z1 * z2 / (z1 + z2) * sc.approach_velocity_m_s()
+}
+
+/// Momentum of a bar computed from its velocity field (rho~ A times the integral of v dx),
+/// independently of the impulse the solver reports. Simpson's rule on `n` intervals.
+pub fn field_momentum(waves: &BarWaves, density: f64, t: f64, n: usize) -> f64 {
+    let l = waves.length_m();
+    let h = l / n as f64;
+    let mut s = 0.0;
+    for k in 0..=n {
+        let w = if k == 0 || k == n {
+            1.0
+        } else if k % 2 == 1 {
+            4.0
+        } else {
+            2.0
+        };
+        s += w * waves.velocity_m_s(k as f64 * h, t);
+    }
+    density * waves.area_m2 * s * h / 3.0
+}
+
+/// Mechanical energy of a bar from its field, in a frame moving at `frame_v`: the integral of
+/// rho~ A (v - frame_v)^2 / 2 + A sigma^2 / (2E).
+pub fn field_energy_in_frame(
+    waves: &BarWaves,
+    density: f64,
+    youngs: f64,
+    t: f64,
+    n: usize,
+    frame_v: f64,
+) -> f64 {
+    let l = waves.length_m();
+    let h = l / n as f64;
+    let mut s = 0.0;
+    for k in 0..=n {
+        let w = if k == 0 || k == n {
+            1.0
+        } else if k % 2 == 1 {
+            4.0
+        } else {
+            2.0
+        };
+        let x = k as f64 * h;
+        let (v, sigma) = (waves.velocity_m_s(x, t) - frame_v, waves.stress_pa(x, t));
+        s += w
+            * (0.5 * density * waves.area_m2 * v * v
+                + 0.5 * waves.area_m2 * sigma * sigma / youngs);
+    }
+    s * h / 3.0
+}
+
+/// Mechanical energy of a bar from its field (lab frame).
+pub fn field_energy(waves: &BarWaves, density: f64, youngs: f64, t: f64, n: usize) -> f64 {
+    let l = waves.length_m();
+    let h = l / n as f64;
+    let mut s = 0.0;
+    for k in 0..=n {
+        let w = if k == 0 || k == n {
+            1.0
+        } else if k % 2 == 1 {
+            4.0
+        } else {
+            2.0
+        };
+        let x = k as f64 * h;
+        let (v, sigma) = (waves.velocity_m_s(x, t), waves.stress_pa(x, t));
+        s += w
+            * (0.5 * density * waves.area_m2 * v * v
+                + 0.5 * waves.area_m2 * sigma * sigma / youngs);
+    }
+    s * h / 3.0
+}
