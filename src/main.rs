@@ -1,9 +1,19 @@
 use clap::Parser;
-use pounding::cli::{Cli, run};
+use pounding::cli::{Cli, is_broken_pipe, run};
+use std::io::Write;
 
 fn main() {
-    if let Err(e) = run(Cli::parse()) {
-        eprintln!("error: {e:#}");
-        std::process::exit(2);
+    let stdout = std::io::stdout();
+    let mut out = std::io::BufWriter::new(stdout.lock());
+    let result =
+        run(Cli::parse(), &mut out).and_then(|()| out.flush().map_err(anyhow::Error::from));
+    match result {
+        Ok(()) => {}
+        Err(e) if is_broken_pipe(&e) => {}
+        Err(e) => {
+            drop(out);
+            eprintln!("error: {e:#}");
+            std::process::exit(2);
+        }
     }
 }

@@ -34,19 +34,20 @@ pub struct ImpactArgs {
     pub list_presets: bool,
 }
 
-pub fn run(args: &ImpactArgs) -> anyhow::Result<()> {
+pub fn run(args: &ImpactArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     if args.list_keys {
         for (k, what) in IMPACT_KEYS {
-            println!("{k:22} {what}");
+            writeln!(out, "{k:22} {what}")?;
         }
         return Ok(());
     }
     if args.list_presets {
         for (name, text) in EMBEDDED {
-            println!(
+            writeln!(
+                out,
                 "{name:14} {}",
                 preset::description(text).unwrap_or_default()
-            );
+            )?;
         }
         return Ok(());
     }
@@ -68,7 +69,7 @@ pub fn run(args: &ImpactArgs) -> anyhow::Result<()> {
     let result = solve(setup.model, &setup.scenario)?;
     if let Some(path) = &args.csv {
         if path.as_os_str() == "-" {
-            crate::io::csv::write_impact_history(&mut std::io::stdout().lock(), &result)?;
+            crate::io::csv::write_impact_history(out, &result)?;
         } else {
             let file = std::fs::File::create(path)
                 .with_context(|| format!("--csv: cannot create {}", path.display()))?;
@@ -80,9 +81,9 @@ pub fn run(args: &ImpactArgs) -> anyhow::Result<()> {
     }
     if args.json {
         let report = ImpactReport::new(&setup, preset_name, &result);
-        println!("{}", serde_json::to_string_pretty(&report)?);
+        writeln!(out, "{}", serde_json::to_string_pretty(&report)?)?;
     } else if args.csv.as_ref().is_none_or(|p| p.as_os_str() != "-") {
-        print!("{}", summary(&setup, preset_name, &result));
+        write!(out, "{}", summary(&setup, preset_name, &result))?;
     }
     Ok(())
 }

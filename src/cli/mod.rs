@@ -22,18 +22,27 @@ pub enum Command {
     Impact(impact::ImpactArgs),
 }
 
-/// Runs the command line; `Ok(())` means exit status 0.
-pub fn run(cli: Cli) -> anyhow::Result<()> {
+/// Runs the command line, writing results to `out`; `Ok(())` means exit status 0.
+pub fn run(cli: Cli, out: &mut dyn std::io::Write) -> anyhow::Result<()> {
     match cli.command {
-        Some(Command::Impact(args)) => impact::run(&args),
+        Some(Command::Impact(args)) => impact::run(&args, out),
         None => {
             // The window is a later front end; until then the default scene runs here.
-            let args = impact::ImpactArgs::default();
-            impact::run(&args)?;
-            println!(
+            impact::run(&impact::ImpactArgs::default(), out)?;
+            writeln!(
+                out,
                 "\n(The explorer window is not built yet; `pounding impact --help` lists what the command line can do.)"
-            );
+            )?;
             Ok(())
         }
     }
+}
+
+/// Whether an error is only a closed output pipe (`pounding ... | head`), which ends the
+/// program quietly like any Unix filter.
+pub fn is_broken_pipe(e: &anyhow::Error) -> bool {
+    e.chain().any(|c| {
+        c.downcast_ref::<std::io::Error>()
+            .is_some_and(|io| io.kind() == std::io::ErrorKind::BrokenPipe)
+    })
 }
