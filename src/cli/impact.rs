@@ -42,7 +42,10 @@ pub fn run(args: &ImpactArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         return Ok(());
     }
     if args.list_presets {
-        for (name, text) in EMBEDDED {
+        for (name, text) in EMBEDDED
+            .iter()
+            .filter(|(_, t)| preset::scene(t) == "impact")
+        {
             writeln!(
                 out,
                 "{name:14} {}",
@@ -52,7 +55,8 @@ pub fn run(args: &ImpactArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         return Ok(());
     }
     let preset_name = args.preset.as_deref().unwrap_or(DEFAULT_PRESET);
-    let mut setup = preset::load(preset_name).map_err(|e| anyhow::anyhow!("preset {e}"))?;
+    let mut setup: crate::io::settings::ImpactSetup =
+        preset::load_for(preset_name, "impact").map_err(|e| anyhow::anyhow!("preset {e}"))?;
     for assignment in &args.set {
         setup
             .apply_assignment(assignment)

@@ -1,5 +1,7 @@
 //! The command-line front end: `pounding impact ...`.
 
+pub mod building_report;
+pub mod buildings;
 pub mod impact;
 pub mod report;
 
@@ -20,12 +22,15 @@ pub struct Cli {
 pub enum Command {
     /// Solve one impact of two bars (the paper's base case when given nothing).
     Impact(impact::ImpactArgs),
+    /// Two buildings under a ground motion, pounding (the paper's Section 4 when given nothing).
+    Buildings(buildings::BuildingArgs),
 }
 
 /// Runs the command line, writing results to `out`; `Ok(())` means exit status 0.
 pub fn run(cli: Cli, out: &mut dyn std::io::Write) -> anyhow::Result<()> {
     match cli.command {
         Some(Command::Impact(args)) => impact::run(&args, out),
+        Some(Command::Buildings(args)) => buildings::run(&args, out),
         None => {
             // The window is a later front end; until then the default scene runs here.
             impact::run(&impact::ImpactArgs::default(), out)?;

@@ -1,5 +1,7 @@
 //! Files and text at the edge of the core: presets, settings, CSV histories.
 
+pub mod building_settings;
 pub mod csv;
+pub mod motion;
 pub mod preset;
 pub mod settings;

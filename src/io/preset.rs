@@ -174,7 +174,7 @@ pub fn parse(text: &str, source: &str) -> Result<Vec<(String, SettingValue, usiz
                 }
             }
             // Descriptive metadata, shown by front ends, not settings.
-            DeValue::String(_) if name == "name" || name == "description" => {}
+            DeValue::String(_) if name == "name" || name == "description" || name == "scene" => {}
             other => out.push((name.clone(), scalar(&name, other, line)?, line)),
         }
     }
@@ -182,18 +182,51 @@ pub fn parse(text: &str, source: &str) -> Result<Vec<(String, SettingValue, usiz
     Ok(out)
 }
 
+/// Anything presets can configure: one `apply` per key.
+pub trait Configurable {
+    fn apply_setting(
+        &mut self,
+        key: &str,
+        value: &SettingValue,
+    ) -> Result<(), crate::model::scenario::InputError>;
+}
+
+impl Configurable for ImpactSetup {
+    fn apply_setting(
+        &mut self,
+        key: &str,
+        value: &SettingValue,
+    ) -> Result<(), crate::model::scenario::InputError> {
+        self.apply(key, value)
+    }
+}
+
+impl Configurable for super::building_settings::BuildingSetup {
+    fn apply_setting(
+        &mut self,
+        key: &str,
+        value: &SettingValue,
+    ) -> Result<(), crate::model::scenario::InputError> {
+        self.apply(key, value)
+    }
+}
+
 /// Loads a preset by name or path onto a fresh default setup.
-pub fn load(name_or_path: &str) -> Result<ImpactSetup, PresetError> {
+pub fn load<S: Configurable + Default>(name_or_path: &str) -> Result<S, PresetError> {
     let (text, source) = find(name_or_path)?;
-    let mut setup = ImpactSetup::default();
+    let mut setup = S::default();
     apply_text(&mut setup, &text, &source)?;
     Ok(setup)
 }
 
 /// Applies a preset's text onto a setup.
-pub fn apply_text(setup: &mut ImpactSetup, text: &str, source: &str) -> Result<(), PresetError> {
+pub fn apply_text<S: Configurable>(
+    setup: &mut S,
+    text: &str,
+    source: &str,
+) -> Result<(), PresetError> {
     for (key, value, line) in parse(text, source)? {
-        setup.apply(&key, &value).map_err(|e| PresetError {
+        setup.apply_setting(&key, &value).map_err(|e| PresetError {
             source: source.to_string(),
             line: Some(line),
             key: Some(e.field.clone()),
@@ -203,15 +236,44 @@ pub fn apply_text(setup: &mut ImpactSetup, text: &str, source: &str) -> Result<(
     Ok(())
 }
 
-/// The description line of a compiled-in preset.
-pub fn description(text: &str) -> Option<String> {
+fn metadata(text: &str, key: &str) -> Option<String> {
     let table = toml::de::DeTable::parse(text).ok()?;
     table
         .get_ref()
         .iter()
-        .find(|(k, _)| k.get_ref() == "description")
+        .find(|(k, _)| k.get_ref() == key)
         .and_then(|(_, v)| match v.get_ref() {
             toml::de::DeValue::String(s) => Some(s.to_string()),
             _ => None,
         })
+}
+
+/// The description line of a preset.
+pub fn description(text: &str) -> Option<String> {
+    metadata(text, "description")
+}
+
+/// Which scene a preset configures: `impact` (the default) or `buildings`.
+pub fn scene(text: &str) -> String {
+    metadata(text, "scene").unwrap_or_else(|| "impact".to_string())
+}
+
+/// Loads a preset for a given scene, refusing one written for another scene.
+pub fn load_for<S: Configurable + Default>(
+    name_or_path: &str,
+    wanted: &str,
+) -> Result<S, PresetError> {
+    let (text, source) = find(name_or_path)?;
+    let found = scene(&text);
+    if found != wanted {
+        return Err(PresetError {
+            source,
+            line: None,
+            key: Some("scene".into()),
+            message: format!("this preset is for the {found} scene; use `pounding {found}`"),
+        });
+    }
+    let mut setup = S::default();
+    apply_text(&mut setup, &text, &source)?;
+    Ok(setup)
 }

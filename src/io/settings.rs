@@ -125,7 +125,7 @@ impl Default for ImpactSetup {
     }
 }
 
-fn number(key: &str, v: &SettingValue) -> Result<f64, InputError> {
+pub(crate) fn number(key: &str, v: &SettingValue) -> Result<f64, InputError> {
     match v {
         SettingValue::Number(x) => Ok(*x),
         other => Err(InputError::new(
@@ -135,7 +135,7 @@ fn number(key: &str, v: &SettingValue) -> Result<f64, InputError> {
     }
 }
 
-fn text<'a>(key: &str, v: &'a SettingValue) -> Result<&'a str, InputError> {
+pub(crate) fn text<'a>(key: &str, v: &'a SettingValue) -> Result<&'a str, InputError> {
     match v {
         SettingValue::Text(s) => Ok(s),
         other => Err(InputError::new(
@@ -145,7 +145,7 @@ fn text<'a>(key: &str, v: &'a SettingValue) -> Result<&'a str, InputError> {
     }
 }
 
-fn count(key: &str, v: &SettingValue) -> Result<usize, InputError> {
+pub(crate) fn count(key: &str, v: &SettingValue) -> Result<usize, InputError> {
     let x = number(key, v)?;
     if x.is_finite() && x >= 0.0 && x.fract() == 0.0 && x <= 1e15 {
         Ok(x as usize)
@@ -157,7 +157,7 @@ fn count(key: &str, v: &SettingValue) -> Result<usize, InputError> {
     }
 }
 
-fn choice<T: Copy>(
+pub(crate) fn choice<T: Copy>(
     key: &str,
     v: &SettingValue,
     parse: impl Fn(&str) -> Option<T>,

@@ -65,6 +65,11 @@ impl Series {
     pub fn into_samples(self) -> Vec<f64> {
         self.data
     }
+
+    /// Drops samples after the first `len` (to undo a trial step).
+    pub fn truncate(&mut self, len: usize) {
+        self.data.truncate(len);
+    }
 }
 
 /// A fixed-lag cubic look-up into a [`Series`].

@@ -1,9 +1,11 @@
 //! The physics core: no GUI, GPU, file formats or printing.
 
 pub mod bar;
+pub mod building;
 pub mod contact;
 pub mod field;
 pub mod history;
 pub mod impact;
 pub mod material;
+pub mod motion;
 pub mod scenario;

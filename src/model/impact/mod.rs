@@ -6,7 +6,7 @@
 pub mod fe;
 pub mod lumped;
 pub mod sears;
-mod timestep;
+pub(crate) mod timestep;
 pub mod wave;
 
 use super::field::BarWaves;

@@ -1,0 +1,252 @@
+//! Ground motion files: PEER NGA `.AT2` and plain text (time and acceleration columns, or values
+//! only with a given step). A malformed file gives an error naming its line.
+
+use crate::model::motion::{G, GroundMotion};
+use std::fmt;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Units {
+    G,
+    MetresPerSecond2,
+    CentimetresPerSecond2,
+}
+
+impl Units {
+    pub fn from_name(s: &str) -> Option<Self> {
+        match s {
+            "g" => Some(Units::G),
+            "m/s2" | "m/s^2" => Some(Units::MetresPerSecond2),
+            "cm/s2" | "cm/s^2" | "gal" => Some(Units::CentimetresPerSecond2),
+            _ => None,
+        }
+    }
+    pub fn to_m_s2(self) -> f64 {
+        match self {
+            Units::G => G,
+            Units::MetresPerSecond2 => 1.0,
+            Units::CentimetresPerSecond2 => 0.01,
+        }
+    }
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct MotionError {
+    pub source: String,
+    pub line: Option<usize>,
+    pub message: String,
+}
+
+impl fmt::Display for MotionError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.line {
+            Some(l) => write!(f, "{}, line {l}: {}", self.source, self.message),
+            None => write!(f, "{}: {}", self.source, self.message),
+        }
+    }
+}
+
+impl std::error::Error for MotionError {}
+
+/// Reads a record. `.AT2` files (by extension or by their PEER header) carry their own step and
+/// are in g; other files are text in `units`, with `dt_s` required for a values-only file.
+pub fn parse(
+    text: &str,
+    source: &str,
+    units: Units,
+    dt_s: Option<f64>,
+) -> Result<GroundMotion, MotionError> {
+    let is_at2 = source.to_ascii_lowercase().ends_with(".at2")
+        || text.lines().next().is_some_and(|l| l.contains("PEER"));
+    if is_at2 {
+        parse_at2(text, source)
+    } else {
+        parse_text(text, source, units, dt_s)
+    }
+}
+
+fn err(source: &str, line: Option<usize>, message: impl Into<String>) -> MotionError {
+    MotionError {
+        source: source.to_string(),
+        line,
+        message: message.into(),
+    }
+}
+
+fn number(token: &str, source: &str, line: usize) -> Result<f64, MotionError> {
+    let v: f64 = token
+        .parse()
+        .map_err(|_| err(source, Some(line), format!("'{token}' is not a number")))?;
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(err(
+            source,
+            Some(line),
+            format!("'{token}' is not a finite number"),
+        ))
+    }
+}
+
+/// PEER NGA AT2: three header lines, then `NPTS=   5372, DT=   .0100 SEC,` (or the newer
+/// `5372    0.0100    NPTS, DT`), then the values in g.
+pub fn parse_at2(text: &str, source: &str) -> Result<GroundMotion, MotionError> {
+    let lines: Vec<&str> = text.lines().collect();
+    if lines.len() < 5 {
+        return Err(err(
+            source,
+            Some(lines.len().max(1)),
+            "an AT2 file has 4 header lines and then values",
+        ));
+    }
+    let header = lines[3];
+    let (npts, dt) = if header.to_ascii_uppercase().contains("NPTS=") {
+        let up = header.to_ascii_uppercase();
+        let after = |key: &str| -> Option<&str> {
+            let i = up.find(key)? + key.len();
+            header[i..]
+                .split(|c: char| c == ',' || c.is_whitespace())
+                .find(|s| !s.is_empty())
+        };
+        let n = after("NPTS=").ok_or_else(|| err(source, Some(4), "NPTS= has no value"))?;
+        let d = after("DT=").ok_or_else(|| err(source, Some(4), "DT= has no value"))?;
+        (number(n, source, 4)?, number(d, source, 4)?)
+    } else {
+        let mut it = header.split_whitespace();
+        match (it.next(), it.next()) {
+            (Some(n), Some(d)) => (number(n, source, 4)?, number(d, source, 4)?),
+            _ => {
+                return Err(err(
+                    source,
+                    Some(4),
+                    "expected `NPTS=..., DT=...` or `NPTS DT` on the fourth line",
+                ));
+            }
+        }
+    };
+    if !(npts >= 1.0 && npts.fract() == 0.0) {
+        return Err(err(
+            source,
+            Some(4),
+            format!("NPTS = {npts} is not a positive whole number"),
+        ));
+    }
+    if dt <= 0.0 {
+        return Err(err(source, Some(4), format!("DT = {dt} must be > 0 s")));
+    }
+    let mut values = Vec::with_capacity(npts as usize);
+    for (i, line) in lines.iter().enumerate().skip(4) {
+        for tok in line.split_whitespace() {
+            values.push(number(tok, source, i + 1)? * G);
+        }
+    }
+    if values.len() != npts as usize {
+        return Err(err(
+            source,
+            Some(lines.len()),
+            format!(
+                "the header promises NPTS = {npts} values, the file has {}",
+                values.len()
+            ),
+        ));
+    }
+    Ok(GroundMotion {
+        name: source.to_string(),
+        dt_s: dt,
+        accel_m_s2: values,
+    })
+}
+
+/// Text: `#` or `%` comments, values separated by blanks or commas. Rows of two numbers are
+/// (time, acceleration) unless a step is given; anything else is a list of values at `dt_s`.
+pub fn parse_text(
+    text: &str,
+    source: &str,
+    units: Units,
+    dt_s: Option<f64>,
+) -> Result<GroundMotion, MotionError> {
+    let scale = units.to_m_s2();
+    let mut rows: Vec<(usize, Vec<f64>)> = Vec::new();
+    for (i, line) in text.lines().enumerate() {
+        let t = line.trim();
+        if t.is_empty() || t.starts_with('#') || t.starts_with('%') {
+            continue;
+        }
+        let toks: Result<Vec<f64>, _> = t
+            .split(|c: char| c == ',' || c.is_whitespace())
+            .filter(|s| !s.is_empty())
+            .map(|s| number(s, source, i + 1))
+            .collect();
+        rows.push((i + 1, toks?));
+    }
+    if rows.is_empty() {
+        return Err(err(source, None, "no data"));
+    }
+    let two_columns = rows.iter().all(|(_, r)| r.len() == 2);
+    if two_columns && dt_s.is_none() {
+        let times: Vec<f64> = rows.iter().map(|(_, r)| r[0]).collect();
+        if rows.len() < 2 {
+            return Err(err(
+                source,
+                Some(rows[0].0),
+                "one (time, acceleration) row gives no step",
+            ));
+        }
+        let dt = times[1] - times[0];
+        if dt <= 0.0 {
+            return Err(err(
+                source,
+                Some(rows[1].0),
+                "time must increase (or give motion.dt for a values-only file)",
+            ));
+        }
+        for k in 1..rows.len() {
+            let step = times[k] - times[k - 1];
+            if (step - dt).abs() > 1e-6 * dt.max(1.0) + 1e-3 * dt {
+                return Err(err(
+                    source,
+                    Some(rows[k].0),
+                    format!(
+                        "the time step changes from {dt} s to {step} s; a uniform step is needed"
+                    ),
+                ));
+            }
+        }
+        if times[0].abs() > 1e-9 {
+            return Err(err(
+                source,
+                Some(rows[0].0),
+                format!(
+                    "the record starts at t = {} s; it must start at 0",
+                    times[0]
+                ),
+            ));
+        }
+        return Ok(GroundMotion {
+            name: source.to_string(),
+            dt_s: dt,
+            accel_m_s2: rows.iter().map(|(_, r)| r[1] * scale).collect(),
+        });
+    }
+    let dt = dt_s.ok_or_else(|| {
+        err(
+            source,
+            Some(rows[0].0),
+            format!(
+                "{} values per row: give the step with --set motion.dt=SECONDS",
+                rows[0].1.len()
+            ),
+        )
+    })?;
+    if !(dt.is_finite() && dt > 0.0) {
+        return Err(err(source, None, format!("motion.dt = {dt} must be > 0 s")));
+    }
+    Ok(GroundMotion {
+        name: source.to_string(),
+        dt_s: dt,
+        accel_m_s2: rows
+            .into_iter()
+            .flat_map(|(_, r)| r)
+            .map(|a| a * scale)
+            .collect(),
+    })
+}

@@ -1,0 +1,258 @@
+//! Two buildings pounding: closed forms, balances, convergence, and the paper's case.
+
+use pounding::io::motion::{Units, parse};
+use pounding::model::building::{BuildingResult, BuildingScenario, ContactModel, solve};
+use pounding::model::motion::GroundMotion;
+
+fn el_centro_8s() -> Option<GroundMotion> {
+    let text = std::fs::read_to_string("../shared/data/elcentro_1940_ns.txt").ok()?;
+    Some(
+        parse(&text, "elcentro_1940_ns.txt", Units::G, None)
+            .unwrap()
+            .truncated(8.0),
+    )
+}
+
+/// A record to shake the buildings with: El Centro where the shared data is present, else the
+/// built-in synthetic record (so these tests never depend on files outside the repository).
+fn record() -> GroundMotion {
+    el_centro_8s().unwrap_or_else(|| {
+        pounding::model::motion::synthetic::SyntheticSpec::default()
+            .generate()
+            .truncated(8.0)
+    })
+}
+
+fn run(sc: &BuildingScenario, m: &GroundMotion) -> BuildingResult {
+    solve(sc, m).unwrap_or_else(|e| panic!("{}: {e}", sc.contact.name()))
+}
+
+fn balance(r: &BuildingResult) -> f64 {
+    let e = &r.energy;
+    (e.input_j - e.building_damping_j - e.contact_j - e.final_j - e.stored_contact_j) / e.input_j
+}
+
+#[test]
+fn without_contact_a_harmonic_base_motion_gives_the_closed_form_steady_state() {
+    // m u'' + c u' + k u = -m A sin(W t): steady amplitude A / sqrt((w^2 - W^2)^2 + (2 z w W)^2).
+    let (amp, freq) = (2.0, 2.0 * std::f64::consts::PI * 1.5);
+    let dt = 0.002;
+    let n = (40.0 / dt) as usize;
+    let motion = GroundMotion {
+        name: "harmonic".into(),
+        dt_s: dt,
+        accel_m_s2: (0..=n)
+            .map(|i| amp * (freq * i as f64 * dt).sin())
+            .collect(),
+    };
+    let mut sc = BuildingScenario::paper();
+    sc.contact = ContactModel::None;
+    let r = run(&sc, &motion);
+    for (i, b) in [sc.left, sc.right].iter().enumerate() {
+        let w = (b.stiffness_n_m / b.mass_kg).sqrt();
+        let expected = amp
+            / ((w * w - freq * freq).powi(2) + (2.0 * b.damping_ratio * w * freq).powi(2)).sqrt();
+        // The transient has decayed (exp(-z w t) < 1e-5) over the last 10 s.
+        let steady = r
+            .time_s
+            .iter()
+            .zip(&r.displacement_m[i])
+            .filter(|(t, _)| **t > 30.0)
+            .map(|(_, u)| u.abs())
+            .fold(0.0, f64::max);
+        assert!(
+            (steady - expected).abs() < 2e-3 * expected,
+            "building {i}: {steady} vs {expected}"
+        );
+    }
+}
+
+#[test]
+fn energy_put_in_by_the_ground_is_accounted_for_in_every_contact_model() {
+    let m = record();
+    for model in ContactModel::ALL {
+        let mut sc = BuildingScenario::paper();
+        sc.contact = model;
+        let r = run(&sc, &m);
+        assert!(
+            balance(&r).abs() < 5e-4,
+            "{}: balance {}",
+            model.name(),
+            balance(&r)
+        );
+        if matches!(model, ContactModel::Linear | ContactModel::Hertz) {
+            // An elastic element gives back what it takes.
+            assert!(
+                r.energy.contact_j.abs() < 1e-3 * r.energy.input_j,
+                "{}: {} J kept by an elastic contact",
+                model.name(),
+                r.energy.contact_j
+            );
+        }
+        if model != ContactModel::None {
+            assert!(
+                !r.impacts.is_empty(),
+                "{}: the buildings pound",
+                model.name()
+            );
+        }
+    }
+}
+
+#[test]
+fn the_impulse_of_each_contact_is_the_momentum_it_exchanges() {
+    let m = record();
+    for model in [
+        ContactModel::Sears,
+        ContactModel::Linear,
+        ContactModel::Kelvin,
+    ] {
+        let mut sc = BuildingScenario::paper();
+        sc.contact = model;
+        let r = run(&sc, &m);
+        let b = [sc.left, sc.right];
+        for c in r.contacts.iter().take(5) {
+            let i0 = r.time_s.partition_point(|&t| t < c.start_s) - 1;
+            let i1 = r.time_s.partition_point(|&t| t < c.end_s) + 1;
+            for (side, bs) in b.iter().enumerate() {
+                // m dv = integral of (-m a_g - c v - k u -/+ F), trapezoid as Newmark applies it.
+                let mut other = 0.0;
+                for k in i0..i1 {
+                    let f = |j: usize| {
+                        -b[side].mass_kg * r.ground_m_s2[j]
+                            - b[side].damping_n_s_m() * r.velocity_m_s[side][j]
+                            - b[side].stiffness_n_m * r.displacement_m[side][j]
+                    };
+                    other += 0.5 * (r.time_s[k + 1] - r.time_s[k]) * (f(k) + f(k + 1));
+                }
+                let dp = bs.mass_kg * (r.velocity_m_s[side][i1] - r.velocity_m_s[side][i0]);
+                let contact_impulse = if side == 0 { other - dp } else { dp - other };
+                assert!(
+                    (contact_impulse - c.impulse_ns).abs() < 1e-6 * c.impulse_ns,
+                    "{} side {side}: {contact_impulse} vs {}",
+                    model.name(),
+                    c.impulse_ns
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn impact_counts_and_peaks_converge_as_the_steps_are_refined() {
+    let m = record();
+    for model in [ContactModel::Sears, ContactModel::Linear] {
+        let ladder: Vec<BuildingResult> = [(8.0, 0.005), (16.0, 0.0025), (32.0, 0.00125)]
+            .iter()
+            .map(|&(sps, max_step)| {
+                let mut sc = BuildingScenario::paper();
+                sc.contact = model;
+                sc.steps_per_scale = sps;
+                sc.max_step_s = max_step;
+                run(&sc, &m)
+            })
+            .collect();
+        let fine = &ladder[2];
+        for r in &ladder[..2] {
+            assert_eq!(
+                r.impacts.len(),
+                fine.impacts.len(),
+                "{}: impact count",
+                model.name()
+            );
+            for i in 0..2 {
+                assert!(
+                    (r.peak_displacement_m[i] - fine.peak_displacement_m[i]).abs()
+                        < 2e-3 * fine.peak_displacement_m[i],
+                    "{}: peak displacement",
+                    model.name()
+                );
+            }
+            assert!(
+                (r.max_pounding_force_n - fine.max_pounding_force_n).abs()
+                    < 0.01 * fine.max_pounding_force_n,
+                "{}: max force {} vs {}",
+                model.name(),
+                r.max_pounding_force_n,
+                fine.max_pounding_force_n
+            );
+        }
+    }
+}
+
+/// Two free buildings (no springs to speak of, no ground motion) meeting at 1 m/s.
+fn isolated(model: ContactModel) -> BuildingResult {
+    let mut sc = BuildingScenario::paper();
+    sc.contact = model;
+    for b in [&mut sc.left, &mut sc.right] {
+        b.stiffness_n_m = 1e-3;
+        b.damping_ratio = 0.0;
+    }
+    sc.gap_m = 0.0;
+    sc.initial_velocity_m_s = [1.0, 0.0];
+    sc.max_step_s = 1e-3;
+    let quiet = GroundMotion {
+        name: "none".into(),
+        dt_s: 0.001,
+        accel_m_s2: vec![0.0; 201],
+    };
+    run(&sc, &quiet)
+}
+
+fn restitution(r: &BuildingResult) -> f64 {
+    let n = r.time_s.len() - 1;
+    r.velocity_m_s[1][n] - r.velocity_m_s[0][n]
+}
+
+#[test]
+fn kelvin_voigt_and_stereomechanics_restitution_match_their_target_in_an_isolated_impact() {
+    for model in [ContactModel::Kelvin, ContactModel::Stereo] {
+        let r = isolated(model);
+        assert_eq!(r.contacts.len(), 1, "{}", model.name());
+        assert!(
+            (restitution(&r) - 0.65).abs() < 2e-3,
+            "{}: e = {}",
+            model.name(),
+            restitution(&r)
+        );
+    }
+}
+
+#[test]
+fn elastic_elements_return_the_approach_velocity_and_damped_ones_lose_some() {
+    for model in [ContactModel::Linear, ContactModel::Hertz] {
+        let e = restitution(&isolated(model));
+        assert!((e - 1.0).abs() < 2e-3, "{}: e = {e}", model.name());
+    }
+    // Hertzdamp and Jankowski are calibrated from approximate energy arguments; their effective
+    // restitution lies near the 0.65 asked for, on either side.
+    for model in [ContactModel::HertzDamp, ContactModel::Jankowski] {
+        let e = restitution(&isolated(model));
+        assert!(e > 0.5 && e < 0.8, "{}: e = {e}", model.name());
+    }
+}
+
+#[test]
+fn sears_slab_waves_take_energy_and_damping_lets_them_die_out() {
+    let r = isolated(ContactModel::Sears);
+    let e = restitution(&r);
+    // Equal slabs in the wave regime: most of the rigid-body rebound survives, some energy stays
+    // in the slabs' waves.
+    assert!(e > 0.0 && e < 1.0, "e = {e}");
+    assert!(r.energy.contact_j > 0.0);
+}
+
+#[test]
+fn bad_building_input_names_the_field() {
+    let m = record();
+    let mut sc = BuildingScenario::paper();
+    sc.left.damping_ratio = 1.5;
+    let err = solve(&sc, &m).unwrap_err().to_string();
+    assert!(
+        err.contains("left.damping_ratio") && err.contains("[0, 1)"),
+        "{err}"
+    );
+    let mut sc = BuildingScenario::paper();
+    sc.gap_m = f64::NAN;
+    assert!(solve(&sc, &m).unwrap_err().to_string().contains("gap"));
+}
