@@ -244,3 +244,79 @@ fn a_closed_output_pipe_ends_quietly() {
     let out = child.wait_with_output().unwrap();
     assert!(!String::from_utf8_lossy(&out.stderr).contains("panicked"));
 }
+
+#[test]
+fn buildings_runs_the_papers_case_on_the_synthetic_record_by_default() {
+    let v = json(&["buildings"]);
+    for key in [
+        "impacts",
+        "contacts",
+        "max_pounding_force_n",
+        "peak_displacement_left_m",
+        "peak_displacement_right_m",
+        "solve_time_s",
+        "warnings",
+    ] {
+        assert!(v.get(key).is_some(), "missing {key}");
+    }
+    assert!(v["impacts"].as_array().unwrap().len() as u64 == v["impact_count"].as_u64().unwrap());
+    assert!(v["motion"]["name"].as_str().unwrap().contains("synthetic"));
+    assert_eq!(v["contact_model"], "sears");
+}
+
+#[test]
+fn buildings_takes_every_contact_model_and_the_shared_record() {
+    let motion = "../shared/data/elcentro_1940_ns.txt";
+    let have = std::path::Path::new(motion).is_file();
+    for model in [
+        "sears",
+        "linear",
+        "kelvin",
+        "hertz",
+        "hertzdamp",
+        "jankowski",
+        "stereo",
+        "none",
+    ] {
+        let mut args = vec!["buildings", "--contact", model];
+        if have {
+            args.extend(["--motion", motion]);
+        }
+        let v = json(&args);
+        assert_eq!(v["contact_model"], model);
+        let pounds = v["impact_count"].as_u64().unwrap() > 0;
+        assert_eq!(pounds, model != "none", "{model}");
+    }
+}
+
+#[test]
+fn buildings_bad_input_names_the_field() {
+    for (set, field) in [
+        ("left.damping_ratio=2", "left.damping_ratio"),
+        ("gap=-1", "gap"),
+        ("slab.damping=1", "slab.damping"),
+        ("motion.units=furlongs", "motion.units"),
+        ("contact.reading=middle", "contact.reading"),
+    ] {
+        let o = pounding(&["buildings", "--set", set]);
+        assert!(!o.status.success(), "{set}");
+        assert!(stderr(&o).contains(field), "{set}: {}", stderr(&o));
+    }
+    let o = pounding(&["buildings", "--motion", "/no/such/record.AT2"]);
+    assert!(!o.status.success() && stderr(&o).contains("/no/such/record.AT2"));
+    let o = pounding(&["impact", "--preset", "paper-buildings"]);
+    assert!(
+        !o.status.success() && stderr(&o).contains("pounding buildings"),
+        "{}",
+        stderr(&o)
+    );
+}
+
+#[test]
+fn buildings_csv_has_a_header_with_units() {
+    let o = pounding(&["buildings", "--csv", "-", "--set", "motion.length=2"]);
+    assert!(o.status.success());
+    let out = stdout(&o);
+    assert!(out.starts_with("time_s,ground_accel_m_s2,u_left_m,u_right_m,"));
+    assert!(out.lines().count() > 100);
+}

@@ -39,6 +39,8 @@ pub struct MotionJson {
     pub pgv_m_s: f64,
     pub arias_m_s: f64,
     pub significant_duration_s: f64,
+    pub predominant_period_s: f64,
+    pub peak_spectral_accel_m_s2: f64,
 }
 
 /// The `--json` object of `pounding buildings`; names carry SI units and are an interface.
@@ -110,6 +112,8 @@ impl BuildingReport {
                 pgv_m_s: s.pgv_m_s,
                 arias_m_s: s.arias_m_s,
                 significant_duration_s: s.significant_duration_s,
+                predominant_period_s: s.predominant_period_s,
+                peak_spectral_accel_m_s2: s.peak_spectral_accel_m_s2,
             },
             impacts: r
                 .impacts
@@ -176,7 +180,7 @@ pub fn summary(
     );
     let _ = writeln!(
         o,
-        "  motion: {} | {} points at {} s, {:.2} s | PGA {:.4} g at {:.2} s | PGV {:.3} m/s | Arias {:.3} m/s | 5-95% duration {:.2} s",
+        "  motion: {} | {} points at {} s, {:.2} s | PGA {:.4} g at {:.2} s | PGV {:.3} m/s | Arias {:.3} m/s | 5-95% duration {:.2} s | 5% spectrum peaks at {:.2} s ({:.3} g)",
         motion.name,
         s.points,
         motion.dt_s,
@@ -185,7 +189,9 @@ pub fn summary(
         s.pga_time_s,
         s.pgv_m_s,
         s.arias_m_s,
-        s.significant_duration_s
+        s.significant_duration_s,
+        s.predominant_period_s,
+        s.peak_spectral_accel_m_s2 / G
     );
     for (name, b) in [("left ", &sc.left), ("right", &sc.right)] {
         let _ = writeln!(
