@@ -3,6 +3,10 @@
 //! `model` is the physics core (no GUI, GPU or file formats); `io` reads presets and writes
 //! histories; `cli` is the command-line front end.
 
+#[cfg(feature = "gui")]
+pub mod app;
 pub mod cli;
 pub mod io;
 pub mod model;
+#[cfg(feature = "gui")]
+pub mod render;

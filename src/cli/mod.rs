@@ -24,6 +24,37 @@ pub enum Command {
     Impact(impact::ImpactArgs),
     /// Two buildings under a ground motion, pounding (the paper's Section 4 when given nothing).
     Buildings(buildings::BuildingArgs),
+    /// Open the explorer window (what `pounding` with no command does).
+    #[cfg(feature = "gui")]
+    Window(WindowArgs),
+}
+
+#[cfg(feature = "gui")]
+#[derive(clap::Args, Debug, Default)]
+pub struct WindowArgs {
+    /// Scene to open: bar|compare
+    #[arg(long)]
+    pub scene: Option<String>,
+    /// Impact preset to open with (instead of the last session's scene)
+    #[arg(long)]
+    pub preset: Option<String>,
+    /// Start paused at this animation time [s]
+    #[arg(long)]
+    pub time: Option<f64>,
+    /// Close the window after this many frames (smoke tests, screenshots)
+    #[arg(long)]
+    pub exit_after_frames: Option<u64>,
+}
+
+#[cfg(feature = "gui")]
+fn window(args: &WindowArgs) -> anyhow::Result<()> {
+    let scene = match args.scene.as_deref() {
+        None => None,
+        Some("bar") => Some(crate::app::SceneKind::BarImpact),
+        Some("compare") => Some(crate::app::SceneKind::WaveVsLumped),
+        Some(other) => anyhow::bail!("--scene: unknown scene '{other}': allowed bar|compare"),
+    };
+    crate::app::run(crate::app::Launch { scene, preset: args.preset.clone(), exit_after_frames: args.exit_after_frames, time_s: args.time })
 }
 
 /// Runs the command line, writing results to `out`; `Ok(())` means exit status 0.
@@ -31,13 +62,15 @@ pub fn run(cli: Cli, out: &mut dyn std::io::Write) -> anyhow::Result<()> {
     match cli.command {
         Some(Command::Impact(args)) => impact::run(&args, out),
         Some(Command::Buildings(args)) => buildings::run(&args, out),
+        #[cfg(feature = "gui")]
+        Some(Command::Window(args)) => window(&args),
+        #[cfg(feature = "gui")]
+        None => window(&WindowArgs::default()),
+        #[cfg(not(feature = "gui"))]
         None => {
-            // The window is a later front end; until then the default scene runs here.
+            // Built without the window: the default scene runs on the terminal.
             impact::run(&impact::ImpactArgs::default(), out)?;
-            writeln!(
-                out,
-                "\n(The explorer window is not built yet; `pounding impact --help` lists what the command line can do.)"
-            )?;
+            writeln!(out, "\n(Built without the window; `pounding impact --help` lists what the command line can do.)")?;
             Ok(())
         }
     }

@@ -1,0 +1,269 @@
+//! The explorer window: an eframe app with a wgpu view. Scenes share the physics core with the
+//! command line; each one solves off the UI thread and draws only what it shows.
+
+mod bar_scene;
+mod bar_view;
+mod impact_params;
+mod params;
+mod playback;
+pub mod worker;
+
+use crate::io::preset::{self, EMBEDDED};
+use crate::io::settings::ImpactSetup;
+use bar_scene::BarScene;
+use eframe::egui::{self, Color32};
+use std::time::Instant;
+
+/// Storage keys; the suffix is the format's version, so an older save is never misread.
+const IMPACT_KEY: &str = "impact-scene-v1";
+const COMPARE_KEY: &str = "compare-scene-v1";
+const UI_KEY: &str = "ui-v1";
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SceneKind {
+    BarImpact,
+    WaveVsLumped,
+}
+
+impl SceneKind {
+    fn name(self) -> &'static str {
+        match self {
+            SceneKind::BarImpact => "bar",
+            SceneKind::WaveVsLumped => "compare",
+        }
+    }
+    fn from_name(s: &str) -> Option<Self> {
+        [SceneKind::BarImpact, SceneKind::WaveVsLumped].into_iter().find(|k| k.name() == s)
+    }
+}
+
+/// How the window starts (from `pounding window` or the defaults).
+#[derive(Debug, Clone, Default)]
+pub struct Launch {
+    pub scene: Option<SceneKind>,
+    pub preset: Option<String>,
+    /// Close after this many frames (smoke tests, screenshots).
+    pub exit_after_frames: Option<u64>,
+    /// Start paused at this animation time [s].
+    pub time_s: Option<f64>,
+}
+
+pub struct PoundingApp {
+    scene: SceneKind,
+    bar: BarScene,
+    compare: BarScene,
+    dark: bool,
+    help: bool,
+    preset_choice: String,
+    path: String,
+    message: Option<(String, bool)>,
+    ui_ms: f64,
+    frames: u64,
+    launch: Launch,
+}
+
+fn restore(storage: Option<&dyn eframe::Storage>, key: &str, errors: &mut Vec<String>) -> ImpactSetup {
+    let mut setup = preset::load_for::<ImpactSetup>(preset::DEFAULT_PRESET, "impact").unwrap_or_default();
+    if let Some(text) = storage.and_then(|s| s.get_string(key)) {
+        let mut restored = setup;
+        match preset::apply_text(&mut restored, &text, "the last session's scene") {
+            Ok(()) => setup = restored,
+            Err(e) => errors.push(format!("{e} (the default scene is used)")),
+        }
+    }
+    setup
+}
+
+impl PoundingApp {
+    pub fn new(cc: &eframe::CreationContext<'_>, launch: Launch) -> Self {
+        let mut errors = vec![];
+        match cc.wgpu_render_state.as_ref() {
+            Some(rs) => crate::render::bars::install(rs),
+            None => errors.push("no wgpu renderer: the stress view is not drawn".into()),
+        }
+        let storage = cc.storage;
+        let fresh = launch.preset.is_some();
+        let mut bar_setup = if fresh { ImpactSetup::default() } else { restore(storage, IMPACT_KEY, &mut errors) };
+        let compare_setup = if fresh { ImpactSetup::default() } else { restore(storage, COMPARE_KEY, &mut errors) };
+        let ui_state = storage.and_then(|s| s.get_string(UI_KEY)).unwrap_or_default();
+        let dark = !ui_state.contains("light");
+        let mut scene = ui_state.split(';').find_map(|p| p.strip_prefix("scene=")).and_then(SceneKind::from_name).unwrap_or(SceneKind::BarImpact);
+        if let Some(s) = launch.scene {
+            scene = s;
+        }
+        if let Some(p) = &launch.preset {
+            match preset::load_for::<ImpactSetup>(p, "impact") {
+                Ok(s) => bar_setup = s,
+                Err(e) => errors.push(e.to_string()),
+            }
+        }
+        let ctx = &cc.egui_ctx;
+        ctx.set_theme(if dark { egui::Theme::Dark } else { egui::Theme::Light });
+        let mut bar = BarScene::new(ctx, bar_setup, false);
+        let mut compare = BarScene::new(ctx, if launch.preset.is_some() { bar_setup } else { compare_setup }, true);
+        if let Some(t) = launch.time_s {
+            for s in [&mut bar, &mut compare] {
+                s.playback.playing = false;
+                s.playback.t = t;
+            }
+        }
+        PoundingApp {
+            scene,
+            bar,
+            compare,
+            dark,
+            help: false,
+            preset_choice: launch.preset.clone().filter(|p| EMBEDDED.iter().any(|(n, _)| n == p)).unwrap_or_else(|| preset::DEFAULT_PRESET.into()),
+            path: "scene.toml".into(),
+            message: (!errors.is_empty()).then(|| (errors.join("; "), true)),
+            ui_ms: 0.0,
+            frames: 0,
+            launch,
+        }
+    }
+
+    fn current(&mut self) -> &mut BarScene {
+        match self.scene {
+            SceneKind::BarImpact => &mut self.bar,
+            SceneKind::WaveVsLumped => &mut self.compare,
+        }
+    }
+
+    fn top_bar(&mut self, ui: &mut egui::Ui) {
+        ui.horizontal_wrapped(|ui| {
+            ui.strong("Pounding Lab");
+            ui.separator();
+            ui.selectable_value(&mut self.scene, SceneKind::BarImpact, "Bar impact").on_hover_text("One impact, one model, every readout");
+            ui.selectable_value(&mut self.scene, SceneKind::WaveVsLumped, "Wave vs lumped").on_hover_text("Sears, wave theory, lumped and FE models overlaid");
+            ui.add_enabled(false, egui::Button::selectable(false, "Building pounding")).on_disabled_hover_text("arrives with the building scene");
+            ui.separator();
+            egui::ComboBox::from_id_salt("preset").selected_text(&self.preset_choice).show_ui(ui, |ui| {
+                for (name, text) in EMBEDDED.iter().filter(|(_, t)| preset::scene(t) == "impact") {
+                    ui.selectable_value(&mut self.preset_choice, name.to_string(), *name).on_hover_text(preset::description(text).unwrap_or_default());
+                }
+            });
+            if ui.button("Load preset").on_hover_text("Replace the scene's parameters by the preset").clicked() {
+                let name = self.preset_choice.clone();
+                self.message = self.current().load_preset(&name).err().map(|e| (e, true));
+            }
+            if ui.button("Reset").on_hover_text("Back to the preset's values").clicked() {
+                let name = self.preset_choice.clone();
+                self.message = self.current().load_preset(&name).err().map(|e| (e, true));
+            }
+            ui.separator();
+            ui.add(egui::TextEdit::singleline(&mut self.path).desired_width(140.0)).on_hover_text("A TOML scene file");
+            if ui.button("Open").clicked() {
+                let path = self.path.clone();
+                self.message = Some(match self.current().load_preset(&path) {
+                    Ok(()) => (format!("loaded {path}"), false),
+                    Err(e) => (e, true),
+                });
+            }
+            if ui.button("Save").clicked() {
+                let text = preset::impact_to_toml(&self.current().setup);
+                self.message = Some(match std::fs::write(&self.path, text) {
+                    Ok(()) => (format!("saved {}", self.path), false),
+                    Err(e) => (format!("could not save {}: {e}", self.path), true),
+                });
+            }
+            ui.separator();
+            if ui.button(if self.dark { "Light" } else { "Dark" }).on_hover_text("Switch theme").clicked() {
+                self.dark = !self.dark;
+                ui.ctx().set_theme(if self.dark { egui::Theme::Dark } else { egui::Theme::Light });
+            }
+            if ui.button("Help").on_hover_text("Keyboard and what you see (F1)").clicked() {
+                self.help = !self.help;
+            }
+        });
+    }
+
+    fn keys(&mut self, ctx: &egui::Context) {
+        if ctx.memory(|m| m.focused().is_some()) {
+            return;
+        }
+        let (space, right, restart, help) = ctx.input(|i| (i.key_pressed(egui::Key::Space), i.key_pressed(egui::Key::ArrowRight), i.key_pressed(egui::Key::R), i.key_pressed(egui::Key::F1)));
+        let scene = self.current();
+        if space {
+            scene.playback.playing = !scene.playback.playing;
+        }
+        if right {
+            scene.playback.step();
+        }
+        if restart {
+            scene.playback.t = 0.0;
+            scene.playback.playing = true;
+        }
+        if help {
+            self.help = !self.help;
+        }
+    }
+}
+
+impl eframe::App for PoundingApp {
+    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        let start = Instant::now();
+        let ctx = ui.ctx().clone();
+        self.keys(&ctx);
+        let dt = ctx.input(|i| i.stable_dt) as f64;
+        for s in [&mut self.bar, &mut self.compare] {
+            s.poll();
+        }
+        self.current().playback.advance(dt.min(0.1));
+        egui::Panel::top("top").show(ui, |ui| self.top_bar(ui));
+        egui::Panel::bottom("status").show(ui, |ui| {
+            ui.horizontal(|ui| {
+                let s = match self.scene {
+                    SceneKind::BarImpact => &self.bar,
+                    SceneKind::WaveVsLumped => &self.compare,
+                };
+                ui.label(format!("UI {:.2} ms | solve {:.3} ms | change to result {:.1} ms{}", self.ui_ms, s.solve_time.as_secs_f64() * 1e3, s.latency.as_secs_f64() * 1e3, if s.busy() { " | solving..." } else { "" }));
+                if let Some((m, is_error)) = &self.message {
+                    ui.separator();
+                    let colour = if *is_error { Color32::from_rgb(220, 60, 50) } else { ui.visuals().text_color() };
+                    ui.colored_label(colour, m);
+                }
+            });
+        });
+        egui::Panel::left("params").resizable(true).default_size(380.0).show(ui, |ui| {
+            egui::ScrollArea::vertical().show(ui, |ui| self.current().params_ui(ui));
+        });
+        egui::CentralPanel::default().show(ui, |ui| {
+            egui::ScrollArea::vertical().show(ui, |ui| self.current().main_ui(ui));
+        });
+        if self.help {
+            let mut open = true;
+            egui::Window::new("Help").open(&mut open).show(&ctx, |ui| {
+                ui.label("Space: play / pause    Right arrow: one step    R: restart    F1: this help");
+                ui.label("The bars are coloured by axial stress: blue compression, red tension, grey stress-free.");
+                ui.label("Fronts leave the contact, reflect at the free ends as tension and come back.");
+                ui.label("Vertical marks show Sears' compression zones d; arrows the bars' rigid-body velocities.");
+                ui.label("Typed values outside a field's range are refused and the range is shown.");
+            });
+            self.help = open;
+        }
+        if self.current().playback.playing || self.current().busy() {
+            ctx.request_repaint();
+        }
+        self.frames += 1;
+        if self.launch.exit_after_frames.is_some_and(|n| self.frames >= n) {
+            ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+        }
+        self.ui_ms = start.elapsed().as_secs_f64() * 1e3;
+    }
+
+    fn save(&mut self, storage: &mut dyn eframe::Storage) {
+        storage.set_string(IMPACT_KEY, preset::impact_to_toml(&self.bar.setup));
+        storage.set_string(COMPARE_KEY, preset::impact_to_toml(&self.compare.setup));
+        storage.set_string(UI_KEY, format!("{};scene={}", if self.dark { "dark" } else { "light" }, self.scene.name()));
+    }
+}
+
+/// Opens the window.
+pub fn run(launch: Launch) -> anyhow::Result<()> {
+    let options = eframe::NativeOptions {
+        viewport: egui::ViewportBuilder::default().with_inner_size([1320.0, 900.0]).with_title("Pounding Lab"),
+        ..Default::default()
+    };
+    eframe::run_native("Pounding Lab", options, Box::new(move |cc| Ok(Box::new(PoundingApp::new(cc, launch)))))
+        .map_err(|e| anyhow::anyhow!("the window could not start: {e}"))
+}

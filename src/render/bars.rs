@@ -1,0 +1,216 @@
+//! The stress-wave view: two bars coloured by their axial stress, evaluated in the fragment
+//! shader (`shaders/bars.wgsl`) from each bar's wave history. The history goes to the GPU once
+//! per solve; a frame writes only the uniforms (time, layout), so the per-frame CPU cost does not
+//! depend on the history's length.
+
+use crate::model::field::{BarWaves, History};
+use bytemuck::{Pod, Zeroable};
+use eframe::egui_wgpu::{self, wgpu};
+use std::sync::Arc;
+
+/// One bar as the shader sees it (WGSL `Bar`, 64 bytes).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
+pub struct GpuBar {
+    pub origin_x: f32,
+    pub direction: f32,
+    pub body_length: f32,
+    pub zone_length: f32,
+    pub wave_speed: f32,
+    pub round_trip: f32,
+    pub dt: f32,
+    pub end_time: f32,
+    pub offset: u32,
+    pub count: u32,
+    pub inv_area: f32,
+    pub inv_stress_scale: f32,
+    pub y_bottom: f32,
+    pub y_top: f32,
+    pub world_per_metre: f32,
+    pub _pad: f32,
+}
+
+/// WGSL `Uniforms` (208 bytes).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub struct GpuUniforms {
+    pub view: [[f32; 4]; 4],
+    pub time: f32,
+    pub bar_count: u32,
+    pub _pad: [f32; 2],
+    pub bars: [GpuBar; 2],
+}
+
+/// The wave histories of both bars on uniform grids, ready to upload.
+#[derive(Debug, Clone, Default)]
+pub struct GpuHistory {
+    pub samples: Vec<f32>,
+    /// (offset, count, dt, end time) per bar.
+    pub layout: [(u32, u32, f32, f32); 2],
+}
+
+/// Samples per round trip when a step-function history (wave theory) is put on a grid.
+const STEP_SAMPLES_PER_ROUND_TRIP: f64 = 400.0;
+
+impl GpuHistory {
+    pub fn from_waves(waves: &[BarWaves; 2]) -> Self {
+        let mut samples = Vec::new();
+        let mut layout = [(0, 0, 0.0, 0.0); 2];
+        for (i, w) in waves.iter().enumerate() {
+            let offset = samples.len() as u32;
+            let dt = match &w.history {
+                History::Uniform { dt_s, values } => {
+                    samples.extend(values.iter().map(|&v| v as f32));
+                    *dt_s
+                }
+                History::Steps { .. } => {
+                    let dt = w.round_trip_s() / STEP_SAMPLES_PER_ROUND_TRIP;
+                    let n = (w.end_s / dt).ceil() as usize + 2;
+                    samples.extend((0..n).map(|k| w.history_at(k as f64 * dt) as f32));
+                    dt
+                }
+            };
+            let count = samples.len() as u32 - offset;
+            if count == 0 {
+                samples.push(0.0);
+            }
+            layout[i] = (offset, count.max(1), dt as f32, w.end_s as f32);
+        }
+        GpuHistory { samples, layout }
+    }
+}
+
+/// GPU objects of the view; they live in egui-wgpu's callback resources.
+pub struct BarsResources {
+    pipeline: wgpu::RenderPipeline,
+    layout: wgpu::BindGroupLayout,
+    uniforms: wgpu::Buffer,
+    history: wgpu::Buffer,
+    bind_group: wgpu::BindGroup,
+    history_version: u64,
+}
+
+/// Builds the pipeline once, at start-up, and stores it with the renderer.
+pub fn install(render_state: &egui_wgpu::RenderState) {
+    let device = &render_state.device;
+    let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("bars"),
+        source: wgpu::ShaderSource::Wgsl(include_str!("../../shaders/bars.wgsl").into()),
+    });
+    let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: Some("bars"),
+        entries: &[
+            wgpu::BindGroupLayoutEntry {
+                binding: 0,
+                visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+                ty: wgpu::BindingType::Buffer { ty: wgpu::BufferBindingType::Uniform, has_dynamic_offset: false, min_binding_size: None },
+                count: None,
+            },
+            wgpu::BindGroupLayoutEntry {
+                binding: 1,
+                visibility: wgpu::ShaderStages::FRAGMENT,
+                ty: wgpu::BindingType::Buffer { ty: wgpu::BufferBindingType::Storage { read_only: true }, has_dynamic_offset: false, min_binding_size: None },
+                count: None,
+            },
+        ],
+    });
+    let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+        label: Some("bars"),
+        bind_group_layouts: &[Some(&layout)],
+        immediate_size: 0,
+    });
+    let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some("bars"),
+        layout: Some(&pipeline_layout),
+        vertex: wgpu::VertexState { module: &shader, entry_point: Some("vs_main"), buffers: &[], compilation_options: Default::default() },
+        fragment: Some(wgpu::FragmentState {
+            module: &shader,
+            entry_point: Some("fs_main"),
+            targets: &[Some(render_state.target_format.into())],
+            compilation_options: Default::default(),
+        }),
+        primitive: wgpu::PrimitiveState::default(),
+        depth_stencil: None,
+        multisample: wgpu::MultisampleState::default(),
+        multiview_mask: None,
+        cache: None,
+    });
+    let uniforms = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("bars uniforms"),
+        size: std::mem::size_of::<GpuUniforms>() as u64,
+        usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    let history = history_buffer(device, 1024);
+    let bind_group = bind(device, &layout, &uniforms, &history);
+    render_state.renderer.write().callback_resources.insert(BarsResources { pipeline, layout, uniforms, history, bind_group, history_version: u64::MAX });
+}
+
+fn history_buffer(device: &wgpu::Device, samples: usize) -> wgpu::Buffer {
+    device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("bars history"),
+        size: (samples.max(1) * 4) as u64,
+        usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    })
+}
+
+fn bind(device: &wgpu::Device, layout: &wgpu::BindGroupLayout, uniforms: &wgpu::Buffer, history: &wgpu::Buffer) -> wgpu::BindGroup {
+    device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: Some("bars"),
+        layout,
+        entries: &[
+            wgpu::BindGroupEntry { binding: 0, resource: uniforms.as_entire_binding() },
+            wgpu::BindGroupEntry { binding: 1, resource: history.as_entire_binding() },
+        ],
+    })
+}
+
+/// One frame's draw: the uniforms, and the history with its version (uploaded when it changes).
+pub struct BarsCallback {
+    pub uniforms: GpuUniforms,
+    pub history: Arc<GpuHistory>,
+    pub version: u64,
+}
+
+impl egui_wgpu::CallbackTrait for BarsCallback {
+    fn prepare(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        _screen: &egui_wgpu::ScreenDescriptor,
+        _encoder: &mut wgpu::CommandEncoder,
+        resources: &mut egui_wgpu::CallbackResources,
+    ) -> Vec<wgpu::CommandBuffer> {
+        let Some(r) = resources.get_mut::<BarsResources>() else {
+            return Vec::new();
+        };
+        if r.history_version != self.version {
+            let bytes = (self.history.samples.len() * 4) as u64;
+            if bytes > r.history.size() {
+                r.history = history_buffer(device, self.history.samples.len().next_power_of_two());
+                r.bind_group = bind(device, &r.layout, &r.uniforms, &r.history);
+            }
+            if !self.history.samples.is_empty() {
+                queue.write_buffer(&r.history, 0, bytemuck::cast_slice(&self.history.samples));
+            }
+            r.history_version = self.version;
+        }
+        queue.write_buffer(&r.uniforms, 0, bytemuck::bytes_of(&self.uniforms));
+        Vec::new()
+    }
+
+    fn paint(&self, _info: eframe::egui::PaintCallbackInfo, pass: &mut wgpu::RenderPass<'static>, resources: &egui_wgpu::CallbackResources) {
+        let Some(r) = resources.get::<BarsResources>() else {
+            return;
+        };
+        pass.set_pipeline(&r.pipeline);
+        pass.set_bind_group(0, &r.bind_group, &[]);
+        pass.draw(0..6, 0..self.uniforms.bar_count);
+    }
+}
+
+/// Orthographic view of the world rectangle [left, right] x [bottom, top].
+pub fn view(left: f32, right: f32, bottom: f32, top: f32) -> [[f32; 4]; 4] {
+    glam::camera::rh::proj::directx::orthographic(left, right, bottom, top, -1.0, 1.0).to_cols_array_2d()
+}

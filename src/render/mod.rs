@@ -1,0 +1,3 @@
+//! wgpu pipelines drawn inside egui through paint callbacks; one file per pipeline.
+
+pub mod bars;
