@@ -87,6 +87,11 @@ proptest! {
             let b = r.energy.balance_error.abs();
             if model == ModelKind::Fe {
                 prop_assert!(b < 1e-2, "{}: balance {}", tag, b);
+            } else if r.warnings.iter().any(|w| w.contains("was kept")) {
+                // The step could not be refined to the contact's time scale within the budget
+                // and the run says so: backward Euler there (first order by design); the
+                // energy error stays bounded.
+                prop_assert!(b < 1e-3, "{}: balance {} in an unresolved run", tag, b);
             } else if b > 1e-5 {
                 // Converging: 16 times smaller at a 64 times finer step (a coarse run can sit
                 // before the asymptotic range, where one halving may even raise the error).

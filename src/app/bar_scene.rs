@@ -15,7 +15,13 @@ use egui_plot::{Legend, Line, Plot, VLine};
 use std::time::Duration;
 
 /// Models overlaid by the comparison scene.
-pub const COMPARED: [ModelKind; 5] = [ModelKind::Sears, ModelKind::Wave, ModelKind::LumpedHertz, ModelKind::LumpedLinear, ModelKind::Fe];
+pub const COMPARED: [ModelKind; 5] = [
+    ModelKind::Sears,
+    ModelKind::Wave,
+    ModelKind::LumpedHertz,
+    ModelKind::LumpedLinear,
+    ModelKind::Fe,
+];
 
 type Job = (ImpactSetup, bool);
 type Output = Vec<(ModelKind, Result<ImpactResult, String>)>;
@@ -36,8 +42,15 @@ pub struct BarScene {
 }
 
 fn run_job((setup, compare): Job) -> Output {
-    let models: Vec<ModelKind> = if compare { COMPARED.to_vec() } else { vec![setup.model] };
-    models.into_iter().map(|m| (m, solve(m, &setup.scenario).map_err(|e| e.to_string()))).collect()
+    let models: Vec<ModelKind> = if compare {
+        COMPARED.to_vec()
+    } else {
+        vec![setup.model]
+    };
+    models
+        .into_iter()
+        .map(|m| (m, solve(m, &setup.scenario).map_err(|e| e.to_string())))
+        .collect()
 }
 
 impl BarScene {
@@ -67,7 +80,9 @@ impl BarScene {
 
     /// Takes a finished solve, if any.
     pub fn poll(&mut self) {
-        let Some((done, latency)) = self.worker.poll() else { return };
+        let Some((done, latency)) = self.worker.poll() else {
+            return;
+        };
         self.solve_time = done.elapsed;
         self.latency = latency;
         self.error = None;
@@ -75,7 +90,11 @@ impl BarScene {
         for (model, result) in done.output {
             match result {
                 Ok(r) => {
-                    let lead = if self.compare { model == ModelKind::Sears } else { true };
+                    let lead = if self.compare {
+                        model == ModelKind::Sears
+                    } else {
+                        true
+                    };
                     if lead {
                         self.version += 1;
                         let solved = Solved::new(self.setup, r.clone(), self.version);
@@ -97,7 +116,8 @@ impl BarScene {
 
     /// Loads a preset by name or file; on error the scene is kept and the error returned.
     pub fn load_preset(&mut self, name_or_path: &str) -> Result<(), String> {
-        let setup: ImpactSetup = preset::load_for(name_or_path, "impact").map_err(|e| e.to_string())?;
+        let setup: ImpactSetup =
+            preset::load_for(name_or_path, "impact").map_err(|e| e.to_string())?;
         self.setup = setup;
         self.fields.clear();
         self.playback.t = 0.0;
@@ -121,11 +141,19 @@ impl BarScene {
         };
         let t = self.playback.t;
         let height = if self.compare { 150.0 } else { 190.0 };
-        let (rect, _) = ui.allocate_exact_size(egui::vec2(ui.available_width(), height), egui::Sense::hover());
+        let (rect, _) = ui.allocate_exact_size(
+            egui::vec2(ui.available_width(), height),
+            egui::Sense::hover(),
+        );
         bar_view::draw(ui, rect, solved, t);
         if self.compare {
-            let lumped = self.peers.iter().find(|(m, _)| *m == ModelKind::LumpedHertz).map(|(_, r)| r);
-            let (rect, _) = ui.allocate_exact_size(egui::vec2(ui.available_width(), 70.0), egui::Sense::hover());
+            let lumped = self
+                .peers
+                .iter()
+                .find(|(m, _)| *m == ModelKind::LumpedHertz)
+                .map(|(_, r)| r);
+            let (rect, _) = ui
+                .allocate_exact_size(egui::vec2(ui.available_width(), 70.0), egui::Sense::hover());
             if let Some(r) = lumped {
                 draw_lumped(ui, rect, r, t);
             }
@@ -152,26 +180,44 @@ impl BarScene {
     fn plots_ui(&self, ui: &mut egui::Ui) {
         let t_ms = self.playback.t * 1e3;
         let h = ((ui.available_height() - 140.0) / 2.0).clamp(120.0, 260.0);
-        let series = |r: &ImpactResult, f: &dyn Fn(usize) -> f64| -> Vec<[f64; 2]> { (0..r.time_s.len()).map(|i| [r.time_s[i] * 1e3, f(i)]).collect() };
-        Plot::new("force").height(h).legend(Legend::default()).x_axis_label("time [ms]").y_axis_label("force [kN]").link_axis(egui::Id::unique("bar-plots"), [true, false]).show(ui, |p| {
-            for (i, (m, r)) in self.peers.iter().enumerate() {
-                let k = COMPARED.iter().position(|c| c == m).unwrap_or(i);
-                if self.compare && !self.shown[k] {
-                    continue;
+        let series = |r: &ImpactResult, f: &dyn Fn(usize) -> f64| -> Vec<[f64; 2]> {
+            (0..r.time_s.len())
+                .map(|i| [r.time_s[i] * 1e3, f(i)])
+                .collect()
+        };
+        Plot::new("force")
+            .height(h)
+            .legend(Legend::default())
+            .x_axis_label("time [ms]")
+            .y_axis_label("force [kN]")
+            .link_axis(egui::Id::unique("bar-plots"), [true, false])
+            .show(ui, |p| {
+                for (i, (m, r)) in self.peers.iter().enumerate() {
+                    let k = COMPARED.iter().position(|c| c == m).unwrap_or(i);
+                    if self.compare && !self.shown[k] {
+                        continue;
+                    }
+                    // Wave theory jumps (repeated times): no band aggregation, which would fill them.
+                    p.line(
+                        Line::new(m.name(), series(r, &|j| r.force_n[j] * 1e-3)).allow_band(false),
+                    );
                 }
-                // Wave theory jumps (repeated times): no band aggregation, which would fill them.
-                p.line(Line::new(m.name(), series(r, &|j| r.force_n[j] * 1e-3)).allow_band(false));
-            }
-            p.vline(VLine::new("t", t_ms));
-        });
+                p.vline(VLine::new("t", t_ms));
+            });
         if !self.compare
             && let Some(s) = &self.solved
         {
             let r = &s.result;
-            Plot::new("approach").height(h).legend(Legend::default()).x_axis_label("time [ms]").y_axis_label("approach [um]").link_axis(egui::Id::unique("bar-plots"), [true, false]).show(ui, |p| {
-                p.line(Line::new("approach", series(r, &|j| r.approach_m[j] * 1e6)));
-                p.vline(VLine::new("t", t_ms));
-            });
+            Plot::new("approach")
+                .height(h)
+                .legend(Legend::default())
+                .x_axis_label("time [ms]")
+                .y_axis_label("approach [um]")
+                .link_axis(egui::Id::unique("bar-plots"), [true, false])
+                .show(ui, |p| {
+                    p.line(Line::new("approach", series(r, &|j| r.approach_m[j] * 1e6)));
+                    p.vline(VLine::new("t", t_ms));
+                });
         }
     }
 }
@@ -182,77 +228,143 @@ fn draw_lumped(ui: &mut egui::Ui, rect: egui::Rect, r: &ImpactResult, t: f64) {
     let text = ui.visuals().text_color();
     let dmax = r.approach_m.iter().cloned().fold(1e-30, f64::max);
     let k = r.time_s.partition_point(|&x| x <= t);
-    let d = if k == 0 || k >= r.approach_m.len() { 0.0 } else { r.approach_m[k - 1].max(0.0) };
-    let f = if k == 0 || k >= r.force_n.len() { 0.0 } else { r.force_n[k - 1] };
+    let d = if k == 0 || k >= r.approach_m.len() {
+        0.0
+    } else {
+        r.approach_m[k - 1].max(0.0)
+    };
+    let f = if k == 0 || k >= r.force_n.len() {
+        0.0
+    } else {
+        r.force_n[k - 1]
+    };
     let squeeze = (d / dmax) as f32;
     let (cx, cy) = (rect.center().x, rect.center().y);
     let spring = 60.0 * (1.0 - 0.6 * squeeze);
     let tint = bar_view::diverging(-(f / r.peak_force_n.unwrap_or(1.0).max(1e-30)) as f32);
-    let block = |x0: f32, x1: f32| egui::Rect::from_min_max(egui::pos2(x0, cy - 18.0), egui::pos2(x1, cy + 18.0));
-    painter.rect_filled(block(cx - spring / 2.0 - 160.0, cx - spring / 2.0), 2.0, tint);
-    painter.rect_filled(block(cx + spring / 2.0, cx + spring / 2.0 + 220.0), 2.0, tint);
+    let block = |x0: f32, x1: f32| {
+        egui::Rect::from_min_max(egui::pos2(x0, cy - 18.0), egui::pos2(x1, cy + 18.0))
+    };
+    painter.rect_filled(
+        block(cx - spring / 2.0 - 160.0, cx - spring / 2.0),
+        2.0,
+        tint,
+    );
+    painter.rect_filled(
+        block(cx + spring / 2.0, cx + spring / 2.0 + 220.0),
+        2.0,
+        tint,
+    );
     let mut pts = vec![];
     for i in 0..=12 {
         let x = cx - spring / 2.0 + spring * i as f32 / 12.0;
-        let y = if i == 0 || i == 12 { cy } else if i % 2 == 1 { cy - 8.0 } else { cy + 8.0 };
+        let y = if i == 0 || i == 12 {
+            cy
+        } else if i % 2 == 1 {
+            cy - 8.0
+        } else {
+            cy + 8.0
+        };
         pts.push(egui::pos2(x, y));
     }
     painter.add(egui::Shape::line(pts, egui::Stroke::new(2.0, text)));
-    painter.text(egui::pos2(rect.left() + 8.0, rect.top() + 4.0), egui::Align2::LEFT_TOP, "lumped Hertz: rigid blocks and a spring (compression exaggerated)", egui::FontId::proportional(12.0), text);
+    painter.text(
+        egui::pos2(rect.left() + 8.0, rect.top() + 4.0),
+        egui::Align2::LEFT_TOP,
+        "lumped Hertz: rigid blocks and a spring (compression exaggerated)",
+        egui::FontId::proportional(12.0),
+        text,
+    );
 }
 
 fn readouts_ui(ui: &mut egui::Ui, r: &ImpactResult, solve_time: Duration) {
-    egui::Grid::new("readouts").num_columns(4).spacing([18.0, 4.0]).show(ui, |ui| {
-        ui.label("peak force");
-        ui.label(r.peak_force_n.map_or("none (instantaneous)".into(), |p| format!("{:.5e} N", p)));
-        ui.label("contact duration");
-        ui.label(format!("{:.5} ms", r.contact_duration_s * 1e3));
-        ui.end_row();
-        ui.label("restitution e");
-        ui.label(format!("{:.5} (first contact {:.5})", r.restitution, r.restitution_first_contact));
-        ui.label("contacts");
-        ui.label(format!("{}", r.contacts.len()));
-        ui.end_row();
-        let e = &r.energy;
-        ui.label("energy");
-        ui.label(format!("rigid {:.3e} J, vibration {:.3e} J, dissipated {:.3e} J of {:.3e} J", e.rigid_body_j, e.vibration_j, e.dissipated_j, e.initial_j));
-        ui.label("energy balance");
-        ui.label(format!("{:+.2e}", e.balance_error));
-        ui.end_row();
-        if let Some(d) = &r.sears {
-            ui.label("Sears reading");
-            ui.label(d.reading.name());
-            ui.label("validity a tau");
-            let regime = if d.a_tau < (-1f64).exp() { "well behaved" } else if d.a_tau < std::f64::consts::FRAC_PI_2 { "overshoot" } else { "oscillating" };
-            ui.label(format!("{:.4} ({regime})", d.a_tau));
+    egui::Grid::new("readouts")
+        .num_columns(4)
+        .spacing([18.0, 4.0])
+        .show(ui, |ui| {
+            ui.label("peak force");
+            ui.label(
+                r.peak_force_n
+                    .map_or("none (instantaneous)".into(), |p| format!("{:.5e} N", p)),
+            );
+            ui.label("contact duration");
+            ui.label(format!("{:.5} ms", r.contact_duration_s * 1e3));
             ui.end_row();
-            if d.reading == Reading::Paper && d.creates_energy {
-                ui.colored_label(Color32::from_rgb(220, 60, 50), "the paper reading created energy here");
+            ui.label("restitution e");
+            ui.label(format!(
+                "{:.5} (first contact {:.5})",
+                r.restitution, r.restitution_first_contact
+            ));
+            ui.label("contacts");
+            ui.label(format!("{}", r.contacts.len()));
+            ui.end_row();
+            let e = &r.energy;
+            ui.label("energy");
+            ui.label(format!(
+                "rigid {:.3e} J, vibration {:.3e} J, dissipated {:.3e} J of {:.3e} J",
+                e.rigid_body_j, e.vibration_j, e.dissipated_j, e.initial_j
+            ));
+            ui.label("energy balance");
+            ui.label(format!("{:+.2e}", e.balance_error));
+            ui.end_row();
+            if let Some(d) = &r.sears {
+                ui.label("Sears reading");
+                ui.label(d.reading.name());
+                ui.label("validity a tau");
+                let regime = if d.a_tau < (-1f64).exp() {
+                    "well behaved"
+                } else if d.a_tau < std::f64::consts::FRAC_PI_2 {
+                    "overshoot"
+                } else {
+                    "oscillating"
+                };
+                ui.label(format!("{:.4} ({regime})", d.a_tau));
                 ui.end_row();
+                if d.reading == Reading::Paper && d.creates_energy {
+                    ui.colored_label(
+                        Color32::from_rgb(220, 60, 50),
+                        "the paper reading created energy here",
+                    );
+                    ui.end_row();
+                }
             }
-        }
-        ui.label("solve");
-        ui.label(format!("{} steps of {:.3e} s, {:.3} ms", r.stats.steps, r.stats.dt_s, solve_time.as_secs_f64() * 1e3));
-        ui.end_row();
-    });
+            ui.label("solve");
+            ui.label(format!(
+                "{} steps of {:.3e} s, {:.3} ms",
+                r.stats.steps,
+                r.stats.dt_s,
+                solve_time.as_secs_f64() * 1e3
+            ));
+            ui.end_row();
+        });
     for w in &r.warnings {
         ui.colored_label(Color32::from_rgb(220, 140, 40), format!("warning: {w}"));
     }
 }
 
 fn compare_table(ui: &mut egui::Ui, peers: &[(ModelKind, ImpactResult)]) {
-    egui::Grid::new("compare").num_columns(5).striped(true).spacing([18.0, 4.0]).show(ui, |ui| {
-        for h in ["model", "peak force [N]", "duration [ms]", "e", "solve [ms]"] {
-            ui.strong(h);
-        }
-        ui.end_row();
-        for (m, r) in peers {
-            ui.label(m.name());
-            ui.label(r.peak_force_n.map_or("-".into(), |p| format!("{p:.4e}")));
-            ui.label(format!("{:.4}", r.contact_duration_s * 1e3));
-            ui.label(format!("{:.4}", r.restitution));
-            ui.label(format!("{:.3}", r.stats.wall_time_s * 1e3));
+    egui::Grid::new("compare")
+        .num_columns(5)
+        .striped(true)
+        .spacing([18.0, 4.0])
+        .show(ui, |ui| {
+            for h in [
+                "model",
+                "peak force [N]",
+                "duration [ms]",
+                "e",
+                "solve [ms]",
+            ] {
+                ui.strong(h);
+            }
             ui.end_row();
-        }
-    });
+            for (m, r) in peers {
+                ui.label(m.name());
+                ui.label(r.peak_force_n.map_or("-".into(), |p| format!("{p:.4e}")));
+                ui.label(format!("{:.4}", r.contact_duration_s * 1e3));
+                ui.label(format!("{:.4}", r.restitution));
+                ui.label(format!("{:.3}", r.stats.wall_time_s * 1e3));
+                ui.end_row();
+            }
+        });
 }

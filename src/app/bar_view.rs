@@ -21,22 +21,39 @@ pub struct Solved {
 
 impl Solved {
     pub fn new(setup: ImpactSetup, result: ImpactResult, version: u64) -> Self {
-        let gpu = Arc::new(result.waves.as_ref().map(GpuHistory::from_waves).unwrap_or_default());
+        let gpu = Arc::new(
+            result
+                .waves
+                .as_ref()
+                .map(GpuHistory::from_waves)
+                .unwrap_or_default(),
+        );
         let mut impulse_ns = Vec::with_capacity(result.time_s.len());
         let mut j = 0.0;
         for i in 0..result.time_s.len() {
             if i > 0 {
-                j += 0.5 * (result.force_n[i] + result.force_n[i - 1]) * (result.time_s[i] - result.time_s[i - 1]);
+                j += 0.5
+                    * (result.force_n[i] + result.force_n[i - 1])
+                    * (result.time_s[i] - result.time_s[i - 1]);
             }
             impulse_ns.push(j);
         }
-        Solved { setup, result, gpu, version, impulse_ns }
+        Solved {
+            setup,
+            result,
+            gpu,
+            version,
+            impulse_ns,
+        }
     }
 
     /// Rigid-body velocities at time t.
     pub fn velocities_at(&self, t: f64) -> [f64; 2] {
         let r = &self.result;
-        let k = r.time_s.partition_point(|&x| x <= t).min(self.impulse_ns.len());
+        let k = r
+            .time_s
+            .partition_point(|&x| x <= t)
+            .min(self.impulse_ns.len());
         let j = if k == 0 { 0.0 } else { self.impulse_ns[k - 1] };
         let [v1, v2] = r.initial_velocities_m_s;
         [v1 - j / r.masses_kg[0], v2 + j / r.masses_kg[1]]
@@ -45,7 +62,10 @@ impl Solved {
     /// The time span worth animating: the impact and a round trip of the waves after it.
     pub fn span_s(&self) -> f64 {
         let r = &self.result;
-        let rt = r.waves.as_ref().map_or(0.0, |w| w[0].round_trip_s().max(w[1].round_trip_s()));
+        let rt = r
+            .waves
+            .as_ref()
+            .map_or(0.0, |w| w[0].round_trip_s().max(w[1].round_trip_s()));
         (r.end_s + rt).max(r.end_s * 1.5).max(1e-6)
     }
 }
@@ -56,12 +76,22 @@ pub fn draw(ui: &mut egui::Ui, rect: Rect, solved: &Solved, t: f64) {
     let setup = &solved.setup;
     let r = &solved.result;
     let Some(waves) = r.waves.as_ref() else {
-        ui.painter().text(rect.center(), egui::Align2::CENTER_CENTER, "no wave field for this model", egui::FontId::proportional(16.0), ui.visuals().text_color());
+        ui.painter().text(
+            rect.center(),
+            egui::Align2::CENTER_CENTER,
+            "no wave field for this model",
+            egui::FontId::proportional(16.0),
+            ui.visuals().text_color(),
+        );
         return;
     };
     let lengths = [waves[0].length_m(), waves[1].length_m()];
     let to_scale = lengths[0].max(lengths[1]) / lengths[0].min(lengths[1]) < 20.0;
-    let wpm = if to_scale { [1.0, 1.0] } else { [1.0 / lengths[0], 1.0 / lengths[1]] };
+    let wpm = if to_scale {
+        [1.0, 1.0]
+    } else {
+        [1.0 / lengths[0], 1.0 / lengths[1]]
+    };
     let extent = [lengths[0] * wpm[0], lengths[1] * wpm[1]];
     let gap = 0.006 * (extent[0] + extent[1]);
     let (left, right) = (-extent[0] - gap * 4.0, extent[1] + gap * 4.0);
@@ -92,10 +122,28 @@ pub fn draw(ui: &mut egui::Ui, rect: Rect, solved: &Solved, t: f64) {
             _pad: 0.0,
         };
     }
-    let uniforms = GpuUniforms { view: view(left as f32, right as f32, bottom, top), time: t as f32, bar_count: 2, _pad: [0.0; 2], bars };
-    ui.painter().add(egui_wgpu::Callback::new_paint_callback(rect, BarsCallback { uniforms, history: solved.gpu.clone(), version: solved.version }));
+    let uniforms = GpuUniforms {
+        view: view(left as f32, right as f32, bottom, top),
+        time: t as f32,
+        bar_count: 2,
+        _pad: [0.0; 2],
+        bars,
+    };
+    ui.painter().add(egui_wgpu::Callback::new_paint_callback(
+        rect,
+        BarsCallback {
+            uniforms,
+            history: solved.gpu.clone(),
+            version: solved.version,
+        },
+    ));
 
-    let to_screen = |x: f64, y: f32| Pos2::new(rect.left() + ((x - left) / (right - left)) as f32 * rect.width(), rect.bottom() - (y - bottom) / (top - bottom) * rect.height());
+    let to_screen = |x: f64, y: f32| {
+        Pos2::new(
+            rect.left() + ((x - left) / (right - left)) as f32 * rect.width(),
+            rect.bottom() - (y - bottom) / (top - bottom) * rect.height(),
+        )
+    };
     let painter = ui.painter_at(rect);
     let text = ui.visuals().text_color();
     let font = egui::FontId::proportional(13.0);
@@ -110,42 +158,101 @@ pub fn draw(ui: &mut egui::Ui, rect: Rect, solved: &Solved, t: f64) {
                 let x = dir * (gap + d[i] * wpm[i]);
                 let (a, b) = (to_screen(x, 0.36), to_screen(x, 0.66));
                 painter.line_segment([a, b], Stroke::new(1.5, text));
-                painter.text(to_screen(x, 0.67), egui::Align2::CENTER_BOTTOM, "d", font.clone(), text);
+                painter.text(
+                    to_screen(x, 0.67),
+                    egui::Align2::CENTER_BOTTOM,
+                    "d",
+                    font.clone(),
+                    text,
+                );
             }
         }
     }
     // Velocity arrows, scaled by the larger initial speed.
     let v = solved.velocities_at(t);
-    let v_ref = r.initial_velocities_m_s[0].abs().max(r.initial_velocities_m_s[1].abs()).max(1e-12);
+    let v_ref = r.initial_velocities_m_s[0]
+        .abs()
+        .max(r.initial_velocities_m_s[1].abs())
+        .max(1e-12);
     for i in 0..2 {
         let dir = if i == 0 { -1.0 } else { 1.0 };
         let centre = dir * (gap + 0.5 * extent[i]);
         let half = 0.35 * extent[i] * (v[i] / v_ref).clamp(-1.0, 1.0);
-        let (a, b) = (to_screen(centre - half, 0.78), to_screen(centre + half, 0.78));
-        let colour = if ui.visuals().dark_mode { Color32::from_rgb(240, 200, 80) } else { Color32::from_rgb(160, 100, 0) };
+        let (a, b) = (
+            to_screen(centre - half, 0.78),
+            to_screen(centre + half, 0.78),
+        );
+        let colour = if ui.visuals().dark_mode {
+            Color32::from_rgb(240, 200, 80)
+        } else {
+            Color32::from_rgb(160, 100, 0)
+        };
         if (b.x - a.x).abs() > 2.0 {
             painter.arrow(a, b - a, Stroke::new(2.5, colour));
         }
-        painter.text(to_screen(centre, 0.86), egui::Align2::CENTER_BOTTOM, format!("bar {}: {:.3} m/s, L = {} m", i + 1, v[i], lengths[i]), font.clone(), text);
+        painter.text(
+            to_screen(centre, 0.86),
+            egui::Align2::CENTER_BOTTOM,
+            format!("bar {}: {:.3} m/s, L = {} m", i + 1, v[i], lengths[i]),
+            font.clone(),
+            text,
+        );
     }
     if !to_scale {
-        painter.text(to_screen(0.0, 0.30), egui::Align2::CENTER_TOP, "lengths not to scale", font.clone(), text);
+        painter.text(
+            to_screen(0.0, 0.30),
+            egui::Align2::CENTER_TOP,
+            "lengths not to scale",
+            font.clone(),
+            text,
+        );
     }
     // Colour legend.
-    let legend = Rect::from_min_size(Pos2::new(rect.left() + 12.0, rect.bottom() - 28.0), egui::vec2(160.0, 10.0));
+    let legend = Rect::from_min_size(
+        Pos2::new(rect.left() + 12.0, rect.bottom() - 28.0),
+        egui::vec2(160.0, 10.0),
+    );
     for k in 0..32 {
         let s = -1.0 + 2.0 * (k as f32 + 0.5) / 32.0;
-        let cell = Rect::from_min_size(Pos2::new(legend.left() + legend.width() * k as f32 / 32.0, legend.top()), egui::vec2(legend.width() / 32.0 + 0.5, legend.height()));
+        let cell = Rect::from_min_size(
+            Pos2::new(
+                legend.left() + legend.width() * k as f32 / 32.0,
+                legend.top(),
+            ),
+            egui::vec2(legend.width() / 32.0 + 0.5, legend.height()),
+        );
         painter.rect_filled(cell, 0.0, diverging(s));
     }
-    painter.text(Pos2::new(legend.left(), legend.bottom() + 2.0), egui::Align2::LEFT_TOP, format!("compression  {:.3e} Pa  tension", wave_force / waves[0].area_m2), egui::FontId::proportional(11.0), text);
-    painter.text(Pos2::new(rect.right() - 10.0, rect.top() + 8.0), egui::Align2::RIGHT_TOP, format!("t = {:.4} ms", t * 1e3), font, text);
+    painter.text(
+        Pos2::new(legend.left(), legend.bottom() + 2.0),
+        egui::Align2::LEFT_TOP,
+        format!(
+            "compression  {:.3e} Pa  tension",
+            wave_force / waves[0].area_m2
+        ),
+        egui::FontId::proportional(11.0),
+        text,
+    );
+    painter.text(
+        Pos2::new(rect.right() - 10.0, rect.top() + 8.0),
+        egui::Align2::RIGHT_TOP,
+        format!("t = {:.4} ms", t * 1e3),
+        font,
+        text,
+    );
 }
 
 /// The shader's colour map, for the legend.
 pub fn diverging(s: f32) -> Color32 {
     let a = s.abs().clamp(0.0, 1.0).powf(0.7);
-    let (n, c) = ([0.90, 0.90, 0.88], if s < 0.0 { [0.10, 0.30, 0.85] } else { [0.85, 0.15, 0.10] });
+    let (n, c) = (
+        [0.90, 0.90, 0.88],
+        if s < 0.0 {
+            [0.10, 0.30, 0.85]
+        } else {
+            [0.85, 0.15, 0.10]
+        },
+    );
     let mix = |i: usize| ((n[i] + (c[i] - n[i]) * a) * 255.0) as u8;
     Color32::from_rgb(mix(0), mix(1), mix(2))
 }

@@ -33,7 +33,9 @@ impl SceneKind {
         }
     }
     fn from_name(s: &str) -> Option<Self> {
-        [SceneKind::BarImpact, SceneKind::WaveVsLumped].into_iter().find(|k| k.name() == s)
+        [SceneKind::BarImpact, SceneKind::WaveVsLumped]
+            .into_iter()
+            .find(|k| k.name() == s)
     }
 }
 
@@ -62,8 +64,13 @@ pub struct PoundingApp {
     launch: Launch,
 }
 
-fn restore(storage: Option<&dyn eframe::Storage>, key: &str, errors: &mut Vec<String>) -> ImpactSetup {
-    let mut setup = preset::load_for::<ImpactSetup>(preset::DEFAULT_PRESET, "impact").unwrap_or_default();
+fn restore(
+    storage: Option<&dyn eframe::Storage>,
+    key: &str,
+    errors: &mut Vec<String>,
+) -> ImpactSetup {
+    let mut setup =
+        preset::load_for::<ImpactSetup>(preset::DEFAULT_PRESET, "impact").unwrap_or_default();
     if let Some(text) = storage.and_then(|s| s.get_string(key)) {
         let mut restored = setup;
         match preset::apply_text(&mut restored, &text, "the last session's scene") {
@@ -83,11 +90,25 @@ impl PoundingApp {
         }
         let storage = cc.storage;
         let fresh = launch.preset.is_some();
-        let mut bar_setup = if fresh { ImpactSetup::default() } else { restore(storage, IMPACT_KEY, &mut errors) };
-        let compare_setup = if fresh { ImpactSetup::default() } else { restore(storage, COMPARE_KEY, &mut errors) };
-        let ui_state = storage.and_then(|s| s.get_string(UI_KEY)).unwrap_or_default();
+        let mut bar_setup = if fresh {
+            ImpactSetup::default()
+        } else {
+            restore(storage, IMPACT_KEY, &mut errors)
+        };
+        let compare_setup = if fresh {
+            ImpactSetup::default()
+        } else {
+            restore(storage, COMPARE_KEY, &mut errors)
+        };
+        let ui_state = storage
+            .and_then(|s| s.get_string(UI_KEY))
+            .unwrap_or_default();
         let dark = !ui_state.contains("light");
-        let mut scene = ui_state.split(';').find_map(|p| p.strip_prefix("scene=")).and_then(SceneKind::from_name).unwrap_or(SceneKind::BarImpact);
+        let mut scene = ui_state
+            .split(';')
+            .find_map(|p| p.strip_prefix("scene="))
+            .and_then(SceneKind::from_name)
+            .unwrap_or(SceneKind::BarImpact);
         if let Some(s) = launch.scene {
             scene = s;
         }
@@ -98,9 +119,21 @@ impl PoundingApp {
             }
         }
         let ctx = &cc.egui_ctx;
-        ctx.set_theme(if dark { egui::Theme::Dark } else { egui::Theme::Light });
+        ctx.set_theme(if dark {
+            egui::Theme::Dark
+        } else {
+            egui::Theme::Light
+        });
         let mut bar = BarScene::new(ctx, bar_setup, false);
-        let mut compare = BarScene::new(ctx, if launch.preset.is_some() { bar_setup } else { compare_setup }, true);
+        let mut compare = BarScene::new(
+            ctx,
+            if launch.preset.is_some() {
+                bar_setup
+            } else {
+                compare_setup
+            },
+            true,
+        );
         if let Some(t) = launch.time_s {
             for s in [&mut bar, &mut compare] {
                 s.playback.playing = false;
@@ -113,7 +146,11 @@ impl PoundingApp {
             compare,
             dark,
             help: false,
-            preset_choice: launch.preset.clone().filter(|p| EMBEDDED.iter().any(|(n, _)| n == p)).unwrap_or_else(|| preset::DEFAULT_PRESET.into()),
+            preset_choice: launch
+                .preset
+                .clone()
+                .filter(|p| EMBEDDED.iter().any(|(n, _)| n == p))
+                .unwrap_or_else(|| preset::DEFAULT_PRESET.into()),
             path: "scene.toml".into(),
             message: (!errors.is_empty()).then(|| (errors.join("; "), true)),
             ui_ms: 0.0,
@@ -133,25 +170,43 @@ impl PoundingApp {
         ui.horizontal_wrapped(|ui| {
             ui.strong("Pounding Lab");
             ui.separator();
-            ui.selectable_value(&mut self.scene, SceneKind::BarImpact, "Bar impact").on_hover_text("One impact, one model, every readout");
-            ui.selectable_value(&mut self.scene, SceneKind::WaveVsLumped, "Wave vs lumped").on_hover_text("Sears, wave theory, lumped and FE models overlaid");
-            ui.add_enabled(false, egui::Button::selectable(false, "Building pounding")).on_disabled_hover_text("arrives with the building scene");
+            ui.selectable_value(&mut self.scene, SceneKind::BarImpact, "Bar impact")
+                .on_hover_text("One impact, one model, every readout");
+            ui.selectable_value(&mut self.scene, SceneKind::WaveVsLumped, "Wave vs lumped")
+                .on_hover_text("Sears, wave theory, lumped and FE models overlaid");
+            ui.add_enabled(false, egui::Button::selectable(false, "Building pounding"))
+                .on_disabled_hover_text("arrives with the building scene");
             ui.separator();
-            egui::ComboBox::from_id_salt("preset").selected_text(&self.preset_choice).show_ui(ui, |ui| {
-                for (name, text) in EMBEDDED.iter().filter(|(_, t)| preset::scene(t) == "impact") {
-                    ui.selectable_value(&mut self.preset_choice, name.to_string(), *name).on_hover_text(preset::description(text).unwrap_or_default());
-                }
-            });
-            if ui.button("Load preset").on_hover_text("Replace the scene's parameters by the preset").clicked() {
+            egui::ComboBox::from_id_salt("preset")
+                .selected_text(&self.preset_choice)
+                .show_ui(ui, |ui| {
+                    for (name, text) in EMBEDDED
+                        .iter()
+                        .filter(|(_, t)| preset::scene(t) == "impact")
+                    {
+                        ui.selectable_value(&mut self.preset_choice, name.to_string(), *name)
+                            .on_hover_text(preset::description(text).unwrap_or_default());
+                    }
+                });
+            if ui
+                .button("Load preset")
+                .on_hover_text("Replace the scene's parameters by the preset")
+                .clicked()
+            {
                 let name = self.preset_choice.clone();
                 self.message = self.current().load_preset(&name).err().map(|e| (e, true));
             }
-            if ui.button("Reset").on_hover_text("Back to the preset's values").clicked() {
+            if ui
+                .button("Reset")
+                .on_hover_text("Back to the preset's values")
+                .clicked()
+            {
                 let name = self.preset_choice.clone();
                 self.message = self.current().load_preset(&name).err().map(|e| (e, true));
             }
             ui.separator();
-            ui.add(egui::TextEdit::singleline(&mut self.path).desired_width(140.0)).on_hover_text("A TOML scene file");
+            ui.add(egui::TextEdit::singleline(&mut self.path).desired_width(140.0))
+                .on_hover_text("A TOML scene file");
             if ui.button("Open").clicked() {
                 let path = self.path.clone();
                 self.message = Some(match self.current().load_preset(&path) {
@@ -167,11 +222,23 @@ impl PoundingApp {
                 });
             }
             ui.separator();
-            if ui.button(if self.dark { "Light" } else { "Dark" }).on_hover_text("Switch theme").clicked() {
+            if ui
+                .button(if self.dark { "Light" } else { "Dark" })
+                .on_hover_text("Switch theme")
+                .clicked()
+            {
                 self.dark = !self.dark;
-                ui.ctx().set_theme(if self.dark { egui::Theme::Dark } else { egui::Theme::Light });
+                ui.ctx().set_theme(if self.dark {
+                    egui::Theme::Dark
+                } else {
+                    egui::Theme::Light
+                });
             }
-            if ui.button("Help").on_hover_text("Keyboard and what you see (F1)").clicked() {
+            if ui
+                .button("Help")
+                .on_hover_text("Keyboard and what you see (F1)")
+                .clicked()
+            {
                 self.help = !self.help;
             }
         });
@@ -181,7 +248,14 @@ impl PoundingApp {
         if ctx.memory(|m| m.focused().is_some()) {
             return;
         }
-        let (space, right, restart, help) = ctx.input(|i| (i.key_pressed(egui::Key::Space), i.key_pressed(egui::Key::ArrowRight), i.key_pressed(egui::Key::R), i.key_pressed(egui::Key::F1)));
+        let (space, right, restart, help) = ctx.input(|i| {
+            (
+                i.key_pressed(egui::Key::Space),
+                i.key_pressed(egui::Key::ArrowRight),
+                i.key_pressed(egui::Key::R),
+                i.key_pressed(egui::Key::F1),
+            )
+        });
         let scene = self.current();
         if space {
             scene.playback.playing = !scene.playback.playing;
@@ -216,17 +290,30 @@ impl eframe::App for PoundingApp {
                     SceneKind::BarImpact => &self.bar,
                     SceneKind::WaveVsLumped => &self.compare,
                 };
-                ui.label(format!("UI {:.2} ms | solve {:.3} ms | change to result {:.1} ms{}", self.ui_ms, s.solve_time.as_secs_f64() * 1e3, s.latency.as_secs_f64() * 1e3, if s.busy() { " | solving..." } else { "" }));
+                ui.label(format!(
+                    "UI {:.2} ms | solve {:.3} ms | change to result {:.1} ms{}",
+                    self.ui_ms,
+                    s.solve_time.as_secs_f64() * 1e3,
+                    s.latency.as_secs_f64() * 1e3,
+                    if s.busy() { " | solving..." } else { "" }
+                ));
                 if let Some((m, is_error)) = &self.message {
                     ui.separator();
-                    let colour = if *is_error { Color32::from_rgb(220, 60, 50) } else { ui.visuals().text_color() };
+                    let colour = if *is_error {
+                        Color32::from_rgb(220, 60, 50)
+                    } else {
+                        ui.visuals().text_color()
+                    };
                     ui.colored_label(colour, m);
                 }
             });
         });
-        egui::Panel::left("params").resizable(true).default_size(380.0).show(ui, |ui| {
-            egui::ScrollArea::vertical().show(ui, |ui| self.current().params_ui(ui));
-        });
+        egui::Panel::left("params")
+            .resizable(true)
+            .default_size(380.0)
+            .show(ui, |ui| {
+                egui::ScrollArea::vertical().show(ui, |ui| self.current().params_ui(ui));
+            });
         egui::CentralPanel::default().show(ui, |ui| {
             egui::ScrollArea::vertical().show(ui, |ui| self.current().main_ui(ui));
         });
@@ -245,7 +332,11 @@ impl eframe::App for PoundingApp {
             ctx.request_repaint();
         }
         self.frames += 1;
-        if self.launch.exit_after_frames.is_some_and(|n| self.frames >= n) {
+        if self
+            .launch
+            .exit_after_frames
+            .is_some_and(|n| self.frames >= n)
+        {
             ctx.send_viewport_cmd(egui::ViewportCommand::Close);
         }
         self.ui_ms = start.elapsed().as_secs_f64() * 1e3;
@@ -254,16 +345,29 @@ impl eframe::App for PoundingApp {
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         storage.set_string(IMPACT_KEY, preset::impact_to_toml(&self.bar.setup));
         storage.set_string(COMPARE_KEY, preset::impact_to_toml(&self.compare.setup));
-        storage.set_string(UI_KEY, format!("{};scene={}", if self.dark { "dark" } else { "light" }, self.scene.name()));
+        storage.set_string(
+            UI_KEY,
+            format!(
+                "{};scene={}",
+                if self.dark { "dark" } else { "light" },
+                self.scene.name()
+            ),
+        );
     }
 }
 
 /// Opens the window.
 pub fn run(launch: Launch) -> anyhow::Result<()> {
     let options = eframe::NativeOptions {
-        viewport: egui::ViewportBuilder::default().with_inner_size([1320.0, 900.0]).with_title("Pounding Lab"),
+        viewport: egui::ViewportBuilder::default()
+            .with_inner_size([1320.0, 900.0])
+            .with_title("Pounding Lab"),
         ..Default::default()
     };
-    eframe::run_native("Pounding Lab", options, Box::new(move |cc| Ok(Box::new(PoundingApp::new(cc, launch)))))
-        .map_err(|e| anyhow::anyhow!("the window could not start: {e}"))
+    eframe::run_native(
+        "Pounding Lab",
+        options,
+        Box::new(move |cc| Ok(Box::new(PoundingApp::new(cc, launch)))),
+    )
+    .map_err(|e| anyhow::anyhow!("the window could not start: {e}"))
 }

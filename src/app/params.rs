@@ -28,19 +28,33 @@ impl Fields {
         ui.horizontal(|ui| {
             ui.label(spec.label).on_hover_text(spec.tooltip);
             let mut v = value.clamp(spec.min, spec.max);
-            let slider = egui::Slider::new(&mut v, spec.min..=spec.max).logarithmic(spec.log).show_value(false).clamping(egui::SliderClamping::Always);
+            let slider = egui::Slider::new(&mut v, spec.min..=spec.max)
+                .logarithmic(spec.log)
+                .show_value(false)
+                .clamping(egui::SliderClamping::Always);
             if ui.add(slider).on_hover_text(spec.tooltip).changed() {
                 *value = v;
                 changed = true;
                 self.text.remove(id);
                 self.refused.remove(id);
             }
-            let shown = self.text.entry(id.to_string()).or_insert_with(|| format_value(*value));
-            if !ui.memory(|m| m.has_focus(egui::Id::unique(("field", id)))) && !changed && shown.parse::<f64>().ok() != Some(*value) {
+            let shown = self
+                .text
+                .entry(id.to_string())
+                .or_insert_with(|| format_value(*value));
+            if !ui.memory(|m| m.has_focus(egui::Id::unique(("field", id))))
+                && !changed
+                && shown.parse::<f64>().ok() != Some(*value)
+            {
                 *shown = format_value(*value);
             }
-            let response = ui.add(egui::TextEdit::singleline(shown).id(egui::Id::unique(("field", id))).desired_width(80.0));
-            let commit = response.lost_focus() || (response.has_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)));
+            let response = ui.add(
+                egui::TextEdit::singleline(shown)
+                    .id(egui::Id::unique(("field", id)))
+                    .desired_width(80.0),
+            );
+            let commit = response.lost_focus()
+                || (response.has_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)));
             if commit {
                 match shown.trim().parse::<f64>() {
                     Ok(x) if x.is_finite() && x >= spec.min && x <= spec.max => {
@@ -51,7 +65,16 @@ impl Fields {
                         self.refused.remove(id);
                     }
                     _ => {
-                        self.refused.insert(id.to_string(), format!("'{}' refused: allowed {} to {} {}", shown.trim(), format_value(spec.min), format_value(spec.max), spec.unit));
+                        self.refused.insert(
+                            id.to_string(),
+                            format!(
+                                "'{}' refused: allowed {} to {} {}",
+                                shown.trim(),
+                                format_value(spec.min),
+                                format_value(spec.max),
+                                spec.unit
+                            ),
+                        );
                         *shown = format_value(*value);
                     }
                 }

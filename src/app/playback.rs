@@ -14,7 +14,12 @@ pub struct Playback {
 
 impl Default for Playback {
     fn default() -> Self {
-        Playback { t: 0.0, playing: true, speed: 1e-4, t_max: 1e-3 }
+        Playback {
+            t: 0.0,
+            playing: true,
+            speed: 1e-4,
+            t_max: 1e-3,
+        }
     }
 }
 
@@ -38,21 +43,42 @@ impl Playback {
     pub fn ui(&mut self, ui: &mut egui::Ui) -> bool {
         let mut restart = false;
         ui.horizontal(|ui| {
-            if ui.button(if self.playing { "Pause" } else { "Play" }).on_hover_text("Play or pause (space)").clicked() {
+            if ui
+                .button(if self.playing { "Pause" } else { "Play" })
+                .on_hover_text("Play or pause (space)")
+                .clicked()
+            {
                 self.playing = !self.playing;
             }
-            if ui.button("Step").on_hover_text("One step forward (right arrow)").clicked() {
+            if ui
+                .button("Step")
+                .on_hover_text("One step forward (right arrow)")
+                .clicked()
+            {
                 self.step();
             }
-            if ui.button("Restart").on_hover_text("Back to t = 0 with the same parameters (R)").clicked() {
+            if ui
+                .button("Restart")
+                .on_hover_text("Back to t = 0 with the same parameters (R)")
+                .clicked()
+            {
                 restart = true;
                 self.t = 0.0;
             }
-            ui.label("speed").on_hover_text("Simulated time per real second: 1e-4 shows a millisecond impact over 10 s");
-            ui.add(egui::Slider::new(&mut self.speed, 1e-7..=1e-1).logarithmic(true).custom_formatter(|v, _| format!("{v:.1e} s/s")));
+            ui.label("speed").on_hover_text(
+                "Simulated time per real second: 1e-4 shows a millisecond impact over 10 s",
+            );
+            ui.add(
+                egui::Slider::new(&mut self.speed, 1e-7..=1e-1)
+                    .logarithmic(true)
+                    .custom_formatter(|v, _| format!("{v:.1e} s/s")),
+            );
             let t_max = self.t_max;
             ui.label("t");
-            ui.add(egui::Slider::new(&mut self.t, 0.0..=t_max).custom_formatter(|v, _| format!("{:.4} ms", v * 1e3)));
+            ui.add(
+                egui::Slider::new(&mut self.t, 0.0..=t_max)
+                    .custom_formatter(|v, _| format!("{:.4} ms", v * 1e3)),
+            );
         });
         restart
     }

@@ -34,14 +34,26 @@ impl<I: Send + 'static, O: Send + 'static> Worker<I, O> {
                     }
                     let start = Instant::now();
                     let output = job(request.1);
-                    if outbox.send(Done { id: request.0, output, elapsed: start.elapsed() }).is_err() {
+                    if outbox
+                        .send(Done {
+                            id: request.0,
+                            output,
+                            elapsed: start.elapsed(),
+                        })
+                        .is_err()
+                    {
                         break;
                     }
                     wake();
                 }
             })
             .expect("the solver thread starts");
-        Worker { to_worker, from_worker, next_id: 0, pending: None }
+        Worker {
+            to_worker,
+            from_worker,
+            next_id: 0,
+            pending: None,
+        }
     }
 
     pub fn request(&mut self, input: I) {

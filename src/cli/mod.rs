@@ -54,7 +54,12 @@ fn window(args: &WindowArgs) -> anyhow::Result<()> {
         Some("compare") => Some(crate::app::SceneKind::WaveVsLumped),
         Some(other) => anyhow::bail!("--scene: unknown scene '{other}': allowed bar|compare"),
     };
-    crate::app::run(crate::app::Launch { scene, preset: args.preset.clone(), exit_after_frames: args.exit_after_frames, time_s: args.time })
+    crate::app::run(crate::app::Launch {
+        scene,
+        preset: args.preset.clone(),
+        exit_after_frames: args.exit_after_frames,
+        time_s: args.time,
+    })
 }
 
 /// Runs the command line, writing results to `out`; `Ok(())` means exit status 0.
@@ -70,7 +75,10 @@ pub fn run(cli: Cli, out: &mut dyn std::io::Write) -> anyhow::Result<()> {
         None => {
             // Built without the window: the default scene runs on the terminal.
             impact::run(&impact::ImpactArgs::default(), out)?;
-            writeln!(out, "\n(Built without the window; `pounding impact --help` lists what the command line can do.)")?;
+            writeln!(
+                out,
+                "\n(Built without the window; `pounding impact --help` lists what the command line can do.)"
+            )?;
             Ok(())
         }
     }

@@ -285,7 +285,11 @@ pub fn impact_to_toml(setup: &ImpactSetup) -> String {
     use std::fmt::Write;
     let sc = &setup.scenario;
     let mut s = String::new();
-    let _ = writeln!(s, "name = \"saved scene\"\nscene = \"impact\"\nmodel = \"{}\"\n", setup.model.name());
+    let _ = writeln!(
+        s,
+        "name = \"saved scene\"\nscene = \"impact\"\nmodel = \"{}\"\n",
+        setup.model.name()
+    );
     for (name, b) in [("bar1", &sc.bar1), ("bar2", &sc.bar2)] {
         let _ = writeln!(s, "[{name}]");
         let _ = writeln!(s, "youngs_modulus = {:e}", b.material.youngs_modulus_pa);
@@ -318,11 +322,23 @@ pub fn impact_to_toml(setup: &ImpactSetup) -> String {
         None => writeln!(s, "zone_length = \"auto\""),
     }
     .ok();
-    let _ = writeln!(s, "divisions = {:?}\nrestitution = {:?}\n", c.divisions, c.restitution);
+    let _ = writeln!(
+        s,
+        "divisions = {:?}\nrestitution = {:?}\n",
+        c.divisions, c.restitution
+    );
     let _ = writeln!(s, "[sears]\nreading = \"{}\"\n", sc.reading.name());
     let v = &sc.solver;
-    let _ = writeln!(s, "[solver]\ndt = {:e}\nwindow = {:?}\nmax_steps = {}\nrefine = {}\n", v.dt_s, v.window_s, v.max_steps, v.refine);
-    let _ = writeln!(s, "[fe]\nsegments = {}\ncourant = {:?}", sc.fe.segments, sc.fe.courant);
+    let _ = writeln!(
+        s,
+        "[solver]\ndt = {:e}\nwindow = {:?}\nmax_steps = {}\nrefine = {}\n",
+        v.dt_s, v.window_s, v.max_steps, v.refine
+    );
+    let _ = writeln!(
+        s,
+        "[fe]\nsegments = {}\ncourant = {:?}",
+        sc.fe.segments, sc.fe.courant
+    );
     s
 }
 

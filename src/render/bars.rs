@@ -103,13 +103,21 @@ pub fn install(render_state: &egui_wgpu::RenderState) {
             wgpu::BindGroupLayoutEntry {
                 binding: 0,
                 visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
-                ty: wgpu::BindingType::Buffer { ty: wgpu::BufferBindingType::Uniform, has_dynamic_offset: false, min_binding_size: None },
+                ty: wgpu::BindingType::Buffer {
+                    ty: wgpu::BufferBindingType::Uniform,
+                    has_dynamic_offset: false,
+                    min_binding_size: None,
+                },
                 count: None,
             },
             wgpu::BindGroupLayoutEntry {
                 binding: 1,
                 visibility: wgpu::ShaderStages::FRAGMENT,
-                ty: wgpu::BindingType::Buffer { ty: wgpu::BufferBindingType::Storage { read_only: true }, has_dynamic_offset: false, min_binding_size: None },
+                ty: wgpu::BindingType::Buffer {
+                    ty: wgpu::BufferBindingType::Storage { read_only: true },
+                    has_dynamic_offset: false,
+                    min_binding_size: None,
+                },
                 count: None,
             },
         ],
@@ -122,7 +130,12 @@ pub fn install(render_state: &egui_wgpu::RenderState) {
     let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some("bars"),
         layout: Some(&pipeline_layout),
-        vertex: wgpu::VertexState { module: &shader, entry_point: Some("vs_main"), buffers: &[], compilation_options: Default::default() },
+        vertex: wgpu::VertexState {
+            module: &shader,
+            entry_point: Some("vs_main"),
+            buffers: &[],
+            compilation_options: Default::default(),
+        },
         fragment: Some(wgpu::FragmentState {
             module: &shader,
             entry_point: Some("fs_main"),
@@ -143,7 +156,18 @@ pub fn install(render_state: &egui_wgpu::RenderState) {
     });
     let history = history_buffer(device, 1024);
     let bind_group = bind(device, &layout, &uniforms, &history);
-    render_state.renderer.write().callback_resources.insert(BarsResources { pipeline, layout, uniforms, history, bind_group, history_version: u64::MAX });
+    render_state
+        .renderer
+        .write()
+        .callback_resources
+        .insert(BarsResources {
+            pipeline,
+            layout,
+            uniforms,
+            history,
+            bind_group,
+            history_version: u64::MAX,
+        });
 }
 
 fn history_buffer(device: &wgpu::Device, samples: usize) -> wgpu::Buffer {
@@ -155,13 +179,24 @@ fn history_buffer(device: &wgpu::Device, samples: usize) -> wgpu::Buffer {
     })
 }
 
-fn bind(device: &wgpu::Device, layout: &wgpu::BindGroupLayout, uniforms: &wgpu::Buffer, history: &wgpu::Buffer) -> wgpu::BindGroup {
+fn bind(
+    device: &wgpu::Device,
+    layout: &wgpu::BindGroupLayout,
+    uniforms: &wgpu::Buffer,
+    history: &wgpu::Buffer,
+) -> wgpu::BindGroup {
     device.create_bind_group(&wgpu::BindGroupDescriptor {
         label: Some("bars"),
         layout,
         entries: &[
-            wgpu::BindGroupEntry { binding: 0, resource: uniforms.as_entire_binding() },
-            wgpu::BindGroupEntry { binding: 1, resource: history.as_entire_binding() },
+            wgpu::BindGroupEntry {
+                binding: 0,
+                resource: uniforms.as_entire_binding(),
+            },
+            wgpu::BindGroupEntry {
+                binding: 1,
+                resource: history.as_entire_binding(),
+            },
         ],
     })
 }
@@ -200,7 +235,12 @@ impl egui_wgpu::CallbackTrait for BarsCallback {
         Vec::new()
     }
 
-    fn paint(&self, _info: eframe::egui::PaintCallbackInfo, pass: &mut wgpu::RenderPass<'static>, resources: &egui_wgpu::CallbackResources) {
+    fn paint(
+        &self,
+        _info: eframe::egui::PaintCallbackInfo,
+        pass: &mut wgpu::RenderPass<'static>,
+        resources: &egui_wgpu::CallbackResources,
+    ) {
         let Some(r) = resources.get::<BarsResources>() else {
             return;
         };
@@ -212,5 +252,6 @@ impl egui_wgpu::CallbackTrait for BarsCallback {
 
 /// Orthographic view of the world rectangle [left, right] x [bottom, top].
 pub fn view(left: f32, right: f32, bottom: f32, top: f32) -> [[f32; 4]; 4] {
-    glam::camera::rh::proj::directx::orthographic(left, right, bottom, top, -1.0, 1.0).to_cols_array_2d()
+    glam::camera::rh::proj::directx::orthographic(left, right, bottom, top, -1.0, 1.0)
+        .to_cols_array_2d()
 }
