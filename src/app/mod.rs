@@ -3,14 +3,17 @@
 
 mod bar_scene;
 mod bar_view;
+mod building_scene;
 mod impact_params;
 mod params;
 mod playback;
+mod series;
 pub mod worker;
 
 use crate::io::preset::{self, EMBEDDED};
 use crate::io::settings::ImpactSetup;
 use bar_scene::BarScene;
+use building_scene::BuildingScene;
 use eframe::egui::{self, Color32};
 use std::time::Instant;
 
@@ -18,11 +21,13 @@ use std::time::Instant;
 const IMPACT_KEY: &str = "impact-scene-v1";
 const COMPARE_KEY: &str = "compare-scene-v1";
 const UI_KEY: &str = "ui-v1";
+const BUILDINGS_KEY: &str = "buildings-scene-v1";
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum SceneKind {
     BarImpact,
     WaveVsLumped,
+    Buildings,
 }
 
 impl SceneKind {
@@ -30,12 +35,17 @@ impl SceneKind {
         match self {
             SceneKind::BarImpact => "bar",
             SceneKind::WaveVsLumped => "compare",
+            SceneKind::Buildings => "buildings",
         }
     }
-    fn from_name(s: &str) -> Option<Self> {
-        [SceneKind::BarImpact, SceneKind::WaveVsLumped]
-            .into_iter()
-            .find(|k| k.name() == s)
+    pub fn from_name(s: &str) -> Option<Self> {
+        [
+            SceneKind::BarImpact,
+            SceneKind::WaveVsLumped,
+            SceneKind::Buildings,
+        ]
+        .into_iter()
+        .find(|k| k.name() == s)
     }
 }
 
@@ -54,6 +64,7 @@ pub struct PoundingApp {
     scene: SceneKind,
     bar: BarScene,
     compare: BarScene,
+    buildings: BuildingScene,
     dark: bool,
     help: bool,
     preset_choice: String,
@@ -118,6 +129,15 @@ impl PoundingApp {
                 Err(e) => errors.push(e.to_string()),
             }
         }
+        let mut building_setup: crate::io::building_settings::BuildingSetup =
+            preset::load_for("paper-buildings", "buildings").unwrap_or_default();
+        if let Some(text) = storage.and_then(|s| s.get_string(BUILDINGS_KEY)) {
+            let mut restored = building_setup.clone();
+            match preset::apply_text(&mut restored, &text, "the last session's building scene") {
+                Ok(()) => building_setup = restored,
+                Err(e) => errors.push(format!("{e} (the paper's buildings are used)")),
+            }
+        }
         let ctx = &cc.egui_ctx;
         ctx.set_theme(if dark {
             egui::Theme::Dark
@@ -134,16 +154,22 @@ impl PoundingApp {
             },
             true,
         );
+        let mut buildings = BuildingScene::new(ctx, building_setup);
         if let Some(t) = launch.time_s {
-            for s in [&mut bar, &mut compare] {
-                s.playback.playing = false;
-                s.playback.t = t;
+            for p in [
+                &mut bar.playback,
+                &mut compare.playback,
+                &mut buildings.playback,
+            ] {
+                p.playing = false;
+                p.t = t;
             }
         }
         PoundingApp {
             scene,
             bar,
             compare,
+            buildings,
             dark,
             help: false,
             preset_choice: launch
@@ -159,10 +185,20 @@ impl PoundingApp {
         }
     }
 
+    /// The bar scene on screen (the building scene when that is shown falls back to the bar
+    /// scene for preset actions, which it does not take).
     fn current(&mut self) -> &mut BarScene {
         match self.scene {
-            SceneKind::BarImpact => &mut self.bar,
             SceneKind::WaveVsLumped => &mut self.compare,
+            _ => &mut self.bar,
+        }
+    }
+
+    fn playback(&mut self) -> &mut playback::Playback {
+        match self.scene {
+            SceneKind::BarImpact => &mut self.bar.playback,
+            SceneKind::WaveVsLumped => &mut self.compare.playback,
+            SceneKind::Buildings => &mut self.buildings.playback,
         }
     }
 
@@ -177,49 +213,25 @@ impl PoundingApp {
             ui.add_enabled(false, egui::Button::selectable(false, "Building pounding"))
                 .on_disabled_hover_text("arrives with the building scene");
             ui.separator();
-            egui::ComboBox::from_id_salt("preset")
-                .selected_text(&self.preset_choice)
-                .show_ui(ui, |ui| {
-                    for (name, text) in EMBEDDED
-                        .iter()
-                        .filter(|(_, t)| preset::scene(t) == "impact")
-                    {
-                        ui.selectable_value(&mut self.preset_choice, name.to_string(), *name)
-                            .on_hover_text(preset::description(text).unwrap_or_default());
+            if self.scene == SceneKind::Buildings {
+                if ui
+                    .button("Paper's buildings")
+                    .on_hover_text("Reset to the paper's Table 1 case")
+                    .clicked()
+                {
+                    match preset::load_for::<crate::io::building_settings::BuildingSetup>(
+                        "paper-buildings",
+                        "buildings",
+                    ) {
+                        Ok(s) => {
+                            self.buildings.setup = s;
+                            self.buildings.request();
+                        }
+                        Err(e) => self.message = Some((e.to_string(), true)),
                     }
-                });
-            if ui
-                .button("Load preset")
-                .on_hover_text("Replace the scene's parameters by the preset")
-                .clicked()
-            {
-                let name = self.preset_choice.clone();
-                self.message = self.current().load_preset(&name).err().map(|e| (e, true));
-            }
-            if ui
-                .button("Reset")
-                .on_hover_text("Back to the preset's values")
-                .clicked()
-            {
-                let name = self.preset_choice.clone();
-                self.message = self.current().load_preset(&name).err().map(|e| (e, true));
-            }
-            ui.separator();
-            ui.add(egui::TextEdit::singleline(&mut self.path).desired_width(140.0))
-                .on_hover_text("A TOML scene file");
-            if ui.button("Open").clicked() {
-                let path = self.path.clone();
-                self.message = Some(match self.current().load_preset(&path) {
-                    Ok(()) => (format!("loaded {path}"), false),
-                    Err(e) => (e, true),
-                });
-            }
-            if ui.button("Save").clicked() {
-                let text = preset::impact_to_toml(&self.current().setup);
-                self.message = Some(match std::fs::write(&self.path, text) {
-                    Ok(()) => (format!("saved {}", self.path), false),
-                    Err(e) => (format!("could not save {}: {e}", self.path), true),
-                });
+                }
+            } else {
+                self.preset_ui(ui);
             }
             ui.separator();
             if ui
@@ -244,6 +256,53 @@ impl PoundingApp {
         });
     }
 
+    fn preset_ui(&mut self, ui: &mut egui::Ui) {
+        egui::ComboBox::from_id_salt("preset")
+            .selected_text(&self.preset_choice)
+            .show_ui(ui, |ui| {
+                for (name, text) in EMBEDDED
+                    .iter()
+                    .filter(|(_, t)| preset::scene(t) == "impact")
+                {
+                    ui.selectable_value(&mut self.preset_choice, name.to_string(), *name)
+                        .on_hover_text(preset::description(text).unwrap_or_default());
+                }
+            });
+        if ui
+            .button("Load preset")
+            .on_hover_text("Replace the scene's parameters by the preset")
+            .clicked()
+        {
+            let name = self.preset_choice.clone();
+            self.message = self.current().load_preset(&name).err().map(|e| (e, true));
+        }
+        if ui
+            .button("Reset")
+            .on_hover_text("Back to the preset's values")
+            .clicked()
+        {
+            let name = self.preset_choice.clone();
+            self.message = self.current().load_preset(&name).err().map(|e| (e, true));
+        }
+        ui.separator();
+        ui.add(egui::TextEdit::singleline(&mut self.path).desired_width(140.0))
+            .on_hover_text("A TOML scene file");
+        if ui.button("Open").clicked() {
+            let path = self.path.clone();
+            self.message = Some(match self.current().load_preset(&path) {
+                Ok(()) => (format!("loaded {path}"), false),
+                Err(e) => (e, true),
+            });
+        }
+        if ui.button("Save").clicked() {
+            let text = preset::impact_to_toml(&self.current().setup);
+            self.message = Some(match std::fs::write(&self.path, text) {
+                Ok(()) => (format!("saved {}", self.path), false),
+                Err(e) => (format!("could not save {}: {e}", self.path), true),
+            });
+        }
+    }
+
     fn keys(&mut self, ctx: &egui::Context) {
         if ctx.memory(|m| m.focused().is_some()) {
             return;
@@ -256,16 +315,16 @@ impl PoundingApp {
                 i.key_pressed(egui::Key::F1),
             )
         });
-        let scene = self.current();
+        let playback = self.playback();
         if space {
-            scene.playback.playing = !scene.playback.playing;
+            playback.playing = !playback.playing;
         }
         if right {
-            scene.playback.step();
+            playback.step();
         }
         if restart {
-            scene.playback.t = 0.0;
-            scene.playback.playing = true;
+            playback.t = 0.0;
+            playback.playing = true;
         }
         if help {
             self.help = !self.help;
@@ -282,20 +341,35 @@ impl eframe::App for PoundingApp {
         for s in [&mut self.bar, &mut self.compare] {
             s.poll();
         }
-        self.current().playback.advance(dt.min(0.1));
+        self.buildings.poll();
+        if self.scene == SceneKind::Buildings {
+            self.buildings.take_dropped(&ctx);
+        }
+        self.playback().advance(dt.min(0.1));
         egui::Panel::top("top").show(ui, |ui| self.top_bar(ui));
         egui::Panel::bottom("status").show(ui, |ui| {
             ui.horizontal(|ui| {
-                let s = match self.scene {
-                    SceneKind::BarImpact => &self.bar,
-                    SceneKind::WaveVsLumped => &self.compare,
+                let (solve, latency, busy) = match self.scene {
+                    SceneKind::BarImpact => {
+                        (self.bar.solve_time, self.bar.latency, self.bar.busy())
+                    }
+                    SceneKind::WaveVsLumped => (
+                        self.compare.solve_time,
+                        self.compare.latency,
+                        self.compare.busy(),
+                    ),
+                    SceneKind::Buildings => (
+                        self.buildings.solve_time,
+                        self.buildings.latency,
+                        self.buildings.busy(),
+                    ),
                 };
                 ui.label(format!(
                     "UI {:.2} ms | solve {:.3} ms | change to result {:.1} ms{}",
                     self.ui_ms,
-                    s.solve_time.as_secs_f64() * 1e3,
-                    s.latency.as_secs_f64() * 1e3,
-                    if s.busy() { " | solving..." } else { "" }
+                    solve.as_secs_f64() * 1e3,
+                    latency.as_secs_f64() * 1e3,
+                    if busy { " | solving..." } else { "" }
                 ));
                 if let Some((m, is_error)) = &self.message {
                     ui.separator();
@@ -312,10 +386,16 @@ impl eframe::App for PoundingApp {
             .resizable(true)
             .default_size(380.0)
             .show(ui, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| self.current().params_ui(ui));
+                egui::ScrollArea::vertical().show(ui, |ui| match self.scene {
+                    SceneKind::Buildings => self.buildings.params_ui(ui),
+                    _ => self.current().params_ui(ui),
+                });
             });
         egui::CentralPanel::default().show(ui, |ui| {
-            egui::ScrollArea::vertical().show(ui, |ui| self.current().main_ui(ui));
+            egui::ScrollArea::vertical().show(ui, |ui| match self.scene {
+                SceneKind::Buildings => self.buildings.main_ui(ui),
+                _ => self.current().main_ui(ui),
+            });
         });
         if self.help {
             let mut open = true;
@@ -328,7 +408,8 @@ impl eframe::App for PoundingApp {
             });
             self.help = open;
         }
-        if self.current().playback.playing || self.current().busy() {
+        let busy = self.bar.busy() || self.compare.busy() || self.buildings.busy();
+        if self.playback().playing || busy {
             ctx.request_repaint();
         }
         self.frames += 1;
@@ -345,6 +426,10 @@ impl eframe::App for PoundingApp {
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         storage.set_string(IMPACT_KEY, preset::impact_to_toml(&self.bar.setup));
         storage.set_string(COMPARE_KEY, preset::impact_to_toml(&self.compare.setup));
+        storage.set_string(
+            BUILDINGS_KEY,
+            preset::buildings_to_toml(&self.buildings.setup),
+        );
         storage.set_string(
             UI_KEY,
             format!(

@@ -69,7 +69,7 @@ impl Playback {
                 "Simulated time per real second: 1e-4 shows a millisecond impact over 10 s",
             );
             ui.add(
-                egui::Slider::new(&mut self.speed, 1e-7..=1e-1)
+                egui::Slider::new(&mut self.speed, 1e-7..=10.0)
                     .logarithmic(true)
                     .custom_formatter(|v, _| format!("{v:.1e} s/s")),
             );

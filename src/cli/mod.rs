@@ -32,7 +32,7 @@ pub enum Command {
 #[cfg(feature = "gui")]
 #[derive(clap::Args, Debug, Default)]
 pub struct WindowArgs {
-    /// Scene to open: bar|compare
+    /// Scene to open: bar|compare|buildings
     #[arg(long)]
     pub scene: Option<String>,
     /// Impact preset to open with (instead of the last session's scene)
@@ -50,9 +50,9 @@ pub struct WindowArgs {
 fn window(args: &WindowArgs) -> anyhow::Result<()> {
     let scene = match args.scene.as_deref() {
         None => None,
-        Some("bar") => Some(crate::app::SceneKind::BarImpact),
-        Some("compare") => Some(crate::app::SceneKind::WaveVsLumped),
-        Some(other) => anyhow::bail!("--scene: unknown scene '{other}': allowed bar|compare"),
+        Some(name) => Some(crate::app::SceneKind::from_name(name).ok_or_else(|| {
+            anyhow::anyhow!("--scene: unknown scene '{name}': allowed bar|compare|buildings")
+        })?),
     };
     crate::app::run(crate::app::Launch {
         scene,

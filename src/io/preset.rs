@@ -342,6 +342,81 @@ pub fn impact_to_toml(setup: &ImpactSetup) -> String {
     s
 }
 
+/// The building scene written back as a preset.
+pub fn buildings_to_toml(setup: &super::building_settings::BuildingSetup) -> String {
+    use crate::model::building::SlabReading;
+    use std::fmt::Write;
+    let sc = &setup.scenario;
+    let mut s = String::from("name = \"saved building scene\"\nscene = \"buildings\"\n\n");
+    for (name, b) in [("left", &sc.left), ("right", &sc.right)] {
+        let _ = writeln!(
+            s,
+            "[{name}]\nmass = {:?}\nstiffness = {:?}\ndamping_ratio = {:?}\nheight = {:?}\nslab_length = {:?}\nslab_width = {:?}\nslab_thickness = {:?}\nyoungs_modulus = {:e}\n",
+            b.mass_kg,
+            b.stiffness_n_m,
+            b.damping_ratio,
+            b.storey_height_m,
+            b.slab.length_m,
+            b.slab.width_m,
+            b.slab.thickness_m,
+            b.slab.youngs_modulus_pa
+        );
+    }
+    let _ = writeln!(
+        s,
+        "gap = {:?}\n\n[contact]\nmodel = \"{}\"",
+        sc.gap_m,
+        sc.contact.name()
+    );
+    match sc.stiffness {
+        Some(k) => writeln!(s, "stiffness = {k:e}"),
+        None => writeln!(s, "stiffness = \"auto\""),
+    }
+    .ok();
+    let _ = writeln!(
+        s,
+        "restitution = {:?}\nreading = \"{}\"",
+        sc.restitution,
+        if sc.reading == SlabReading::Paper {
+            "paper"
+        } else {
+            "end"
+        }
+    );
+    match sc.zone_length_m {
+        Some(d) => writeln!(s, "zone_length = {d:?}\n"),
+        None => writeln!(s, "zone_length = \"auto\"\n"),
+    }
+    .ok();
+    let _ = writeln!(
+        s,
+        "[slab]\ndamping = {:?}\n\n[impact]\nmerge_gap_s = {:?}\n",
+        sc.slab_damping, sc.merge_gap_s
+    );
+    let m = &setup.motion;
+    let _ = writeln!(
+        s,
+        "[motion]\nscale = {:?}\npga = {:?}\nseed = {}\nlength = {:?}",
+        m.scale, m.synthetic.pga_g, m.synthetic.seed, m.synthetic.duration_s
+    );
+    if let Some(f) = &m.file {
+        let _ = writeln!(s, "file = {f:?}");
+    }
+    if let Some(d) = m.duration_s {
+        let _ = writeln!(s, "duration = {d:?}");
+    }
+    if let Some(d) = m.dt_s {
+        let _ = writeln!(s, "dt = {d:?}");
+    }
+    let units = match m.units {
+        super::motion::Units::G => "g",
+        super::motion::Units::MetresPerSecond2 => "m/s2",
+        super::motion::Units::CentimetresPerSecond2 => "cm/s2",
+    };
+    let _ = writeln!(s, "units = \"{units}\"");
+    s
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -354,5 +429,10 @@ mod tests {
             apply_text(&mut back, &impact_to_toml(&setup), "saved").unwrap();
             assert_eq!(back, setup, "{name}");
         }
+        let buildings: super::super::building_settings::BuildingSetup =
+            load_for("paper-buildings", "buildings").unwrap();
+        let mut back = super::super::building_settings::BuildingSetup::default();
+        apply_text(&mut back, &buildings_to_toml(&buildings), "saved").unwrap();
+        assert_eq!(back, buildings);
     }
 }
