@@ -347,11 +347,18 @@ pub fn buildings_to_toml(setup: &super::building_settings::BuildingSetup) -> Str
     use crate::model::building::SlabReading;
     use std::fmt::Write;
     let sc = &setup.scenario;
-    let mut s = String::from("name = \"saved building scene\"\nscene = \"buildings\"\n\n");
-    for (name, b) in [("left", &sc.left), ("right", &sc.right)] {
+    let mut s = format!(
+        "name = \"saved building scene\"\nscene = \"buildings\"\ngap = {:?}\n\n",
+        sc.gap_m
+    );
+    for (i, (name, b)) in [("left", &sc.left), ("right", &sc.right)]
+        .into_iter()
+        .enumerate()
+    {
+        let _ = writeln!(s, "[{name}]\nvelocity = {:?}", sc.initial_velocity_m_s[i]);
         let _ = writeln!(
             s,
-            "[{name}]\nmass = {:?}\nstiffness = {:?}\ndamping_ratio = {:?}\nheight = {:?}\nslab_length = {:?}\nslab_width = {:?}\nslab_thickness = {:?}\nyoungs_modulus = {:e}\n",
+            "mass = {:?}\nstiffness = {:?}\ndamping_ratio = {:?}\nheight = {:?}\nslab_length = {:?}\nslab_width = {:?}\nslab_thickness = {:?}\nyoungs_modulus = {:e}\n",
             b.mass_kg,
             b.stiffness_n_m,
             b.damping_ratio,
@@ -362,12 +369,7 @@ pub fn buildings_to_toml(setup: &super::building_settings::BuildingSetup) -> Str
             b.slab.youngs_modulus_pa
         );
     }
-    let _ = writeln!(
-        s,
-        "gap = {:?}\n\n[contact]\nmodel = \"{}\"",
-        sc.gap_m,
-        sc.contact.name()
-    );
+    let _ = writeln!(s, "[contact]\nmodel = \"{}\"", sc.contact.name());
     match sc.stiffness {
         Some(k) => writeln!(s, "stiffness = {k:e}"),
         None => writeln!(s, "stiffness = \"auto\""),
