@@ -4,9 +4,8 @@
 use crate::io::settings::ImpactSetup;
 use crate::model::impact::ImpactResult;
 use crate::model::scenario::Reading;
-use crate::render::bars::{BarsCallback, GpuBar, GpuHistory, GpuUniforms, view};
+use crate::render::bars::{GpuBar, GpuHistory, Viewport};
 use eframe::egui::{self, Color32, Pos2, Rect, Stroke};
-use eframe::egui_wgpu;
 use std::sync::Arc;
 
 /// A solve ready to draw: the result, its history on the GPU grid, cumulative impulse.
@@ -122,28 +121,15 @@ pub fn draw(ui: &mut egui::Ui, rect: Rect, solved: &Solved, t: f64) {
             _pad: 0.0,
         };
     }
-    let uniforms = GpuUniforms {
-        view: view(left as f32, right as f32, bottom, top),
-        time: t as f32,
-        bar_count: 2,
-        _pad: [0.0; 2],
-        bars,
-    };
-    ui.painter().add(egui_wgpu::Callback::new_paint_callback(
+    let vp = Viewport {
         rect,
-        BarsCallback {
-            uniforms,
-            history: solved.gpu.clone(),
-            version: solved.version,
-        },
-    ));
-
-    let to_screen = |x: f64, y: f32| {
-        Pos2::new(
-            rect.left() + ((x - left) / (right - left)) as f32 * rect.width(),
-            rect.bottom() - (y - bottom) / (top - bottom) * rect.height(),
-        )
+        left,
+        right,
+        bottom: bottom as f64,
+        top: top as f64,
     };
+    vp.paint_bars(ui, t, bars, solved.gpu.clone(), solved.version);
+    let to_screen = |x: f64, y: f32| vp.to_screen(x, y as f64);
     let painter = ui.painter_at(rect);
     let text = ui.visuals().text_color();
     let font = egui::FontId::proportional(13.0);

@@ -10,9 +10,8 @@ use crate::cli::buildings::load_motion;
 use crate::io::building_settings::BuildingSetup;
 use crate::model::building::{BuildingResult, BuildingScenario, ContactModel, SlabReading, solve};
 use crate::model::motion::{G, GroundMotion};
-use crate::render::bars::{BarsCallback, GpuBar, GpuHistory, GpuUniforms, view};
+use crate::render::bars::{GpuBar, GpuHistory, Viewport};
 use eframe::egui::{self, Color32, Pos2, Stroke};
-use eframe::egui_wgpu;
 use egui_plot::{Legend, Line, Plot, PlotBounds, VLine};
 use std::sync::Arc;
 use std::time::Duration;
@@ -523,27 +522,15 @@ fn draw_buildings(ui: &mut egui::Ui, rect: egui::Rect, s: &Solved, t: f64, exagg
             _pad: 0.0,
         };
     }
-    let uniforms = GpuUniforms {
-        view: view(left as f32, right as f32, bottom, top),
-        time: t as f32,
-        bar_count: 2,
-        _pad: [0.0; 2],
-        bars,
-    };
-    ui.painter().add(egui_wgpu::Callback::new_paint_callback(
+    let vp = Viewport {
         rect,
-        BarsCallback {
-            uniforms,
-            history: s.gpu.clone(),
-            version: s.version,
-        },
-    ));
-    let to_screen = |x: f64, y: f64| {
-        Pos2::new(
-            rect.left() + ((x - left) / (right - left)) as f32 * rect.width(),
-            rect.bottom() - ((y as f32 - bottom) / (top - bottom)) * rect.height(),
-        )
+        left,
+        right,
+        bottom: bottom as f64,
+        top: top as f64,
     };
+    vp.paint_bars(ui, t, bars, s.gpu.clone(), s.version);
+    let to_screen = |x: f64, y: f64| vp.to_screen(x, y);
     let painter = ui.painter_at(rect);
     let text = ui.visuals().text_color();
     let column = Stroke::new(

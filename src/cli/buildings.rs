@@ -2,7 +2,7 @@
 
 use super::building_report::{BuildingReport, summary};
 use crate::io::building_settings::{BUILDING_KEYS, BuildingSetup};
-use crate::io::preset::{self, EMBEDDED};
+use crate::io::preset;
 use crate::model::building::{BuildingScenario, ContactModel, solve};
 use crate::model::motion::GroundMotion;
 use anyhow::{Context, bail};
@@ -12,30 +12,14 @@ use std::path::PathBuf;
 
 #[derive(Args, Debug, Default)]
 pub struct BuildingArgs {
-    /// Preset name (a file stem in assets/presets/) or path to a TOML file [default: paper-buildings]
-    #[arg(long, value_name = "NAME-or-FILE")]
-    pub preset: Option<String>,
+    #[command(flatten)]
+    pub common: super::SceneArgs,
     /// Ground motion file: PEER .AT2 or text [default: a seeded synthetic record]
     #[arg(long, value_name = "FILE")]
     pub motion: Option<PathBuf>,
     /// Contact model: sears|linear|kelvin|hertz|hertzdamp|jankowski|stereo|none [default: the preset's]
     #[arg(long, value_name = "MODEL")]
     pub contact: Option<String>,
-    /// Override a setting, e.g. --set left.damping_ratio=0.02 (repeatable; see --list-keys)
-    #[arg(long = "set", value_name = "KEY=VALUE")]
-    pub set: Vec<String>,
-    /// Write the histories as CSV (`-` for standard output)
-    #[arg(long, value_name = "FILE")]
-    pub csv: Option<PathBuf>,
-    /// Print one JSON object instead of the summary
-    #[arg(long)]
-    pub json: bool,
-    /// List the keys --set accepts, and exit
-    #[arg(long)]
-    pub list_keys: bool,
-    /// List the shipped presets, and exit
-    #[arg(long)]
-    pub list_presets: bool,
 }
 
 /// Reads or generates the ground motion a setup asks for.
@@ -63,29 +47,20 @@ pub fn load_motion(setup: &BuildingSetup) -> anyhow::Result<GroundMotion> {
 }
 
 pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
-    if args.list_keys {
-        for (k, what) in BUILDING_KEYS {
-            writeln!(out, "{k:26} {what}")?;
-        }
-        return Ok(());
+    if args.common.list_keys {
+        return super::list(
+            out,
+            26,
+            BUILDING_KEYS.iter().map(|(k, w)| (*k, w.to_string())),
+        );
     }
-    if args.list_presets {
-        for (name, text) in EMBEDDED
-            .iter()
-            .filter(|(_, t)| preset::scene(t) == "buildings")
-        {
-            writeln!(
-                out,
-                "{name:16} {}",
-                preset::description(text).unwrap_or_default()
-            )?;
-        }
-        return Ok(());
+    if args.common.list_presets {
+        return super::list_presets(out, "buildings");
     }
-    let preset_name = args.preset.as_deref().unwrap_or("paper-buildings");
+    let preset_name = args.common.preset.as_deref().unwrap_or("paper-buildings");
     let mut setup: BuildingSetup =
         preset::load_for(preset_name, "buildings").map_err(|e| anyhow::anyhow!("preset {e}"))?;
-    for a in &args.set {
+    for a in &args.common.set {
         setup
             .apply_assignment(a)
             .map_err(|e| anyhow::anyhow!("--set {e}"))?;
@@ -106,22 +81,20 @@ pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         },
         &motion,
     )?;
-    if let Some(path) = &args.csv {
-        if path.as_os_str() == "-" {
-            crate::io::csv::write_building_history(out, &result)?;
-        } else {
-            let file = std::fs::File::create(path)
-                .with_context(|| format!("--csv: cannot create {}", path.display()))?;
-            let mut w = std::io::BufWriter::new(file);
-            crate::io::csv::write_building_history(&mut w, &result)
-                .and_then(|_| w.flush())
-                .with_context(|| format!("--csv: cannot write {}", path.display()))?;
-        }
+    if let Some(path) = &args.common.csv {
+        super::write_csv(out, path, |w| {
+            crate::io::csv::write_building_history(w, &result)
+        })?;
     }
-    if args.json {
+    if args.common.json {
         let report = BuildingReport::new(&setup, preset_name, &motion, &result, &baseline);
         writeln!(out, "{}", serde_json::to_string_pretty(&report)?)?;
-    } else if args.csv.as_ref().is_none_or(|p| p.as_os_str() != "-") {
+    } else if args
+        .common
+        .csv
+        .as_ref()
+        .is_none_or(|p| p.as_os_str() != "-")
+    {
         write!(
             out,
             "{}",

@@ -84,6 +84,72 @@ pub fn run(cli: Cli, out: &mut dyn std::io::Write) -> anyhow::Result<()> {
     }
 }
 
+/// Options every scene command takes.
+#[derive(clap::Args, Debug, Default)]
+pub struct SceneArgs {
+    /// Preset name (a file stem in assets/presets/) or path to a TOML file [default: the scene's]
+    #[arg(long, value_name = "NAME-or-FILE")]
+    pub preset: Option<String>,
+    /// Override a setting, e.g. --set bar2.length=5 (repeatable; see --list-keys)
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    pub set: Vec<String>,
+    /// Write the histories as CSV (`-` for standard output)
+    #[arg(long, value_name = "FILE")]
+    pub csv: Option<std::path::PathBuf>,
+    /// Print one JSON object instead of the summary
+    #[arg(long)]
+    pub json: bool,
+    /// List the keys --set accepts, and exit
+    #[arg(long)]
+    pub list_keys: bool,
+    /// List the shipped presets, and exit
+    #[arg(long)]
+    pub list_presets: bool,
+}
+
+/// Writes one `name  description` line per entry (the --list-keys and --list-presets output).
+pub(crate) fn list<'a>(
+    out: &mut dyn std::io::Write,
+    width: usize,
+    rows: impl IntoIterator<Item = (&'a str, String)>,
+) -> anyhow::Result<()> {
+    for (name, what) in rows {
+        writeln!(out, "{name:width$} {what}")?;
+    }
+    Ok(())
+}
+
+/// The shipped presets of one scene with their descriptions.
+pub(crate) fn list_presets(out: &mut dyn std::io::Write, scene: &str) -> anyhow::Result<()> {
+    use crate::io::preset::{EMBEDDED, description, scene as scene_of};
+    list(
+        out,
+        16,
+        EMBEDDED
+            .iter()
+            .filter(|(_, t)| scene_of(t) == scene)
+            .map(|(n, t)| (*n, description(t).unwrap_or_default())),
+    )
+}
+
+/// Writes CSV to a file, or to `out` for `-`, saying which path failed and why.
+pub(crate) fn write_csv(
+    out: &mut dyn std::io::Write,
+    path: &std::path::Path,
+    write: impl Fn(&mut dyn std::io::Write) -> std::io::Result<()>,
+) -> anyhow::Result<()> {
+    use anyhow::Context;
+    if path.as_os_str() == "-" {
+        return Ok(write(out)?);
+    }
+    let file = std::fs::File::create(path)
+        .with_context(|| format!("--csv: cannot create {}", path.display()))?;
+    let mut w = std::io::BufWriter::new(file);
+    write(&mut w)
+        .and_then(|_| std::io::Write::flush(&mut w))
+        .with_context(|| format!("--csv: cannot write {}", path.display()))
+}
+
 /// Whether an error is only a closed output pipe (`pounding ... | head`), which ends the
 /// program quietly like any Unix filter.
 pub fn is_broken_pipe(e: &anyhow::Error) -> bool {

@@ -255,3 +255,53 @@ pub fn view(left: f32, right: f32, bottom: f32, top: f32) -> [[f32; 4]; 4] {
     glam::camera::rh::proj::directx::orthographic(left, right, bottom, top, -1.0, 1.0)
         .to_cols_array_2d()
 }
+
+/// A world rectangle shown in a screen rectangle: where to paint the bars and where overlays go.
+pub struct Viewport {
+    pub rect: eframe::egui::Rect,
+    pub left: f64,
+    pub right: f64,
+    pub bottom: f64,
+    pub top: f64,
+}
+
+impl Viewport {
+    pub fn to_screen(&self, x: f64, y: f64) -> eframe::egui::Pos2 {
+        let r = self.rect;
+        eframe::egui::Pos2::new(
+            r.left() + ((x - self.left) / (self.right - self.left)) as f32 * r.width(),
+            r.bottom() - ((y - self.bottom) / (self.top - self.bottom)) as f32 * r.height(),
+        )
+    }
+
+    /// Queues the two bars at time `t` for the GPU.
+    pub fn paint_bars(
+        &self,
+        ui: &eframe::egui::Ui,
+        t: f64,
+        bars: [GpuBar; 2],
+        history: Arc<GpuHistory>,
+        version: u64,
+    ) {
+        let uniforms = GpuUniforms {
+            view: view(
+                self.left as f32,
+                self.right as f32,
+                self.bottom as f32,
+                self.top as f32,
+            ),
+            time: t as f32,
+            bar_count: 2,
+            _pad: [0.0; 2],
+            bars,
+        };
+        ui.painter().add(egui_wgpu::Callback::new_paint_callback(
+            self.rect,
+            BarsCallback {
+                uniforms,
+                history,
+                version,
+            },
+        ));
+    }
+}

@@ -70,22 +70,5 @@ pub fn field_energy_in_frame(
 
 /// Mechanical energy of a bar from its field (lab frame).
 pub fn field_energy(waves: &BarWaves, density: f64, youngs: f64, t: f64, n: usize) -> f64 {
-    let l = waves.length_m();
-    let h = l / n as f64;
-    let mut s = 0.0;
-    for k in 0..=n {
-        let w = if k == 0 || k == n {
-            1.0
-        } else if k % 2 == 1 {
-            4.0
-        } else {
-            2.0
-        };
-        let x = k as f64 * h;
-        let (v, sigma) = (waves.velocity_m_s(x, t), waves.stress_pa(x, t));
-        s += w
-            * (0.5 * density * waves.area_m2 * v * v
-                + 0.5 * waves.area_m2 * sigma * sigma / youngs);
-    }
-    s * h / 3.0
+    field_energy_in_frame(waves, density, youngs, t, n, 0.0)
 }

@@ -183,15 +183,13 @@ pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
             link / element
         ));
     }
-    if let Some(c) = contacts.last_mut()
-        && c.1.is_none()
-    {
-        c.2 = impulse - contact_j0;
-        warnings.push(format!(
-            "the contact was still on at the end of the simulated span (t = {:.4e} s)",
-            step as f64 * h
-        ));
-    }
+    super::close_open_contact(
+        &mut contacts,
+        impulse,
+        contact_j0,
+        step as f64 * h,
+        &mut warnings,
+    );
     // Energies at an integer time level: advance the velocities half a step from the springs.
     left.kick(0.5 * h);
     right.kick(0.5 * h);

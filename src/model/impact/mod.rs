@@ -216,6 +216,24 @@ pub(crate) struct Raw {
     pub refined_from_s: Option<f64>,
 }
 
+/// Closes a contact still open at the end of the run: its impulse so far, and a warning.
+pub(crate) fn close_open_contact(
+    contacts: &mut [(f64, Option<f64>, f64)],
+    impulse_ns: f64,
+    contact_start_impulse_ns: f64,
+    end_s: f64,
+    warnings: &mut Vec<String>,
+) {
+    if let Some(c) = contacts.last_mut()
+        && c.1.is_none()
+    {
+        c.2 = impulse_ns - contact_start_impulse_ns;
+        warnings.push(format!(
+            "the contact was still on at the end of the simulated span (t = {end_s:.4e} s)"
+        ));
+    }
+}
+
 /// Solve one impact with the chosen model.
 pub fn solve(model: ModelKind, scenario: &ImpactScenario) -> Result<ImpactResult, SolveError> {
     scenario.validate()?;

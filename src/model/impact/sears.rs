@@ -383,15 +383,13 @@ pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
             break;
         }
     }
-    if let Some(last) = contacts.last_mut()
-        && last.1.is_none()
-    {
-        last.2 = phi.last() - contact_phi0;
-        warnings.push(format!(
-            "the contact was still on at the end of the simulated span (t = {:.4e} s)",
-            n as f64 * h
-        ));
-    }
+    super::close_open_contact(
+        &mut contacts,
+        phi.last(),
+        contact_phi0,
+        n as f64 * h,
+        &mut warnings,
+    );
 
     let end_s = n as f64 * h;
     let time_s: Vec<f64> = (0..=n).map(|k| k as f64 * h).collect();

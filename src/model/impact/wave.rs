@@ -160,14 +160,7 @@ pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
         approach_m.push(delta);
     }
     let mut warnings = vec![];
-    if let Some(c) = contacts.last_mut()
-        && c.1.is_none()
-    {
-        c.2 = impulse - contact_j0;
-        warnings.push(format!(
-            "the contact was still on at the end of the simulated span (t = {end_s:.4e} s)"
-        ));
-    }
+    super::close_open_contact(&mut contacts, impulse, contact_j0, end_s, &mut warnings);
     let waves: [BarWaves; 2] = std::array::from_fn(|i| BarWaves {
         body_length_m: bars[i].length_m,
         zone_length_m: 0.0,
