@@ -88,17 +88,22 @@ proptest! {
             if model == ModelKind::Fe {
                 prop_assert!(b < 1e-2, "{}: balance {}", tag, b);
             } else if r.warnings.iter().any(|w| w.contains("was kept")) {
-                // The step could not be refined to the contact's time scale within the budget
-                // and the run says so: backward Euler there (first order by design); the
-                // energy error stays bounded.
-                prop_assert!(b < 1e-3, "{}: balance {} in an unresolved run", tag, b);
+                // The step could not be refined to the contact's time scale within the budget and
+                // the run says so. There the scheme is backward Euler: it may lose a little
+                // energy, never create it, and the loss shrinks as the step does.
+                prop_assert!(r.energy.balance_error < 1e-4, "{}: energy created ({}) in an unresolved run", tag, r.energy.balance_error);
+                let mut fine = s;
+                fine.solver.dt_s = r.stats.dt_s / 16.0;
+                let bf = solve(model, &fine).map_err(|e| TestCaseError::fail(e.to_string()))?.energy.balance_error.abs();
+                prop_assert!(bf < (b / 2.0).max(1e-4), "{}: balance {} at dt, {} at dt/16 (unresolved)", tag, b, bf);
             } else if b > 1e-5 {
                 // Converging: 16 times smaller at a 64 times finer step (a coarse run can sit
                 // before the asymptotic range, where one halving may even raise the error).
                 let mut fine = s;
                 fine.solver.dt_s = r.stats.dt_s / 64.0;
                 let bf = solve(model, &fine).map_err(|e| TestCaseError::fail(e.to_string()))?.energy.balance_error.abs();
-                prop_assert!(bf < b / 16.0, "{}: balance {} at dt, {} at dt/64", tag, b, bf);
+                // (A coarse run can also be lucky: its error small before the asymptotic range.)
+                prop_assert!(bf < (b / 16.0).max(1e-5), "{}: balance {} at dt, {} at dt/64", tag, b, bf);
             }
         }
     }
