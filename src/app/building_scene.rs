@@ -392,7 +392,7 @@ impl BuildingScene {
                 p.vline(VLine::new("t", t));
             });
         let zoom = self.zoom.take();
-        Plot::new("b-force")
+        let force_plot = Plot::new("b-force")
             .height(h)
             .legend(Legend::default())
             .x_axis_label("time [s]")
@@ -407,8 +407,24 @@ impl BuildingScene {
                     ));
                 }
             });
-        ui.label("impacts (click one to zoom on it):");
+        ui.label("impacts (click one here or in the force plot to zoom on it):");
         let mut clicked = None;
+        // A click in the force plot picks the impact nearest in time.
+        if force_plot.response.clicked()
+            && let Some(pos) = force_plot.response.interact_pointer_pos()
+        {
+            let at = force_plot.transform.value_from_position(pos).x;
+            clicked = r
+                .impacts
+                .iter()
+                .enumerate()
+                .min_by(|a, b| {
+                    (a.1.start_s - at)
+                        .abs()
+                        .total_cmp(&(b.1.start_s - at).abs())
+                })
+                .map(|(i, _)| i);
+        }
         egui::Grid::new("impacts")
             .striped(true)
             .num_columns(6)

@@ -1,13 +1,13 @@
 //! Plot series helpers.
 
-/// At most about 4000 points per line (min and max per bucket), so that drawing a plot costs the
+/// At most about 20 000 points per line (min and max per bucket), so that drawing a plot costs the
 /// same whatever the record's length.
 pub fn decimate(time: &[f64], y: &[f64], scale: f64) -> Vec<[f64; 2]> {
     let n = time.len().min(y.len());
-    if n <= 4000 {
+    if n <= 20_000 {
         return (0..n).map(|i| [time[i], y[i] * scale]).collect();
     }
-    let buckets = 2000;
+    let buckets = 10_000;
     let mut out = Vec::with_capacity(2 * buckets);
     for b in 0..buckets {
         let (lo, hi) = (
