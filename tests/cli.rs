@@ -42,6 +42,8 @@ fn the_window_starts_draws_and_closes_on_request() {
     // message, never a panic.
     let has_display =
         std::env::var_os("DISPLAY").is_some() || std::env::var_os("WAYLAND_DISPLAY").is_some();
+    // CI provides a virtual display and a software adapter: there the window must really open.
+    let has_display = has_display || std::env::var_os("CI").is_some();
     let o = pounding(&[
         "window",
         "--preset",
