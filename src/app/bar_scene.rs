@@ -8,6 +8,7 @@ use super::playback::Playback;
 use super::worker::Worker;
 use crate::io::preset;
 use crate::io::settings::ImpactSetup;
+use crate::model::impact::estimate::{ErrorEstimate, estimate_error};
 use crate::model::impact::{ImpactResult, ModelKind, solve};
 use crate::model::scenario::Reading;
 use eframe::egui::{self, Color32};
@@ -24,7 +25,10 @@ pub const COMPARED: [ModelKind; 5] = [
 ];
 
 type Job = (ImpactSetup, bool);
-type Output = Vec<(ModelKind, Result<ImpactResult, String>)>;
+type Output = (
+    Vec<(ModelKind, Result<ImpactResult, String>)>,
+    Option<ErrorEstimate>,
+);
 
 pub struct BarScene {
     pub setup: ImpactSetup,
@@ -33,6 +37,7 @@ pub struct BarScene {
     worker: Worker<Job, Output>,
     solved: Option<Solved>,
     peers: Vec<(ModelKind, ImpactResult)>,
+    estimate: Option<ErrorEstimate>,
     shown: [bool; 5],
     pub playback: Playback,
     pub solve_time: Duration,
@@ -47,10 +52,16 @@ fn run_job((setup, compare): Job) -> Output {
     } else {
         vec![setup.model]
     };
-    models
+    let results: Vec<_> = models
         .into_iter()
         .map(|m| (m, solve(m, &setup.scenario).map_err(|e| e.to_string())))
-        .collect()
+        .collect();
+    // The single-model scene shows its result's own error estimate (one more, coarser solve).
+    let estimate = match (&results[..], compare) {
+        ([(m, Ok(r))], false) => estimate_error(*m, &setup.scenario, r).ok(),
+        _ => None,
+    };
+    (results, estimate)
 }
 
 impl BarScene {
@@ -63,6 +74,7 @@ impl BarScene {
             worker: Worker::new(run_job, move || waker.request_repaint()),
             solved: None,
             peers: vec![],
+            estimate: None,
             shown: [true; 5],
             playback: Playback::default(),
             solve_time: Duration::ZERO,
@@ -87,7 +99,9 @@ impl BarScene {
         self.latency = latency;
         self.error = None;
         self.peers.clear();
-        for (model, result) in done.output {
+        let (results, estimate) = done.output;
+        self.estimate = estimate;
+        for (model, result) in results {
             match result {
                 Ok(r) => {
                     let lead = if self.compare {
@@ -171,7 +185,7 @@ impl BarScene {
         }
         self.plots_ui(ui);
         if !self.compare {
-            readouts_ui(ui, &solved.result, self.solve_time);
+            readouts_ui(ui, &solved.result, self.solve_time, self.estimate.as_ref());
         } else {
             compare_table(ui, &self.peers);
         }
@@ -277,7 +291,12 @@ fn draw_lumped(ui: &mut egui::Ui, rect: egui::Rect, r: &ImpactResult, t: f64) {
     );
 }
 
-fn readouts_ui(ui: &mut egui::Ui, r: &ImpactResult, solve_time: Duration) {
+fn readouts_ui(
+    ui: &mut egui::Ui,
+    r: &ImpactResult,
+    solve_time: Duration,
+    estimate: Option<&ErrorEstimate>,
+) {
     egui::Grid::new("readouts")
         .num_columns(4)
         .spacing([18.0, 4.0])
@@ -335,6 +354,12 @@ fn readouts_ui(ui: &mut egui::Ui, r: &ImpactResult, solve_time: Duration) {
                 r.stats.dt_s,
                 solve_time.as_secs_f64() * 1e3
             ));
+            ui.label("error estimate").on_hover_text("Step doubling: the same impact with twice the step (half the mesh for FE), Richardson's |q(h) - q(2h)| / 3");
+            ui.label(match estimate {
+                None => "-".to_string(),
+                Some(e) if e.method == "exact" => "exact".to_string(),
+                Some(e) => format!("peak {:.1e}, duration {:.1e}, e {:.1e}", e.peak_force, e.contact_duration, e.restitution),
+            });
             ui.end_row();
         });
     for w in &r.warnings {

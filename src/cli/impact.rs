@@ -45,13 +45,15 @@ pub fn run(args: &ImpactArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         };
     }
     let result = solve(setup.model, &setup.scenario)?;
+    let estimate =
+        crate::model::impact::estimate::estimate_error(setup.model, &setup.scenario, &result).ok();
     if let Some(path) = &args.common.csv {
         super::write_csv(out, path, |w| {
             crate::io::csv::write_impact_history(w, &result)
         })?;
     }
     if args.common.json {
-        let report = ImpactReport::new(&setup, preset_name, &result);
+        let report = ImpactReport::new(&setup, preset_name, &result, estimate.as_ref());
         writeln!(out, "{}", serde_json::to_string_pretty(&report)?)?;
     } else if args
         .common
@@ -59,7 +61,11 @@ pub fn run(args: &ImpactArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         .as_ref()
         .is_none_or(|p| p.as_os_str() != "-")
     {
-        write!(out, "{}", summary(&setup, preset_name, &result))?;
+        write!(
+            out,
+            "{}",
+            summary(&setup, preset_name, &result, estimate.as_ref())
+        )?;
     }
     Ok(())
 }

@@ -2,6 +2,7 @@
 
 use crate::io::settings::ImpactSetup;
 use crate::model::bar::{Bar, EndShape};
+use crate::model::impact::estimate::ErrorEstimate;
 use crate::model::impact::{ImpactResult, ModelKind};
 use serde::Serialize;
 use std::fmt::Write;
@@ -22,6 +23,16 @@ pub struct EnergyJson {
     pub vibration_j: f64,
     pub dissipated_j: f64,
     pub contact_j: f64,
+}
+
+#[derive(Serialize)]
+pub struct ErrorJson {
+    pub method: &'static str,
+    pub peak_force_rel: f64,
+    pub contact_duration_rel: f64,
+    pub impulse_rel: f64,
+    pub restitution_abs: f64,
+    pub estimate_time_s: f64,
 }
 
 #[derive(Serialize)]
@@ -60,11 +71,18 @@ pub struct ImpactReport {
     pub refined_from_dt_s: Option<f64>,
     pub simulated_until_s: f64,
     pub solve_time_s: f64,
+    /// Step-doubling estimate of the numerical error (null when it could not be made).
+    pub error_estimate: Option<ErrorJson>,
     pub warnings: Vec<String>,
 }
 
 impl ImpactReport {
-    pub fn new(setup: &ImpactSetup, preset: &str, r: &ImpactResult) -> Self {
+    pub fn new(
+        setup: &ImpactSetup,
+        preset: &str,
+        r: &ImpactResult,
+        est: Option<&ErrorEstimate>,
+    ) -> Self {
         ImpactReport {
             preset: preset.to_string(),
             model: setup.model.name(),
@@ -111,6 +129,14 @@ impl ImpactReport {
             refined_from_dt_s: r.stats.refined_from_s,
             simulated_until_s: r.end_s,
             solve_time_s: r.stats.wall_time_s,
+            error_estimate: est.map(|e| ErrorJson {
+                method: e.method,
+                peak_force_rel: e.peak_force,
+                contact_duration_rel: e.contact_duration,
+                impulse_rel: e.impulse,
+                restitution_abs: e.restitution,
+                estimate_time_s: e.wall_time_s,
+            }),
             warnings: r.warnings.clone(),
         }
     }
@@ -135,7 +161,12 @@ fn bar_line(name: &str, b: &Bar) -> String {
 }
 
 /// The human-readable summary.
-pub fn summary(setup: &ImpactSetup, preset: &str, r: &ImpactResult) -> String {
+pub fn summary(
+    setup: &ImpactSetup,
+    preset: &str,
+    r: &ImpactResult,
+    est: Option<&ErrorEstimate>,
+) -> String {
     let sc = &setup.scenario;
     let mut s = String::new();
     let reading = if setup.model == ModelKind::Sears {
@@ -233,6 +264,22 @@ pub fn summary(setup: &ImpactSetup, preset: &str, r: &ImpactResult) -> String {
         r.stats.dt_s,
         r.stats.wall_time_s * 1e3
     );
+    if let Some(e) = est {
+        let _ = if e.method == "exact" {
+            writeln!(s, "  error estimate      exact (no step)")
+        } else {
+            writeln!(
+                s,
+                "  error estimate      peak {:.1e}, duration {:.1e}, impulse {:.1e} (relative), e {:.1e} (by {} doubling, {:.3} ms)",
+                e.peak_force,
+                e.contact_duration,
+                e.impulse,
+                e.restitution,
+                e.method,
+                e.wall_time_s * 1e3
+            )
+        };
+    }
     if !r.warnings.is_empty() {
         let _ = writeln!(s, "warnings");
         for w in &r.warnings {

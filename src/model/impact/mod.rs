@@ -3,6 +3,7 @@
 //! Each model produces its raw histories and contact events; [`finish`] turns them into the
 //! quantities every front end reports (impulse, rigid-body velocities, restitution, energy split).
 
+pub mod estimate;
 pub mod fe;
 pub mod lumped;
 pub mod sears;
