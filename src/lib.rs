@@ -6,6 +6,7 @@
 #[cfg(feature = "gui")]
 pub mod app;
 pub mod cli;
+pub mod export;
 pub mod io;
 pub mod model;
 #[cfg(feature = "gui")]

@@ -335,3 +335,45 @@ fn buildings_csv_has_a_header_with_units() {
     assert!(out.starts_with("time_s,ground_accel_m_s2,u_left_m,u_right_m,"));
     assert!(out.lines().count() > 100);
 }
+
+#[test]
+fn accuracy_reports_a_ladder_with_second_order_and_writes_the_work_precision_plot() {
+    let dir = std::env::temp_dir().join(format!("pounding-acc-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (csv, svg, png) = (dir.join("acc.csv"), dir.join("wp.svg"), dir.join("wp.png"));
+    let o = pounding(&[
+        "accuracy",
+        "--csv",
+        csv.to_str().unwrap(),
+        "--plot",
+        svg.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let table = std::fs::read_to_string(&csv).unwrap();
+    assert!(table.starts_with("model,resolution,steps,wall_time_s,peak_force_error"));
+    // The Sears paper rows: each halving of the step divides the L2 error by about 4.
+    let orders: Vec<f64> = table
+        .lines()
+        .filter(|l| l.starts_with("sears paper"))
+        .filter_map(|l| l.split(',').nth(8).and_then(|x| x.parse().ok()))
+        .collect();
+    assert!(
+        orders.len() >= 4 && orders.iter().all(|p| (*p - 2.0).abs() < 0.2),
+        "{orders:?}"
+    );
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert!(
+        text.contains("<svg") && text.contains("Work-precision") && text.contains("sears paper")
+    );
+    let o = pounding(&["accuracy", "--plot", png.to_str().unwrap(), "--json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let bytes = std::fs::read(&png).unwrap();
+    assert!(bytes.starts_with(&[0x89, b'P', b'N', b'G']) && bytes.len() > 10_000);
+    let err = stderr(&pounding(&[
+        "accuracy",
+        "--plot",
+        dir.join("wp.gif").to_str().unwrap(),
+    ]));
+    assert!(err.contains(".svg or .png"), "{err}");
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -201,3 +201,30 @@ fn a_step_too_coarse_for_the_contact_is_refined_and_reported() {
     assert!(r.stats.dt_s < 0.2e-6);
     assert!(r.warnings.iter().any(|w| w.contains("refined to")));
 }
+
+#[test]
+fn each_results_error_estimate_tracks_its_true_error() {
+    use pounding::model::impact::estimate::estimate_error;
+    for reading in Reading::ALL {
+        let sc = ImpactScenario {
+            reading,
+            ..Default::default()
+        };
+        let r = run(ModelKind::Sears, &sc);
+        let est = estimate_error(ModelKind::Sears, &sc, &r).unwrap();
+        let reference = sears_at(reading, 1e-6 / 64.0);
+        let truth = rel(r.peak_force_n.unwrap(), reference.peak_force_n.unwrap());
+        let ratio = est.peak_force / truth;
+        eprintln!(
+            "{:10} peak force: estimated {:.2e}, true {truth:.2e}",
+            reading.name(),
+            est.peak_force
+        );
+        assert!(
+            ratio > 0.3 && ratio < 3.0,
+            "{}: estimate {} against {truth}",
+            reading.name(),
+            est.peak_force
+        );
+    }
+}

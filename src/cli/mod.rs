@@ -1,5 +1,6 @@
 //! The command-line front end: `pounding impact ...`.
 
+pub mod accuracy;
 pub mod building_report;
 pub mod buildings;
 pub mod impact;
@@ -24,6 +25,9 @@ pub enum Command {
     Impact(impact::ImpactArgs),
     /// Two buildings under a ground motion, pounding (the paper's Section 4 when given nothing).
     Buildings(buildings::BuildingArgs),
+    /// Error against run time: every model on a ladder of steps (FE: meshes) against a much finer
+    /// solve, with the observed order; a table, CSV and a work-precision plot.
+    Accuracy(accuracy::AccuracyArgs),
     /// Open the explorer window (what `pounding` with no command does).
     #[cfg(feature = "gui")]
     Window(WindowArgs),
@@ -67,6 +71,7 @@ pub fn run(cli: Cli, out: &mut dyn std::io::Write) -> anyhow::Result<()> {
     match cli.command {
         Some(Command::Impact(args)) => impact::run(&args, out),
         Some(Command::Buildings(args)) => buildings::run(&args, out),
+        Some(Command::Accuracy(args)) => accuracy::run(&args, out),
         #[cfg(feature = "gui")]
         Some(Command::Window(args)) => window(&args),
         #[cfg(feature = "gui")]

@@ -217,6 +217,46 @@ pub(crate) struct Raw {
     pub refined_from_s: Option<f64>,
 }
 
+/// The box the stability suite (tests/stability.rs) covers; a run outside it says so.
+pub const VALIDATED: &str = "contact stiffness 1e4 to 1e16, approach velocity 1e-6 to 1e3 m/s, length ratio up to 1e4, zone scale 1e-4 to 10, added mass up to 1000 times a bar's own";
+
+/// Warnings for each input outside the validated box.
+pub fn outside_validated_range(sc: &ImpactScenario) -> Vec<String> {
+    let mut out = vec![];
+    let mut flag = |what: String| {
+        out.push(format!(
+            "outside the validated range: {what} (validated: {VALIDATED})"
+        ))
+    };
+    if let Ok(law) = sc.contact_law()
+        && !(1e4..=1e16).contains(&law.stiffness)
+    {
+        flag(format!("contact stiffness {:.3e}", law.stiffness));
+    }
+    let w = sc.approach_velocity_m_s();
+    if w > 0.0 && !(1e-6..=1e3).contains(&w) {
+        flag(format!("approach velocity {w:e} m/s"));
+    }
+    let (l1, l2) = (sc.bar1.length_m, sc.bar2.length_m);
+    if l1.max(l2) / l1.min(l2) > 1e4 {
+        flag(format!("length ratio {:.3e}", l1.max(l2) / l1.min(l2)));
+    }
+    if !(1e-4..=10.0).contains(&sc.contact.zone_scale) {
+        flag(format!("zone scale {}", sc.contact.zone_scale));
+    }
+    for (name, b) in [("bar1", &sc.bar1), ("bar2", &sc.bar2)] {
+        let own = b.material.density_kg_m3 * b.area_m2() * b.length_m;
+        if b.added_mass_kg > 1000.0 * own {
+            flag(format!(
+                "{name} added mass {:.3e} kg, {:.0} times its own",
+                b.added_mass_kg,
+                b.added_mass_kg / own
+            ));
+        }
+    }
+    out
+}
+
 /// Closes a contact still open at the end of the run: its impulse so far, and a warning.
 pub(crate) fn close_open_contact(
     contacts: &mut [(f64, Option<f64>, f64)],
@@ -254,6 +294,7 @@ pub fn solve(model: ModelKind, scenario: &ImpactScenario) -> Result<ImpactResult
         }
     };
     let wall = start.elapsed().as_secs_f64();
+    raw.warnings.extend(outside_validated_range(scenario));
     if w <= 0.0 {
         raw.warnings.push(format!(
             "the bars are not approaching (v1 - v2 = {w} m/s <= 0): no impact; give bar1.velocity > bar2.velocity"

@@ -49,7 +49,9 @@ pub(crate) fn choose_step(
 ) -> StepChoice {
     let dt = sc.solver.dt_s;
     let resolve = scale.resolve_s;
-    if !(resolve.is_finite() && resolve > 0.0) || dt <= resolve {
+    // At least two steps per time scale (one step per time scale left energy errors of 6e-3 on
+    // a short bar ringing through its contact; two, 2e-4); a refined run gets four.
+    if !(resolve.is_finite() && resolve > 0.0) || dt <= 0.5 * resolve {
         return StepChoice {
             dt_s: dt,
             refined_from_s: None,

@@ -1,0 +1,3 @@
+//! Figures for lectures and papers: PNG and SVG plots with axes, units, legend and title.
+
+pub mod plot;

@@ -1,0 +1,202 @@
+//! A line plot written as SVG or PNG (chosen by the file's extension), with plotters. Text goes
+//! through ab_glyph with a bundled font, so no system font configuration is needed.
+
+use plotters::prelude::*;
+use std::path::Path;
+use std::sync::Once;
+
+/// One series: its legend name and points.
+pub struct Series {
+    pub name: String,
+    pub points: Vec<(f64, f64)>,
+}
+
+pub struct LinePlot {
+    pub title: String,
+    pub x_label: String,
+    pub y_label: String,
+    pub log_x: bool,
+    pub log_y: bool,
+    pub series: Vec<Series>,
+    /// Pixel size.
+    pub size: (u32, u32),
+}
+
+static FONT: Once = Once::new();
+
+fn register_font() {
+    FONT.call_once(|| {
+        // The font egui ships (Ubuntu Light, Ubuntu Font Licence), registered for plotters.
+        let _ = plotters::style::register_font(
+            "sans-serif",
+            FontStyle::Normal,
+            epaint_default_fonts::UBUNTU_LIGHT,
+        );
+    });
+}
+
+const PALETTE: [RGBColor; 8] = [
+    RGBColor(31, 119, 180),
+    RGBColor(214, 39, 40),
+    RGBColor(44, 160, 44),
+    RGBColor(255, 127, 14),
+    RGBColor(148, 103, 189),
+    RGBColor(140, 86, 75),
+    RGBColor(227, 119, 194),
+    RGBColor(23, 190, 207),
+];
+
+impl LinePlot {
+    /// Writes the plot; the extension picks the format (`.svg` or `.png`).
+    pub fn write(&self, path: &Path) -> anyhow::Result<()> {
+        register_font();
+        let ext = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .unwrap_or("")
+            .to_ascii_lowercase();
+        match ext.as_str() {
+            "svg" => self.draw(SVGBackend::new(path, self.size).into_drawing_area()),
+            "png" => self.write_png(path),
+            _ => anyhow::bail!(
+                "{}: the plot's extension must be .svg or .png",
+                path.display()
+            ),
+        }
+        .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))
+    }
+
+    /// PNG through a pixel buffer and the png crate (plotters' own encoder brings a second
+    /// image crate along).
+    fn write_png(
+        &self,
+        path: &Path,
+    ) -> Result<(), Box<dyn std::error::Error + Send + Sync + 'static>> {
+        let (w, h) = self.size;
+        let mut rgb = vec![255u8; (w * h * 3) as usize];
+        self.draw(BitMapBackend::with_buffer(&mut rgb, self.size).into_drawing_area())?;
+        let file = std::io::BufWriter::new(std::fs::File::create(path)?);
+        let mut encoder = png::Encoder::new(file, w, h);
+        encoder.set_color(png::ColorType::Rgb);
+        encoder.set_depth(png::BitDepth::Eight);
+        encoder.write_header()?.write_image_data(&rgb)?;
+        Ok(())
+    }
+
+    fn range(&self, log: bool, pick: impl Fn(&(f64, f64)) -> f64) -> (f64, f64) {
+        let values = self
+            .series
+            .iter()
+            .flat_map(|s| s.points.iter().map(&pick))
+            .filter(|v| v.is_finite() && (!log || *v > 0.0));
+        let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+            (a.min(v), b.max(v))
+        });
+        if !lo.is_finite() {
+            return if log { (1e-12, 1.0) } else { (0.0, 1.0) };
+        }
+        if log {
+            (lo / 1.5, hi * 1.5)
+        } else {
+            let pad = 0.05 * (hi - lo).max(hi.abs().max(1e-300) * 1e-9);
+            (lo - pad, hi + pad)
+        }
+    }
+
+    fn draw<DB: DrawingBackend>(
+        &self,
+        area: DrawingArea<DB, plotters::coord::Shift>,
+    ) -> Result<(), Box<dyn std::error::Error + Send + Sync + 'static>>
+    where
+        DB::ErrorType: 'static,
+    {
+        area.fill(&WHITE).map_err(|e| e.to_string())?;
+        let (x0, x1) = self.range(self.log_x, |p| p.0);
+        let (y0, y1) = self.range(self.log_y, |p| p.1);
+        let mut builder = ChartBuilder::on(&area);
+        builder
+            .caption(&self.title, ("sans-serif", 22))
+            .margin(14)
+            .x_label_area_size(44)
+            .y_label_area_size(70);
+        macro_rules! finish {
+            ($chart:expr) => {{
+                let mut chart = $chart;
+                let tick = |log: bool| {
+                    move |v: &f64| {
+                        if log {
+                            format!("{v:.0e}")
+                        } else {
+                            format!("{}", (v * 1e6).round() / 1e6)
+                        }
+                    }
+                };
+                chart
+                    .configure_mesh()
+                    .x_desc(self.x_label.as_str())
+                    .y_desc(self.y_label.as_str())
+                    .x_label_formatter(&tick(self.log_x))
+                    .y_label_formatter(&tick(self.log_y))
+                    .label_style(("sans-serif", 14))
+                    .axis_desc_style(("sans-serif", 16))
+                    .draw()
+                    .map_err(|e| e.to_string())?;
+                for (i, s) in self.series.iter().enumerate() {
+                    let colour = PALETTE[i % PALETTE.len()];
+                    let pts: Vec<(f64, f64)> = s
+                        .points
+                        .iter()
+                        .copied()
+                        .filter(|(x, y)| {
+                            x.is_finite()
+                                && y.is_finite()
+                                && (!self.log_x || *x > 0.0)
+                                && (!self.log_y || *y > 0.0)
+                        })
+                        .collect();
+                    chart
+                        .draw_series(LineSeries::new(pts.clone(), colour.stroke_width(2)))
+                        .map_err(|e| e.to_string())?
+                        .label(s.name.as_str())
+                        .legend(move |(x, y)| {
+                            PathElement::new(vec![(x, y), (x + 18, y)], colour.stroke_width(2))
+                        });
+                    chart
+                        .draw_series(pts.iter().map(|&p| Circle::new(p, 3, colour.filled())))
+                        .map_err(|e| e.to_string())?;
+                }
+                chart
+                    .configure_series_labels()
+                    .background_style(WHITE.mix(0.85))
+                    .border_style(BLACK)
+                    .label_font(("sans-serif", 14))
+                    .draw()
+                    .map_err(|e| e.to_string())?;
+            }};
+        }
+        match (self.log_x, self.log_y) {
+            (true, true) => finish!(
+                builder
+                    .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
+                    .map_err(|e| e.to_string())?
+            ),
+            (true, false) => finish!(
+                builder
+                    .build_cartesian_2d((x0..x1).log_scale(), y0..y1)
+                    .map_err(|e| e.to_string())?
+            ),
+            (false, true) => finish!(
+                builder
+                    .build_cartesian_2d(x0..x1, (y0..y1).log_scale())
+                    .map_err(|e| e.to_string())?
+            ),
+            (false, false) => finish!(
+                builder
+                    .build_cartesian_2d(x0..x1, y0..y1)
+                    .map_err(|e| e.to_string())?
+            ),
+        }
+        area.present().map_err(|e| e.to_string())?;
+        Ok(())
+    }
+}
