@@ -8,7 +8,10 @@ use super::series::decimate;
 use super::worker::Worker;
 use crate::cli::buildings::load_motion;
 use crate::io::building_settings::BuildingSetup;
-use crate::model::building::{BuildingResult, BuildingScenario, ContactModel, SlabReading, solve};
+use crate::model::building::{
+    BuildingErrorEstimate, BuildingResult, BuildingScenario, ContactModel, SlabReading,
+    estimate_error, solve,
+};
 use crate::model::motion::{G, GroundMotion};
 use crate::render::bars::{GpuBar, GpuHistory, Viewport};
 use eframe::egui::{self, Color32, Pos2, Stroke};
@@ -16,7 +19,15 @@ use egui_plot::{Legend, Line, Plot, PlotBounds, VLine};
 use std::sync::Arc;
 use std::time::Duration;
 
-type Output = Result<(GroundMotion, BuildingResult, BuildingResult), String>;
+type Output = Result<
+    (
+        GroundMotion,
+        BuildingResult,
+        BuildingResult,
+        Option<BuildingErrorEstimate>,
+    ),
+    String,
+>;
 
 struct Solved {
     setup: BuildingSetup,
@@ -24,6 +35,7 @@ struct Solved {
     result: BuildingResult,
     baseline: BuildingResult,
     ground_displacement: Vec<f64>,
+    estimate: Option<BuildingErrorEstimate>,
     gpu: Arc<GpuHistory>,
     version: u64,
 }
@@ -54,7 +66,8 @@ fn run_job(setup: BuildingSetup) -> Output {
         &motion,
     )
     .map_err(|e| e.to_string())?;
-    Ok((motion, result, baseline))
+    let estimate = estimate_error(&setup.scenario, &motion, &result).ok();
+    Ok((motion, result, baseline, estimate))
 }
 
 /// Ground displacement by integrating the record twice (trapezoid; no baseline correction).
@@ -156,7 +169,7 @@ impl BuildingScene {
         self.solve_time = done.elapsed;
         self.latency = latency;
         match done.output {
-            Ok((motion, result, baseline)) => {
+            Ok((motion, result, baseline, estimate)) => {
                 self.error = None;
                 self.version += 1;
                 self.playback.t_max = motion.duration_s();
@@ -165,6 +178,7 @@ impl BuildingScene {
                 self.solved = Some(Solved {
                     setup: self.setup.clone(),
                     ground_displacement: ground_displacement(&motion),
+                    estimate,
                     motion,
                     result,
                     baseline,
@@ -360,6 +374,12 @@ impl BuildingScene {
             s.baseline.peak_displacement_m[1] * 1e3,
             self.solve_time.as_secs_f64() * 1e3
         ));
+        if let Some(e) = &s.estimate {
+            ui.label(format!(
+                "error estimate (step doubling): max force {:.1e}, peak displacement {:.1e} (relative), impact count {:+} with twice the step",
+                e.max_force, e.peak_displacement, e.impact_count_change
+            ));
+        }
         let t = self.playback.t;
         let h = 170.0;
         let pts =

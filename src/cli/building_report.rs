@@ -1,7 +1,7 @@
 //! What `pounding buildings` prints: a readable summary and a JSON report.
 
 use crate::io::building_settings::BuildingSetup;
-use crate::model::building::{BuildingResult, ContactModel};
+use crate::model::building::{BuildingErrorEstimate, BuildingResult, ContactModel};
 use crate::model::motion::{G, GroundMotion};
 use serde::Serialize;
 use std::fmt::Write;
@@ -71,7 +71,18 @@ pub struct BuildingReport {
     pub fine_step_s: f64,
     pub coarse_step_s: f64,
     pub solve_time_s: f64,
+    /// Step-doubling estimate: relative errors of the max force and the peak displacements, and
+    /// the change of the impact count with twice the step.
+    pub error_estimate: Option<BuildingErrorJson>,
     pub warnings: Vec<String>,
+}
+
+#[derive(Serialize)]
+pub struct BuildingErrorJson {
+    pub max_force_rel: f64,
+    pub peak_displacement_rel: f64,
+    pub impact_count_change: i64,
+    pub estimate_time_s: f64,
 }
 
 fn balance_error(r: &BuildingResult) -> f64 {
@@ -91,6 +102,7 @@ impl BuildingReport {
         motion: &GroundMotion,
         r: &BuildingResult,
         baseline: &BuildingResult,
+        est: Option<&BuildingErrorEstimate>,
     ) -> Self {
         let s = motion.stats();
         let strongest = r
@@ -158,6 +170,12 @@ impl BuildingReport {
             fine_step_s: r.stats.fine_step_s,
             coarse_step_s: r.stats.coarse_step_s,
             solve_time_s: r.stats.wall_time_s,
+            error_estimate: est.map(|e| BuildingErrorJson {
+                max_force_rel: e.max_force,
+                peak_displacement_rel: e.peak_displacement,
+                impact_count_change: e.impact_count_change,
+                estimate_time_s: e.wall_time_s,
+            }),
             warnings: r.warnings.clone(),
         }
     }
@@ -169,6 +187,7 @@ pub fn summary(
     motion: &GroundMotion,
     r: &BuildingResult,
     baseline: &BuildingResult,
+    est: Option<&BuildingErrorEstimate>,
 ) -> String {
     let sc = &setup.scenario;
     let s = motion.stats();
@@ -287,6 +306,16 @@ pub fn summary(
         r.stats.coarse_step_s,
         1e3 * r.stats.wall_time_s
     );
+    if let Some(e) = est {
+        let _ = writeln!(
+            o,
+            "  error estimate      max force {:.1e}, peak displacement {:.1e} (relative); impact count {:+} with twice the step ({:.2} ms)",
+            e.max_force,
+            e.peak_displacement,
+            e.impact_count_change,
+            1e3 * e.wall_time_s
+        );
+    }
     if !r.impacts.is_empty() {
         let _ = writeln!(
             o,

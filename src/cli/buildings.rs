@@ -74,6 +74,7 @@ pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     let motion = load_motion(&setup)?;
     let result = solve(&setup.scenario, &motion)?;
+    let estimate = crate::model::building::estimate_error(&setup.scenario, &motion, &result).ok();
     let baseline = solve(
         &BuildingScenario {
             contact: ContactModel::None,
@@ -87,7 +88,14 @@ pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         })?;
     }
     if args.common.json {
-        let report = BuildingReport::new(&setup, preset_name, &motion, &result, &baseline);
+        let report = BuildingReport::new(
+            &setup,
+            preset_name,
+            &motion,
+            &result,
+            &baseline,
+            estimate.as_ref(),
+        );
         writeln!(out, "{}", serde_json::to_string_pretty(&report)?)?;
     } else if args
         .common
@@ -98,7 +106,14 @@ pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         write!(
             out,
             "{}",
-            summary(&setup, preset_name, &motion, &result, &baseline)
+            summary(
+                &setup,
+                preset_name,
+                &motion,
+                &result,
+                &baseline,
+                estimate.as_ref()
+            )
         )?;
     }
     Ok(())

@@ -433,3 +433,43 @@ pub fn group_impacts(contacts: &[RawContact], merge_gap_s: f64) -> Vec<ImpactEve
     }
     out
 }
+
+/// A building run's own error estimate by step doubling: the same run with half the steps per
+/// contact time scale and twice the outside step; Richardson's |q(h) - q(2h)| / 3 for the peaks
+/// (second order), and the change in the impact count.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct BuildingErrorEstimate {
+    pub max_force: f64,
+    pub peak_displacement: f64,
+    pub impact_count_change: i64,
+    pub wall_time_s: f64,
+}
+
+pub fn estimate_error(
+    sc: &BuildingScenario,
+    motion: &crate::model::motion::GroundMotion,
+    r: &BuildingResult,
+) -> Result<BuildingErrorEstimate, crate::model::impact::SolveError> {
+    let coarse = BuildingScenario {
+        steps_per_scale: (sc.steps_per_scale / 2.0).max(1.0),
+        max_step_s: 2.0 * sc.max_step_s,
+        ..*sc
+    };
+    let start = std::time::Instant::now();
+    let c = solve(&coarse, motion)?;
+    let rel = |a: f64, b: f64| {
+        if b == 0.0 {
+            (a - b).abs()
+        } else {
+            ((a - b) / b).abs()
+        }
+    };
+    Ok(BuildingErrorEstimate {
+        max_force: rel(r.max_pounding_force_n, c.max_pounding_force_n) / 3.0,
+        peak_displacement: rel(r.peak_displacement_m[0], c.peak_displacement_m[0])
+            .max(rel(r.peak_displacement_m[1], c.peak_displacement_m[1]))
+            / 3.0,
+        impact_count_change: r.impacts.len() as i64 - c.impacts.len() as i64,
+        wall_time_s: start.elapsed().as_secs_f64(),
+    })
+}
