@@ -338,10 +338,13 @@ fn no_impact(model: ModelKind, sc: &ImpactScenario) -> Raw {
 pub(crate) fn peak_between(time: &[f64], force: &[f64], start: f64, end: f64) -> f64 {
     let lo = time.partition_point(|&t| t < start);
     let hi = time.partition_point(|&t| t <= end);
+    let hi = hi.min(force.len());
     let mut best = (0.0, usize::MAX);
-    for (i, &f) in force.iter().enumerate().take(hi).skip(lo) {
-        if f > best.0 {
-            best = (f, i);
+    if lo < hi {
+        for (k, &f) in force[lo..hi].iter().enumerate() {
+            if f > best.0 {
+                best = (f, lo + k);
+            }
         }
     }
     let (fmax, i) = best;

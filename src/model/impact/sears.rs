@@ -209,10 +209,12 @@ pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
     let h = choice.dt_s;
     let mut warnings: Vec<String> = choice.warning.into_iter().collect();
 
+    // Room for the whole run up front (twice the likely span): a vector that grows mid-run
+    // copies all its history.
     let expected = if sc.solver.window_s > 0.0 {
         sc.solver.window_s
     } else {
-        scale.lumped_duration_s.max(t_long)
+        2.0 * scale.lumped_duration_s.max(t_long)
     };
     let capacity = ((expected / h) as usize + 16).min(sc.solver.max_steps + 2);
     // Where the step resolves the contact's rise the histories are smooth on the grid and cubic
