@@ -377,3 +377,40 @@ fn accuracy_reports_a_ladder_with_second_order_and_writes_the_work_precision_plo
     assert!(err.contains(".svg or .png"), "{err}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn impact_and_buildings_write_their_force_plot_as_png_or_svg() {
+    let dir = std::env::temp_dir().join(format!("pounding-plot-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (png, svg) = (dir.join("force.png"), dir.join("force.svg"));
+    assert!(
+        pounding(&["impact", "--plot", png.to_str().unwrap()])
+            .status
+            .success()
+    );
+    let bytes = std::fs::read(&png).unwrap();
+    assert!(bytes.starts_with(&[0x89, b'P', b'N', b'G']) && bytes.len() > 5_000);
+    assert!(
+        pounding(&[
+            "buildings",
+            "--set",
+            "motion.length=3",
+            "--plot",
+            svg.to_str().unwrap()
+        ])
+        .status
+        .success()
+    );
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert!(
+        text.contains("<svg")
+            && text.contains("pounding force [MN]")
+            && text.trim_end().ends_with("</svg>")
+    );
+    let err = stderr(&pounding(&["impact", "--plot", "/nonexistent-dir/f.png"]));
+    assert!(
+        err.contains("--plot") && err.contains("/nonexistent-dir/f.png"),
+        "{err}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}

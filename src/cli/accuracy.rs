@@ -322,6 +322,7 @@ pub fn run(args: &AccuracyArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             log_y: true,
             series,
             size: (900, 620),
+            markers: true,
         }
         .write(path)?;
     }

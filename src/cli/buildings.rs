@@ -82,6 +82,34 @@ pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         },
         &motion,
     )?;
+    if let Some(path) = &args.common.plot {
+        use crate::export::plot::{LinePlot, Series};
+        let points = result
+            .time_s
+            .iter()
+            .zip(&result.force_n)
+            .map(|(t, f)| (*t, f * 1e-6))
+            .collect();
+        LinePlot {
+            title: format!(
+                "Pounding force: {} contact, {}",
+                result.contact.name(),
+                motion.name
+            ),
+            x_label: "time [s]".into(),
+            y_label: "pounding force [MN]".into(),
+            log_x: false,
+            log_y: false,
+            series: vec![Series {
+                name: result.contact.name().into(),
+                points,
+            }],
+            size: (1200, 600),
+            markers: false,
+        }
+        .write(path)
+        .map_err(|e| anyhow::anyhow!("--plot: {e}"))?;
+    }
     if let Some(path) = &args.common.csv {
         super::write_csv(out, path, |w| {
             crate::io::csv::write_building_history(w, &result)

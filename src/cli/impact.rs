@@ -47,6 +47,30 @@ pub fn run(args: &ImpactArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let result = solve(setup.model, &setup.scenario)?;
     let estimate =
         crate::model::impact::estimate::estimate_error(setup.model, &setup.scenario, &result).ok();
+    if let Some(path) = &args.common.plot {
+        use crate::export::plot::{LinePlot, Series};
+        let points = result
+            .time_s
+            .iter()
+            .zip(&result.force_n)
+            .map(|(t, f)| (t * 1e3, f * 1e-3))
+            .collect();
+        LinePlot {
+            title: format!("Contact force: {} ({})", setup.model.name(), preset_name),
+            x_label: "time [ms]".into(),
+            y_label: "force [kN]".into(),
+            log_x: false,
+            log_y: false,
+            series: vec![Series {
+                name: setup.model.name().into(),
+                points,
+            }],
+            size: (1000, 600),
+            markers: false,
+        }
+        .write(path)
+        .map_err(|e| anyhow::anyhow!("--plot: {e}"))?;
+    }
     if let Some(path) = &args.common.csv {
         super::write_csv(out, path, |w| {
             crate::io::csv::write_impact_history(w, &result)

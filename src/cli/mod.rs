@@ -101,6 +101,9 @@ pub struct SceneArgs {
     /// Write the histories as CSV (`-` for standard output)
     #[arg(long, value_name = "FILE")]
     pub csv: Option<std::path::PathBuf>,
+    /// Write the force plot as an image (.png or .svg, by the extension)
+    #[arg(long, value_name = "FILE")]
+    pub plot: Option<std::path::PathBuf>,
     /// Print one JSON object instead of the summary
     #[arg(long)]
     pub json: bool,

@@ -20,6 +20,8 @@ pub struct LinePlot {
     pub series: Vec<Series>,
     /// Pixel size.
     pub size: (u32, u32),
+    /// A dot at each point (for a few points, like a ladder's rungs).
+    pub markers: bool,
 }
 
 static FONT: Once = Once::new();
@@ -161,9 +163,11 @@ impl LinePlot {
                         .legend(move |(x, y)| {
                             PathElement::new(vec![(x, y), (x + 18, y)], colour.stroke_width(2))
                         });
-                    chart
-                        .draw_series(pts.iter().map(|&p| Circle::new(p, 3, colour.filled())))
-                        .map_err(|e| e.to_string())?;
+                    if self.markers {
+                        chart
+                            .draw_series(pts.iter().map(|&p| Circle::new(p, 3, colour.filled())))
+                            .map_err(|e| e.to_string())?;
+                    }
                 }
                 chart
                     .configure_series_labels()
