@@ -2,6 +2,7 @@
 //! with all its readouts, or through the Sears model and its peers overlaid.
 
 use super::bar_view::{self, Solved};
+use super::export::{Exporter, ShownPlot};
 use super::impact_params;
 use super::params::Fields;
 use super::playback::Playback;
@@ -44,6 +45,10 @@ pub struct BarScene {
     pub latency: Duration,
     pub error: Option<String>,
     version: u64,
+    /// The view's rectangle last frame (for a screenshot of the view alone).
+    pub view_rect: Option<egui::Rect>,
+    shown_force: ShownPlot,
+    shown_approach: ShownPlot,
 }
 
 fn run_job((setup, compare): Job) -> Output {
@@ -81,6 +86,9 @@ impl BarScene {
             latency: Duration::ZERO,
             error: None,
             version: 0,
+            view_rect: None,
+            shown_force: ShownPlot::default(),
+            shown_approach: ShownPlot::default(),
         };
         s.request();
         s
@@ -145,7 +153,7 @@ impl BarScene {
         }
     }
 
-    pub fn main_ui(&mut self, ui: &mut egui::Ui) {
+    pub fn main_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
         if let Some(e) = &self.error {
             ui.colored_label(Color32::from_rgb(220, 60, 50), e);
         }
@@ -160,6 +168,7 @@ impl BarScene {
             egui::Sense::hover(),
         );
         bar_view::draw(ui, rect, solved, t);
+        self.view_rect = Some(rect);
         if self.compare {
             let lumped = self
                 .peers
@@ -183,55 +192,81 @@ impl BarScene {
                 }
             });
         }
-        self.plots_ui(ui);
-        if !self.compare {
+        self.plots_ui(ui, exporter);
+        if !self.compare
+            && let Some(solved) = &self.solved
+        {
             readouts_ui(ui, &solved.result, self.solve_time, self.estimate.as_ref());
         } else {
             compare_table(ui, &self.peers);
         }
     }
 
-    fn plots_ui(&self, ui: &mut egui::Ui) {
+    fn plots_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
         let t_ms = self.playback.t * 1e3;
-        let h = ((ui.available_height() - 140.0) / 2.0).clamp(120.0, 260.0);
+        let h = ((ui.available_height() - 160.0) / 2.0).clamp(120.0, 260.0);
         let series = |r: &ImpactResult, f: &dyn Fn(usize) -> f64| -> Vec<[f64; 2]> {
-            (0..r.time_s.len())
-                .map(|i| [r.time_s[i] * 1e3, f(i)])
-                .collect()
+            let t: Vec<f64> = r.time_s.iter().map(|t| t * 1e3).collect();
+            let y: Vec<f64> = (0..r.time_s.len()).map(f).collect();
+            super::series::decimate(&t, &y, 1.0)
         };
-        Plot::new("force")
+        let mut force_lines = vec![];
+        for (i, (m, r)) in self.peers.iter().enumerate() {
+            let k = COMPARED.iter().position(|c| c == m).unwrap_or(i);
+            if !self.compare || self.shown[k] {
+                force_lines.push((m.name().to_string(), series(r, &|j| r.force_n[j] * 1e-3)));
+            }
+        }
+        let response = Plot::new("force")
             .height(h)
             .legend(Legend::default())
             .x_axis_label("time [ms]")
             .y_axis_label("force [kN]")
             .link_axis(egui::Id::unique("bar-plots"), [true, false])
             .show(ui, |p| {
-                for (i, (m, r)) in self.peers.iter().enumerate() {
-                    let k = COMPARED.iter().position(|c| c == m).unwrap_or(i);
-                    if self.compare && !self.shown[k] {
-                        continue;
-                    }
+                for (name, pts) in &force_lines {
                     // Wave theory jumps (repeated times): no band aggregation, which would fill them.
-                    p.line(
-                        Line::new(m.name(), series(r, &|j| r.force_n[j] * 1e-3)).allow_band(false),
-                    );
+                    p.line(Line::new(name.as_str(), pts.clone()).allow_band(false));
                 }
                 p.vline(VLine::new("t", t_ms));
             });
+        let b = response.transform.bounds();
+        self.shown_force = ShownPlot {
+            title: if self.compare {
+                "Contact force by model".into()
+            } else {
+                format!("Contact force: {}", self.setup.model.name())
+            },
+            x_label: "time [ms]".into(),
+            y_label: "force [kN]".into(),
+            series: force_lines,
+            bounds: Some((b.min(), b.max())),
+        };
+        exporter.buttons(ui, &self.shown_force, "force");
         if !self.compare
             && let Some(s) = &self.solved
         {
             let r = &s.result;
-            Plot::new("approach")
+            let pts = series(r, &|j| r.approach_m[j] * 1e6);
+            let response = Plot::new("approach")
                 .height(h)
                 .legend(Legend::default())
                 .x_axis_label("time [ms]")
                 .y_axis_label("approach [um]")
                 .link_axis(egui::Id::unique("bar-plots"), [true, false])
                 .show(ui, |p| {
-                    p.line(Line::new("approach", series(r, &|j| r.approach_m[j] * 1e6)));
+                    p.line(Line::new("approach", pts.clone()));
                     p.vline(VLine::new("t", t_ms));
                 });
+            let b = response.transform.bounds();
+            self.shown_approach = ShownPlot {
+                title: format!("Approach: {}", self.setup.model.name()),
+                x_label: "time [ms]".into(),
+                y_label: "approach [um]".into(),
+                series: vec![("approach".into(), pts)],
+                bounds: Some((b.min(), b.max())),
+            };
+            exporter.buttons(ui, &self.shown_approach, "approach");
         }
     }
 }

@@ -2,6 +2,7 @@
 //! the gap; the roof slabs coloured by their stress waves (the wgpu pipeline of the bar view),
 //! displacements with and without pounding, the pounding force, and a zoom on any impact.
 
+use super::export::{Exporter, ShownPlot};
 use super::params::{Fields, Spec};
 use super::playback::Playback;
 use super::series::decimate;
@@ -53,6 +54,8 @@ pub struct BuildingScene {
     pub error: Option<String>,
     motion_path: String,
     version: u64,
+    /// The view's rectangle last frame (for a screenshot of the view alone).
+    pub view_rect: Option<egui::Rect>,
 }
 
 fn run_job(setup: BuildingSetup) -> Output {
@@ -149,6 +152,7 @@ impl BuildingScene {
             error: None,
             motion_path: String::new(),
             version: 0,
+            view_rect: None,
         };
         s.request();
         s
@@ -332,7 +336,7 @@ impl BuildingScene {
         }
     }
 
-    pub fn main_ui(&mut self, ui: &mut egui::Ui) {
+    pub fn main_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
         if let Some(e) = &self.error {
             ui.colored_label(Color32::from_rgb(220, 60, 50), e);
         }
@@ -356,6 +360,7 @@ impl BuildingScene {
             egui::Sense::hover(),
         );
         draw_buildings(ui, rect, s, self.playback.t, self.exaggeration);
+        self.view_rect = Some(rect);
         ui.horizontal(|ui| {
             ui.label("exaggeration")
                 .on_hover_text("The buildings' drift is drawn this many times larger");
@@ -384,41 +389,61 @@ impl BuildingScene {
         let h = 170.0;
         let pts =
             |time: &[f64], y: &[f64], scale: f64| -> Vec<[f64; 2]> { decimate(time, y, scale) };
-        Plot::new("b-disp")
+        let disp_lines = vec![
+            (
+                "left".to_string(),
+                pts(&r.time_s, &r.displacement_m[0], 1e3),
+            ),
+            (
+                "right".to_string(),
+                pts(&r.time_s, &r.displacement_m[1], 1e3),
+            ),
+            (
+                "left, no pounding".to_string(),
+                pts(&s.baseline.time_s, &s.baseline.displacement_m[0], 1e3),
+            ),
+            (
+                "right, no pounding".to_string(),
+                pts(&s.baseline.time_s, &s.baseline.displacement_m[1], 1e3),
+            ),
+        ];
+        let disp_plot = Plot::new("b-disp")
             .height(h)
             .legend(Legend::default())
             .x_axis_label("time [s]")
             .y_axis_label("displacement [mm]")
             .show(ui, |p| {
-                p.line(Line::new("left", pts(&r.time_s, &r.displacement_m[0], 1e3)));
-                p.line(Line::new(
-                    "right",
-                    pts(&r.time_s, &r.displacement_m[1], 1e3),
-                ));
-                p.line(
-                    Line::new(
-                        "left, no pounding",
-                        pts(&s.baseline.time_s, &s.baseline.displacement_m[0], 1e3),
-                    )
-                    .style(egui_plot::LineStyle::dashed_loose()),
-                );
-                p.line(
-                    Line::new(
-                        "right, no pounding",
-                        pts(&s.baseline.time_s, &s.baseline.displacement_m[1], 1e3),
-                    )
-                    .style(egui_plot::LineStyle::dashed_loose()),
-                );
+                for (i, (name, line)) in disp_lines.iter().enumerate() {
+                    let l = Line::new(name.as_str(), line.clone());
+                    p.line(if i >= 2 {
+                        l.style(egui_plot::LineStyle::dashed_loose())
+                    } else {
+                        l
+                    });
+                }
                 p.vline(VLine::new("t", t));
             });
+        let b = disp_plot.transform.bounds();
+        exporter.buttons(
+            ui,
+            &ShownPlot {
+                title: "Roof displacements with and without pounding".into(),
+                x_label: "time [s]".into(),
+                y_label: "displacement [mm]".into(),
+                series: disp_lines,
+                bounds: Some((b.min(), b.max())),
+            },
+            "displacements",
+        );
         let zoom = self.zoom.take();
+        let force_pts = pts(&r.time_s, &r.force_n, 1e-6);
         let force_plot = Plot::new("b-force")
             .height(h)
             .legend(Legend::default())
             .x_axis_label("time [s]")
             .y_axis_label("pounding force [MN]")
             .show(ui, |p| {
-                p.line(Line::new("force", pts(&r.time_s, &r.force_n, 1e-6)).allow_band(false));
+                p.line(Line::new("force", force_pts.clone()).allow_band(false));
                 p.vline(VLine::new("t", t));
                 if let Some((a, b)) = zoom {
                     p.set_plot_bounds(PlotBounds::from_min_max(
@@ -427,6 +452,18 @@ impl BuildingScene {
                     ));
                 }
             });
+        let b = force_plot.transform.bounds();
+        exporter.buttons(
+            ui,
+            &ShownPlot {
+                title: format!("Pounding force: {} contact", r.contact.name()),
+                x_label: "time [s]".into(),
+                y_label: "pounding force [MN]".into(),
+                series: vec![("force".into(), force_pts)],
+                bounds: Some((b.min(), b.max())),
+            },
+            "force",
+        );
         ui.label("impacts (click one here or in the force plot to zoom on it):");
         let mut clicked = None;
         // A click in the force plot picks the impact nearest in time.

@@ -4,6 +4,7 @@
 mod bar_scene;
 mod bar_view;
 mod building_scene;
+mod export;
 mod impact_params;
 mod params;
 mod playback;
@@ -70,6 +71,7 @@ pub struct PoundingApp {
     preset_choice: String,
     path: String,
     message: Option<(String, bool)>,
+    exporter: export::Exporter,
     ui_ms: f64,
     frames: u64,
     launch: Launch,
@@ -179,6 +181,7 @@ impl PoundingApp {
                 .unwrap_or_else(|| preset::DEFAULT_PRESET.into()),
             path: "scene.toml".into(),
             message: (!errors.is_empty()).then(|| (errors.join("; "), true)),
+            exporter: export::Exporter::default(),
             ui_ms: 0.0,
             frames: 0,
             launch,
@@ -245,6 +248,29 @@ impl PoundingApp {
                 } else {
                     egui::Theme::Light
                 });
+            }
+            ui.separator();
+            ui.label("export to")
+                .on_hover_text("Folder and name stem of exported plots and screenshots");
+            ui.add(egui::TextEdit::singleline(&mut self.exporter.prefix).desired_width(140.0));
+            if ui
+                .button("Screenshot")
+                .on_hover_text("The whole window as PNG")
+                .clicked()
+            {
+                self.exporter.screenshot(ui.ctx(), None, "window");
+            }
+            let view = match self.scene {
+                SceneKind::BarImpact => self.bar.view_rect,
+                SceneKind::WaveVsLumped => self.compare.view_rect,
+                SceneKind::Buildings => self.buildings.view_rect,
+            };
+            if ui
+                .add_enabled(view.is_some(), egui::Button::new("View PNG"))
+                .on_hover_text("The animated view alone as PNG")
+                .clicked()
+            {
+                self.exporter.screenshot(ui.ctx(), view, "view");
             }
             if ui
                 .button("Help")
@@ -345,6 +371,12 @@ impl eframe::App for PoundingApp {
         if self.scene == SceneKind::Buildings {
             self.buildings.take_dropped(&ctx);
         }
+        if let Some(outcome) = self.exporter.poll() {
+            self.message = Some(match outcome {
+                Ok(m) => (m, false),
+                Err(e) => (e, true),
+            });
+        }
         self.playback().advance(dt.min(0.1));
         egui::Panel::top("top").show(ui, |ui| self.top_bar(ui));
         egui::Panel::bottom("status").show(ui, |ui| {
@@ -392,9 +424,11 @@ impl eframe::App for PoundingApp {
                 });
             });
         egui::CentralPanel::default().show(ui, |ui| {
+            let exporter = &self.exporter;
             egui::ScrollArea::vertical().show(ui, |ui| match self.scene {
-                SceneKind::Buildings => self.buildings.main_ui(ui),
-                _ => self.current().main_ui(ui),
+                SceneKind::BarImpact => self.bar.main_ui(ui, exporter),
+                SceneKind::WaveVsLumped => self.compare.main_ui(ui, exporter),
+                SceneKind::Buildings => self.buildings.main_ui(ui, exporter),
             });
         });
         if self.help {

@@ -323,6 +323,8 @@ pub fn run(args: &AccuracyArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             series,
             size: (900, 620),
             markers: true,
+            x_range: None,
+            y_range: None,
         }
         .write(path)?;
     }

@@ -106,6 +106,8 @@ pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             }],
             size: (1200, 600),
             markers: false,
+            x_range: None,
+            y_range: None,
         }
         .write(path)
         .map_err(|e| anyhow::anyhow!("--plot: {e}"))?;

@@ -67,6 +67,8 @@ pub fn run(args: &ImpactArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             }],
             size: (1000, 600),
             markers: false,
+            x_range: None,
+            y_range: None,
         }
         .write(path)
         .map_err(|e| anyhow::anyhow!("--plot: {e}"))?;

@@ -22,6 +22,9 @@ pub struct LinePlot {
     pub size: (u32, u32),
     /// A dot at each point (for a few points, like a ladder's rungs).
     pub markers: bool,
+    /// Axis ranges (what a window shows); `None` fits the data.
+    pub x_range: Option<(f64, f64)>,
+    pub y_range: Option<(f64, f64)>,
 }
 
 static FONT: Once = Once::new();
@@ -113,8 +116,12 @@ impl LinePlot {
         DB::ErrorType: 'static,
     {
         area.fill(&WHITE).map_err(|e| e.to_string())?;
-        let (x0, x1) = self.range(self.log_x, |p| p.0);
-        let (y0, y1) = self.range(self.log_y, |p| p.1);
+        let (x0, x1) = self
+            .x_range
+            .unwrap_or_else(|| self.range(self.log_x, |p| p.0));
+        let (y0, y1) = self
+            .y_range
+            .unwrap_or_else(|| self.range(self.log_y, |p| p.1));
         let mut builder = ChartBuilder::on(&area);
         builder
             .caption(&self.title, ("sans-serif", 22))

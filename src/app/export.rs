@@ -1,0 +1,186 @@
+//! Exports from the window: a plot as PNG, SVG or CSV with exactly what it shows (the same
+//! series, the visible range), and screenshots. Files are written on a thread of their own, so an
+//! export never blocks the window; the outcome comes back as a message.
+
+use crate::export::plot::{LinePlot, Series};
+use eframe::egui;
+use std::path::PathBuf;
+use std::sync::mpsc::{Receiver, Sender, channel};
+
+/// What a plot shows, kept from its last frame.
+#[derive(Clone, Default)]
+pub struct ShownPlot {
+    pub title: String,
+    pub x_label: String,
+    pub y_label: String,
+    pub series: Vec<(String, Vec<[f64; 2]>)>,
+    /// Visible x and y ranges.
+    pub bounds: Option<([f64; 2], [f64; 2])>,
+}
+
+impl ShownPlot {
+    fn visible(&self) -> Vec<Series> {
+        let (x0, x1) = self
+            .bounds
+            .map_or((f64::NEG_INFINITY, f64::INFINITY), |(min, max)| {
+                (min[0], max[0])
+            });
+        self.series
+            .iter()
+            .map(|(name, pts)| Series {
+                name: name.clone(),
+                points: pts
+                    .iter()
+                    .filter(|p| p[0] >= x0 && p[0] <= x1)
+                    .map(|p| (p[0], p[1]))
+                    .collect(),
+            })
+            .collect()
+    }
+
+    fn csv(&self) -> String {
+        // One block per series: x, y, with the axis labels (which carry the units) as the header.
+        let mut out = String::new();
+        for s in self.visible() {
+            out += &format!("# {}\n{},{}\n", s.name, self.x_label, self.y_label);
+            for (x, y) in s.points {
+                out += &format!("{x:.12e},{y:.12e}\n");
+            }
+        }
+        out
+    }
+}
+
+pub struct Exporter {
+    /// Path prefix for exported files (a folder and a name stem).
+    pub prefix: String,
+    /// Pixel size of PNG exports.
+    pub size: [u32; 2],
+    done_tx: Sender<Result<String, String>>,
+    done_rx: Receiver<Result<String, String>>,
+}
+
+impl Default for Exporter {
+    fn default() -> Self {
+        let (done_tx, done_rx) = channel();
+        Exporter {
+            prefix: "pounding".into(),
+            size: [1600, 900],
+            done_tx,
+            done_rx,
+        }
+    }
+}
+
+impl Exporter {
+    fn spawn(&self, job: impl FnOnce() -> Result<String, String> + Send + 'static) {
+        let tx = self.done_tx.clone();
+        std::thread::spawn(move || {
+            let _ = tx.send(job());
+        });
+    }
+
+    /// Writes `plot` as `<prefix>-<name>.<ext>` (png, svg or csv).
+    pub fn export(&self, plot: &ShownPlot, name: &str, ext: &str) {
+        let path = PathBuf::from(format!("{}-{name}.{ext}", self.prefix));
+        let plot = plot.clone();
+        let size = (self.size[0], self.size[1]);
+        let is_csv = ext == "csv";
+        self.spawn(move || {
+            let shown = path.display().to_string();
+            let result = if is_csv {
+                std::fs::write(&path, plot.csv())
+                    .map_err(|e| format!("could not write {shown}: {e}"))
+            } else {
+                LinePlot {
+                    title: plot.title.clone(),
+                    x_label: plot.x_label.clone(),
+                    y_label: plot.y_label.clone(),
+                    log_x: false,
+                    log_y: false,
+                    series: plot.visible(),
+                    size,
+                    markers: false,
+                    x_range: plot.bounds.map(|(a, b)| (a[0], b[0])),
+                    y_range: plot.bounds.map(|(a, b)| (a[1], b[1])),
+                }
+                .write(&path)
+                .map_err(|e| format!("could not write {e:#}"))
+            };
+            result.map(|()| format!("wrote {shown}"))
+        });
+    }
+
+    /// Asks for a screenshot of the window, or of its part `crop` (in points), saved as PNG.
+    pub fn screenshot(&self, ctx: &egui::Context, crop: Option<egui::Rect>, name: &str) {
+        let path = PathBuf::from(format!("{}-{name}.png", self.prefix));
+        let tx = self.done_tx.clone();
+        let pixels_per_point = ctx.pixels_per_point();
+        ctx.request_screenshot(move |image| {
+            std::thread::spawn(move || {
+                let _ = tx.send(write_png(&image, crop, pixels_per_point, &path));
+            });
+        });
+    }
+
+    /// The outcome of finished exports, if any.
+    pub fn poll(&self) -> Option<Result<String, String>> {
+        self.done_rx.try_recv().ok()
+    }
+
+    /// Export buttons for one plot.
+    pub fn buttons(&self, ui: &mut egui::Ui, plot: &ShownPlot, name: &str) {
+        ui.horizontal(|ui| {
+            ui.label(format!("export {name}:")).on_hover_text(format!(
+                "writes {}-{name}.png/.svg/.csv with what the plot shows",
+                self.prefix
+            ));
+            for ext in ["png", "svg", "csv"] {
+                if ui.small_button(ext).clicked() {
+                    self.export(plot, name, ext);
+                }
+            }
+        });
+    }
+}
+
+/// Encodes (a part of) a screenshot as PNG.
+fn write_png(
+    image: &egui::ColorImage,
+    crop: Option<egui::Rect>,
+    pixels_per_point: f32,
+    path: &std::path::Path,
+) -> Result<String, String> {
+    let shown = path.display().to_string();
+    let [w, h] = image.size;
+    let (x0, y0, x1, y1) = match crop {
+        Some(r) => (
+            ((r.min.x * pixels_per_point) as usize).min(w),
+            ((r.min.y * pixels_per_point) as usize).min(h),
+            ((r.max.x * pixels_per_point) as usize).min(w),
+            ((r.max.y * pixels_per_point) as usize).min(h),
+        ),
+        None => (0, 0, w, h),
+    };
+    let (cw, ch) = (x1.saturating_sub(x0), y1.saturating_sub(y0));
+    if cw == 0 || ch == 0 {
+        return Err(format!("could not write {shown}: empty region"));
+    }
+    let mut rgba = Vec::with_capacity(cw * ch * 4);
+    for y in y0..y1 {
+        for px in &image.pixels[y * w + x0..y * w + x1] {
+            rgba.extend_from_slice(&px.to_array());
+        }
+    }
+    let write = || -> Result<(), Box<dyn std::error::Error>> {
+        let file = std::io::BufWriter::new(std::fs::File::create(path)?);
+        let mut enc = png::Encoder::new(file, cw as u32, ch as u32);
+        enc.set_color(png::ColorType::Rgba);
+        enc.set_depth(png::BitDepth::Eight);
+        enc.write_header()?.write_image_data(&rgba)?;
+        Ok(())
+    };
+    write()
+        .map(|()| format!("wrote {shown}"))
+        .map_err(|e| format!("could not write {shown}: {e}"))
+}
