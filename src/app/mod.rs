@@ -213,8 +213,8 @@ impl PoundingApp {
                 .on_hover_text("One impact, one model, every readout");
             ui.selectable_value(&mut self.scene, SceneKind::WaveVsLumped, "Wave vs lumped")
                 .on_hover_text("Sears, wave theory, lumped and FE models overlaid");
-            ui.add_enabled(false, egui::Button::selectable(false, "Building pounding"))
-                .on_disabled_hover_text("arrives with the building scene");
+            ui.selectable_value(&mut self.scene, SceneKind::Buildings, "Building pounding")
+                .on_hover_text("Two buildings swaying in an earthquake, with and without pounding");
             ui.separator();
             if self.scene == SceneKind::Buildings {
                 if ui
