@@ -4,7 +4,7 @@
 use crate::io::settings::ImpactSetup;
 use crate::model::impact::ImpactResult;
 use crate::model::scenario::Reading;
-use crate::render::bars::{GpuBar, GpuHistory, Viewport};
+use crate::render::bars::{BarsLayout, GpuHistory, Viewport};
 use eframe::egui::{self, Color32, Pos2, Rect, Stroke};
 use std::sync::Arc;
 
@@ -85,50 +85,17 @@ pub fn draw(ui: &mut egui::Ui, rect: Rect, solved: &Solved, t: f64) {
         return;
     };
     let lengths = [waves[0].length_m(), waves[1].length_m()];
-    let to_scale = lengths[0].max(lengths[1]) / lengths[0].min(lengths[1]) < 20.0;
-    let wpm = if to_scale {
-        [1.0, 1.0]
-    } else {
-        [1.0 / lengths[0], 1.0 / lengths[1]]
-    };
+    let layout = BarsLayout::new(waves, setup.scenario.approach_velocity_m_s(), &solved.gpu);
+    let (gap, wpm, to_scale) = (layout.gap, layout.world_per_metre, layout.to_scale);
     let extent = [lengths[0] * wpm[0], lengths[1] * wpm[1]];
-    let gap = 0.006 * (extent[0] + extent[1]);
-    let (left, right) = (-extent[0] - gap * 4.0, extent[1] + gap * 4.0);
-    let (bottom, top) = (0.0f32, 1.0f32);
-    let w = setup.scenario.approach_velocity_m_s().abs().max(1e-12);
-    let (z1, z2) = (waves[0].impedance_n_s_m, waves[1].impedance_n_s_m);
-    let wave_force = z1 * z2 / (z1 + z2) * w;
-    let mut bars = [GpuBar::default(); 2];
-    for i in 0..2 {
-        let (offset, count, dt, end) = solved.gpu.layout[i];
-        let wv = &waves[i];
-        bars[i] = GpuBar {
-            origin_x: if i == 0 { -gap as f32 } else { gap as f32 },
-            direction: if i == 0 { -1.0 } else { 1.0 },
-            body_length: wv.body_length_m as f32,
-            zone_length: wv.zone_length_m as f32,
-            wave_speed: wv.wave_speed_m_s as f32,
-            round_trip: wv.round_trip_s() as f32,
-            dt: dt.max(1e-12),
-            end_time: end,
-            offset,
-            count,
-            inv_area: (1.0 / wv.area_m2) as f32,
-            inv_stress_scale: (wv.area_m2 / wave_force) as f32,
-            y_bottom: 0.40,
-            y_top: 0.62,
-            world_per_metre: wpm[i] as f32,
-            _pad: 0.0,
-        };
-    }
     let vp = Viewport {
         rect,
-        left,
-        right,
-        bottom: bottom as f64,
-        top: top as f64,
+        left: layout.left,
+        right: layout.right,
+        bottom: layout.bottom,
+        top: layout.top,
     };
-    vp.paint_bars(ui, t, bars, solved.gpu.clone(), solved.version);
+    vp.paint_bars(ui, layout.uniforms(t), solved.gpu.clone(), solved.version);
     let to_screen = |x: f64, y: f32| vp.to_screen(x, y as f64);
     let painter = ui.painter_at(rect);
     let text = ui.visuals().text_color();
@@ -212,10 +179,7 @@ pub fn draw(ui: &mut egui::Ui, rect: Rect, solved: &Solved, t: f64) {
     painter.text(
         Pos2::new(legend.left(), legend.bottom() + 2.0),
         egui::Align2::LEFT_TOP,
-        format!(
-            "compression  {:.3e} Pa  tension",
-            wave_force / waves[0].area_m2
-        ),
+        format!("compression  {:.3e} Pa  tension", layout.stress_scale_pa),
         egui::FontId::proportional(11.0),
         text,
     );
@@ -230,15 +194,6 @@ pub fn draw(ui: &mut egui::Ui, rect: Rect, solved: &Solved, t: f64) {
 
 /// The shader's colour map, for the legend.
 pub fn diverging(s: f32) -> Color32 {
-    let a = s.abs().clamp(0.0, 1.0).powf(0.7);
-    let (n, c) = (
-        [0.90, 0.90, 0.88],
-        if s < 0.0 {
-            [0.10, 0.30, 0.85]
-        } else {
-            [0.85, 0.15, 0.10]
-        },
-    );
-    let mix = |i: usize| ((n[i] + (c[i] - n[i]) * a) * 255.0) as u8;
-    Color32::from_rgb(mix(0), mix(1), mix(2))
+    let [r, g, b] = crate::render::bars::diverging(s).map(|c| (c * 255.0) as u8);
+    Color32::from_rgb(r, g, b)
 }

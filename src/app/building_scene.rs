@@ -602,7 +602,13 @@ fn draw_buildings(ui: &mut egui::Ui, rect: egui::Rect, s: &Solved, t: f64, exagg
         bottom: bottom as f64,
         top: top as f64,
     };
-    vp.paint_bars(ui, t, bars, s.gpu.clone(), s.version);
+    let world = [vp.left, vp.right, vp.bottom, vp.top];
+    vp.paint_bars(
+        ui,
+        crate::render::bars::uniforms(world, t, bars),
+        s.gpu.clone(),
+        s.version,
+    );
     let to_screen = |x: f64, y: f64| vp.to_screen(x, y);
     let painter = ui.painter_at(rect);
     let text = ui.visuals().text_color();

@@ -92,82 +92,119 @@ pub struct BarsResources {
 
 /// Builds the pipeline once, at start-up, and stores it with the renderer.
 pub fn install(render_state: &egui_wgpu::RenderState) {
-    let device = &render_state.device;
-    let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some("bars"),
-        source: wgpu::ShaderSource::Wgsl(include_str!("../../shaders/bars.wgsl").into()),
-    });
-    let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-        label: Some("bars"),
-        entries: &[
-            wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
-                ty: wgpu::BindingType::Buffer {
-                    ty: wgpu::BufferBindingType::Uniform,
-                    has_dynamic_offset: false,
-                    min_binding_size: None,
-                },
-                count: None,
-            },
-            wgpu::BindGroupLayoutEntry {
-                binding: 1,
-                visibility: wgpu::ShaderStages::FRAGMENT,
-                ty: wgpu::BindingType::Buffer {
-                    ty: wgpu::BufferBindingType::Storage { read_only: true },
-                    has_dynamic_offset: false,
-                    min_binding_size: None,
-                },
-                count: None,
-            },
-        ],
-    });
-    let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-        label: Some("bars"),
-        bind_group_layouts: &[Some(&layout)],
-        immediate_size: 0,
-    });
-    let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-        label: Some("bars"),
-        layout: Some(&pipeline_layout),
-        vertex: wgpu::VertexState {
-            module: &shader,
-            entry_point: Some("vs_main"),
-            buffers: &[],
-            compilation_options: Default::default(),
-        },
-        fragment: Some(wgpu::FragmentState {
-            module: &shader,
-            entry_point: Some("fs_main"),
-            targets: &[Some(render_state.target_format.into())],
-            compilation_options: Default::default(),
-        }),
-        primitive: wgpu::PrimitiveState::default(),
-        depth_stencil: None,
-        multisample: wgpu::MultisampleState::default(),
-        multiview_mask: None,
-        cache: None,
-    });
-    let uniforms = device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("bars uniforms"),
-        size: std::mem::size_of::<GpuUniforms>() as u64,
-        usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-        mapped_at_creation: false,
-    });
-    let history = history_buffer(device, 1024);
-    let bind_group = bind(device, &layout, &uniforms, &history);
+    let resources = BarsResources::new(&render_state.device, render_state.target_format);
     render_state
         .renderer
         .write()
         .callback_resources
-        .insert(BarsResources {
+        .insert(resources);
+}
+
+impl BarsResources {
+    /// The pipeline for a colour target of `format` (the window's, or an offscreen texture's).
+    pub fn new(device: &wgpu::Device, format: wgpu::TextureFormat) -> Self {
+        let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("bars"),
+            source: wgpu::ShaderSource::Wgsl(include_str!("../../shaders/bars.wgsl").into()),
+        });
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("bars"),
+            entries: &[
+                wgpu::BindGroupLayoutEntry {
+                    binding: 0,
+                    visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+                    ty: wgpu::BindingType::Buffer {
+                        ty: wgpu::BufferBindingType::Uniform,
+                        has_dynamic_offset: false,
+                        min_binding_size: None,
+                    },
+                    count: None,
+                },
+                wgpu::BindGroupLayoutEntry {
+                    binding: 1,
+                    visibility: wgpu::ShaderStages::FRAGMENT,
+                    ty: wgpu::BindingType::Buffer {
+                        ty: wgpu::BufferBindingType::Storage { read_only: true },
+                        has_dynamic_offset: false,
+                        min_binding_size: None,
+                    },
+                    count: None,
+                },
+            ],
+        });
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("bars"),
+            bind_group_layouts: &[Some(&layout)],
+            immediate_size: 0,
+        });
+        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some("bars"),
+            layout: Some(&pipeline_layout),
+            vertex: wgpu::VertexState {
+                module: &shader,
+                entry_point: Some("vs_main"),
+                buffers: &[],
+                compilation_options: Default::default(),
+            },
+            fragment: Some(wgpu::FragmentState {
+                module: &shader,
+                entry_point: Some("fs_main"),
+                targets: &[Some(format.into())],
+                compilation_options: Default::default(),
+            }),
+            primitive: wgpu::PrimitiveState::default(),
+            depth_stencil: None,
+            multisample: wgpu::MultisampleState::default(),
+            multiview_mask: None,
+            cache: None,
+        });
+        let uniforms = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("bars uniforms"),
+            size: std::mem::size_of::<GpuUniforms>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let history = history_buffer(device, 1024);
+        let bind_group = bind(device, &layout, &uniforms, &history);
+        BarsResources {
             pipeline,
             layout,
             uniforms,
             history,
             bind_group,
             history_version: u64::MAX,
-        });
+        }
+    }
+
+    /// Uploads a frame's uniforms, and the history when its version changed.
+    pub fn upload(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        uniforms: &GpuUniforms,
+        history: &GpuHistory,
+        version: u64,
+    ) {
+        if self.history_version != version {
+            let bytes = (history.samples.len() * 4) as u64;
+            if bytes > self.history.size() {
+                self.history = history_buffer(device, history.samples.len().next_power_of_two());
+                self.bind_group = bind(device, &self.layout, &self.uniforms, &self.history);
+            }
+            if !history.samples.is_empty() {
+                queue.write_buffer(&self.history, 0, bytemuck::cast_slice(&history.samples));
+            }
+            self.history_version = version;
+        }
+        queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(uniforms));
+    }
+
+    /// Draws the bars into a pass whose target has this pipeline's format.
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, bar_count: u32) {
+        pass.set_pipeline(&self.pipeline);
+        pass.set_bind_group(0, &self.bind_group, &[]);
+        pass.draw(0..6, 0..bar_count);
+    }
 }
 
 fn history_buffer(device: &wgpu::Device, samples: usize) -> wgpu::Buffer {
@@ -217,21 +254,9 @@ impl egui_wgpu::CallbackTrait for BarsCallback {
         _encoder: &mut wgpu::CommandEncoder,
         resources: &mut egui_wgpu::CallbackResources,
     ) -> Vec<wgpu::CommandBuffer> {
-        let Some(r) = resources.get_mut::<BarsResources>() else {
-            return Vec::new();
-        };
-        if r.history_version != self.version {
-            let bytes = (self.history.samples.len() * 4) as u64;
-            if bytes > r.history.size() {
-                r.history = history_buffer(device, self.history.samples.len().next_power_of_two());
-                r.bind_group = bind(device, &r.layout, &r.uniforms, &r.history);
-            }
-            if !self.history.samples.is_empty() {
-                queue.write_buffer(&r.history, 0, bytemuck::cast_slice(&self.history.samples));
-            }
-            r.history_version = self.version;
+        if let Some(r) = resources.get_mut::<BarsResources>() {
+            r.upload(device, queue, &self.uniforms, &self.history, self.version);
         }
-        queue.write_buffer(&r.uniforms, 0, bytemuck::bytes_of(&self.uniforms));
         Vec::new()
     }
 
@@ -241,13 +266,112 @@ impl egui_wgpu::CallbackTrait for BarsCallback {
         pass: &mut wgpu::RenderPass<'static>,
         resources: &egui_wgpu::CallbackResources,
     ) {
-        let Some(r) = resources.get::<BarsResources>() else {
-            return;
-        };
-        pass.set_pipeline(&r.pipeline);
-        pass.set_bind_group(0, &r.bind_group, &[]);
-        pass.draw(0..6, 0..self.uniforms.bar_count);
+        if let Some(r) = resources.get::<BarsResources>() {
+            r.draw(pass, self.uniforms.bar_count);
+        }
     }
+}
+
+/// Where the bars go and how they are coloured: both bars' GPU records and the world rectangle
+/// they are shown in. The bars meet at x = 0 (bar 1 to the left), lie between y = 0.40 and 0.62
+/// of a unit-high world, and are drawn to scale unless one is 20 times the other.
+#[derive(Clone, Copy, Debug)]
+pub struct BarsLayout {
+    pub bars: [GpuBar; 2],
+    /// World x of each bar's impacting end.
+    pub gap: f64,
+    /// World units per metre of each bar.
+    pub world_per_metre: [f64; 2],
+    pub to_scale: bool,
+    /// Stress that saturates the colour map: the wave-theory stress Z1 Z2/(Z1+Z2) w / A1 [Pa].
+    pub stress_scale_pa: f64,
+    pub left: f64,
+    pub right: f64,
+    pub bottom: f64,
+    pub top: f64,
+}
+
+pub const BAR_Y: (f32, f32) = (0.40, 0.62);
+
+impl BarsLayout {
+    /// `approach_m_s` is the closing velocity v1 - v2.
+    pub fn new(waves: &[BarWaves; 2], approach_m_s: f64, gpu: &GpuHistory) -> Self {
+        let lengths = [waves[0].length_m(), waves[1].length_m()];
+        let to_scale = lengths[0].max(lengths[1]) / lengths[0].min(lengths[1]) < 20.0;
+        let wpm = if to_scale {
+            [1.0, 1.0]
+        } else {
+            [1.0 / lengths[0], 1.0 / lengths[1]]
+        };
+        let extent = [lengths[0] * wpm[0], lengths[1] * wpm[1]];
+        let gap = 0.006 * (extent[0] + extent[1]);
+        let w = approach_m_s.abs().max(1e-12);
+        let (z1, z2) = (waves[0].impedance_n_s_m, waves[1].impedance_n_s_m);
+        let wave_force = z1 * z2 / (z1 + z2) * w;
+        let mut bars = [GpuBar::default(); 2];
+        for (i, wv) in waves.iter().enumerate() {
+            let (offset, count, dt, end) = gpu.layout[i];
+            bars[i] = GpuBar {
+                origin_x: if i == 0 { -gap as f32 } else { gap as f32 },
+                direction: if i == 0 { -1.0 } else { 1.0 },
+                body_length: wv.body_length_m as f32,
+                zone_length: wv.zone_length_m as f32,
+                wave_speed: wv.wave_speed_m_s as f32,
+                round_trip: wv.round_trip_s() as f32,
+                dt: dt.max(1e-12),
+                end_time: end,
+                offset,
+                count,
+                inv_area: (1.0 / wv.area_m2) as f32,
+                inv_stress_scale: (wv.area_m2 / wave_force) as f32,
+                y_bottom: BAR_Y.0,
+                y_top: BAR_Y.1,
+                world_per_metre: wpm[i] as f32,
+                _pad: 0.0,
+            };
+        }
+        BarsLayout {
+            bars,
+            gap,
+            world_per_metre: wpm,
+            to_scale,
+            stress_scale_pa: wave_force / waves[0].area_m2,
+            left: -extent[0] - gap * 4.0,
+            right: extent[1] + gap * 4.0,
+            bottom: 0.0,
+            top: 1.0,
+        }
+    }
+
+    /// The shader's uniforms at animation time `t`.
+    pub fn uniforms(&self, t: f64) -> GpuUniforms {
+        uniforms([self.left, self.right, self.bottom, self.top], t, self.bars)
+    }
+}
+
+/// Uniforms for two bars at time `t` in the world rectangle [left, right, bottom, top].
+pub fn uniforms(world: [f64; 4], t: f64, bars: [GpuBar; 2]) -> GpuUniforms {
+    let [left, right, bottom, top] = world.map(|v| v as f32);
+    GpuUniforms {
+        view: view(left, right, bottom, top),
+        time: t as f32,
+        bar_count: 2,
+        _pad: [0.0; 2],
+        bars,
+    }
+}
+
+/// The shader's colour map (`diverging` in bars.wgsl) as linear RGB: compression (s < 0) blue,
+/// tension red, stress-free pale grey; |s| = 1 saturates.
+pub fn diverging(s: f32) -> [f32; 3] {
+    let neutral = [0.90, 0.90, 0.88];
+    let end = if s < 0.0 {
+        [0.10, 0.30, 0.85]
+    } else {
+        [0.85, 0.15, 0.10]
+    };
+    let a = s.abs().clamp(0.0, 1.0).powf(0.7);
+    [0, 1, 2].map(|i| neutral[i] + (end[i] - neutral[i]) * a)
 }
 
 /// Orthographic view of the world rectangle [left, right] x [bottom, top].
@@ -274,27 +398,14 @@ impl Viewport {
         )
     }
 
-    /// Queues the two bars at time `t` for the GPU.
+    /// Queues the two bars for the GPU.
     pub fn paint_bars(
         &self,
         ui: &eframe::egui::Ui,
-        t: f64,
-        bars: [GpuBar; 2],
+        uniforms: GpuUniforms,
         history: Arc<GpuHistory>,
         version: u64,
     ) {
-        let uniforms = GpuUniforms {
-            view: view(
-                self.left as f32,
-                self.right as f32,
-                self.bottom as f32,
-                self.top as f32,
-            ),
-            time: t as f32,
-            bar_count: 2,
-            _pad: [0.0; 2],
-            bars,
-        };
         ui.painter().add(egui_wgpu::Callback::new_paint_callback(
             self.rect,
             BarsCallback {
