@@ -44,15 +44,44 @@ fn the_window_starts_draws_and_closes_on_request() {
         std::env::var_os("DISPLAY").is_some() || std::env::var_os("WAYLAND_DISPLAY").is_some();
     // CI provides a virtual display and a software adapter: there the window must really open.
     let has_display = has_display || std::env::var_os("CI").is_some();
+    let shot = std::env::temp_dir().join(format!("pounding-smoke-{}.png", std::process::id()));
+    let _ = std::fs::remove_file(&shot);
     let o = pounding(&[
         "window",
         "--preset",
         "paper-base",
         "--exit-after-frames",
         "20",
+        "--screenshot",
+        shot.to_str().unwrap(),
     ]);
     if has_display {
         assert!(o.status.success(), "{}", stderr(&o));
+        // The frame it drew is not blank: many colours, and no one colour covers most of it.
+        let decoder = png::Decoder::new(std::io::BufReader::new(
+            std::fs::File::open(&shot).expect("the screenshot was written"),
+        ));
+        let mut reader = decoder.read_info().expect("a PNG");
+        let mut rgba = vec![0; reader.output_buffer_size().unwrap()];
+        let info = reader.next_frame(&mut rgba).expect("decodes");
+        assert!(
+            info.width >= 400 && info.height >= 300,
+            "{}x{}",
+            info.width,
+            info.height
+        );
+        let mut counts = std::collections::HashMap::new();
+        for px in rgba.chunks(4) {
+            *counts.entry([px[0], px[1], px[2]]).or_insert(0usize) += 1;
+        }
+        let pixels = (info.width * info.height) as usize;
+        let commonest = counts.values().copied().max().unwrap();
+        assert!(counts.len() > 200, "only {} colours", counts.len());
+        assert!(
+            commonest < pixels * 9 / 10,
+            "one colour covers {commonest} of {pixels}"
+        );
+        let _ = std::fs::remove_file(&shot);
     } else {
         assert!(!stderr(&o).contains("panicked"), "{}", stderr(&o));
     }
@@ -388,8 +417,18 @@ fn impact_and_buildings_write_their_force_plot_as_png_or_svg() {
             .status
             .success()
     );
-    let bytes = std::fs::read(&png).unwrap();
-    assert!(bytes.starts_with(&[0x89, b'P', b'N', b'G']) && bytes.len() > 5_000);
+    let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(&png).unwrap()));
+    let mut reader = decoder.read_info().expect("a PNG");
+    let mut pixels = vec![0; reader.output_buffer_size().unwrap()];
+    let info = reader.next_frame(&mut pixels).expect("decodes");
+    assert_eq!((info.width, info.height), (1000, 600));
+    // A white page with a drawn curve, axes and text: not one colour.
+    let white = pixels.iter().filter(|&&b| b == 255).count();
+    assert!(
+        white < pixels.len() * 99 / 100 && white > pixels.len() / 2,
+        "{white} of {}",
+        pixels.len()
+    );
     assert!(
         pounding(&[
             "buildings",

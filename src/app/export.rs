@@ -113,7 +113,15 @@ impl Exporter {
 
     /// Asks for a screenshot of the window, or of its part `crop` (in points), saved as PNG.
     pub fn screenshot(&self, ctx: &egui::Context, crop: Option<egui::Rect>, name: &str) {
-        let path = PathBuf::from(format!("{}-{name}.png", self.prefix));
+        self.screenshot_to(
+            ctx,
+            crop,
+            PathBuf::from(format!("{}-{name}.png", self.prefix)),
+        );
+    }
+
+    /// As `screenshot`, to a given path.
+    pub fn screenshot_to(&self, ctx: &egui::Context, crop: Option<egui::Rect>, path: PathBuf) {
         let tx = self.done_tx.clone();
         let pixels_per_point = ctx.pixels_per_point();
         ctx.request_screenshot(move |image| {
@@ -183,4 +191,56 @@ fn write_png(
     write()
         .map(|()| format!("wrote {shown}"))
         .map_err(|e| format!("could not write {shown}: {e}"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn shown() -> ShownPlot {
+        ShownPlot {
+            title: "t".into(),
+            x_label: "time [ms]".into(),
+            y_label: "force [kN]".into(),
+            series: vec![(
+                "a".into(),
+                (0..10).map(|i| [i as f64, 2.0 * i as f64]).collect(),
+            )],
+            bounds: Some(([2.5, -1.0], [6.0, 30.0])),
+        }
+    }
+
+    #[test]
+    fn an_export_holds_the_visible_x_range_only() {
+        let v = shown().visible();
+        let xs: Vec<f64> = v[0].points.iter().map(|p| p.0).collect();
+        assert_eq!(xs, vec![3.0, 4.0, 5.0, 6.0]);
+    }
+
+    #[test]
+    fn csv_names_quantities_and_units_then_rows_of_the_visible_points() {
+        let csv = shown().csv();
+        let mut lines = csv.lines();
+        assert_eq!(lines.next(), Some("# a"));
+        assert_eq!(lines.next(), Some("time [ms],force [kN]"));
+        let rows: Vec<_> = lines.collect();
+        assert_eq!(rows.len(), 4);
+        let first: Vec<f64> = rows[0].split(',').map(|v| v.parse().unwrap()).collect();
+        assert_eq!(first, vec![3.0, 6.0]);
+    }
+
+    #[test]
+    fn a_failed_write_says_which_path() {
+        let e = Exporter {
+            prefix: "/nonexistent-dir/x".into(),
+            ..Default::default()
+        };
+        e.export(&shown(), "force", "csv");
+        let outcome = e
+            .done_rx
+            .recv_timeout(std::time::Duration::from_secs(10))
+            .unwrap();
+        let err = outcome.unwrap_err();
+        assert!(err.contains("/nonexistent-dir/x-force.csv"), "{err}");
+    }
 }

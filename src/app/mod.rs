@@ -59,6 +59,8 @@ pub struct Launch {
     pub exit_after_frames: Option<u64>,
     /// Start paused at this animation time [s].
     pub time_s: Option<f64>,
+    /// Save a screenshot here before closing (with `exit_after_frames`).
+    pub screenshot: Option<std::path::PathBuf>,
 }
 
 pub struct PoundingApp {
@@ -72,6 +74,8 @@ pub struct PoundingApp {
     path: String,
     message: Option<(String, bool)>,
     exporter: export::Exporter,
+    /// A launch screenshot has been asked for and not yet written.
+    screenshot_pending: bool,
     ui_ms: f64,
     frames: u64,
     launch: Launch,
@@ -182,6 +186,7 @@ impl PoundingApp {
             path: "scene.toml".into(),
             message: (!errors.is_empty()).then(|| (errors.join("; "), true)),
             exporter: export::Exporter::default(),
+            screenshot_pending: false,
             ui_ms: 0.0,
             frames: 0,
             launch,
@@ -372,6 +377,13 @@ impl eframe::App for PoundingApp {
             self.buildings.take_dropped(&ctx);
         }
         if let Some(outcome) = self.exporter.poll() {
+            if self.screenshot_pending {
+                self.screenshot_pending = false;
+                match &outcome {
+                    Ok(m) => eprintln!("{m}"),
+                    Err(e) => eprintln!("error: --screenshot: {e}"),
+                }
+            }
             self.message = Some(match outcome {
                 Ok(m) => (m, false),
                 Err(e) => (e, true),
@@ -452,7 +464,17 @@ impl eframe::App for PoundingApp {
             .exit_after_frames
             .is_some_and(|n| self.frames >= n)
         {
-            ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+            // A requested screenshot arrives a frame later and is written off-thread: close
+            // only once it is on disk.
+            if let Some(path) = self.launch.screenshot.take() {
+                self.exporter.screenshot_to(&ctx, None, path);
+                self.screenshot_pending = true;
+            }
+            if self.screenshot_pending {
+                ctx.request_repaint();
+            } else {
+                ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+            }
         }
         self.ui_ms = start.elapsed().as_secs_f64() * 1e3;
     }

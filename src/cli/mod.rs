@@ -48,6 +48,9 @@ pub struct WindowArgs {
     /// Close the window after this many frames (smoke tests, screenshots)
     #[arg(long)]
     pub exit_after_frames: Option<u64>,
+    /// Save a PNG of the window here before closing (needs --exit-after-frames)
+    #[arg(long, requires = "exit_after_frames")]
+    pub screenshot: Option<std::path::PathBuf>,
 }
 
 #[cfg(feature = "gui")]
@@ -63,6 +66,7 @@ fn window(args: &WindowArgs) -> anyhow::Result<()> {
         preset: args.preset.clone(),
         exit_after_frames: args.exit_after_frames,
         time_s: args.time,
+        screenshot: args.screenshot.clone(),
     })
 }
 
