@@ -13,29 +13,15 @@ use pounding::model::impact::solve;
 use pounding::render::bars::{BarsLayout, BarsResources, GpuHistory, diverging};
 use std::path::Path;
 
+mod common;
+
 const W: u32 = 1024;
 const H: u32 = 128;
 const FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
 const CLEAR: [f64; 3] = [0.1, 0.1, 0.1];
 
 fn device() -> Option<(wgpu::Device, wgpu::Queue, String)> {
-    let instance =
-        wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
-    let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
-        power_preference: wgpu::PowerPreference::LowPower,
-        ..Default::default()
-    }));
-    let adapter = match adapter {
-        Ok(a) => a,
-        Err(e) => {
-            assert!(
-                std::env::var_os("CI").is_none(),
-                "CI needs a wgpu adapter (Mesa lavapipe): {e}"
-            );
-            eprintln!("skipping: no wgpu adapter ({e})");
-            return None;
-        }
-    };
+    let adapter = common::adapter_or_skip()?;
     let name = format!("{:?}", adapter.get_info());
     let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
         label: Some("render test"),

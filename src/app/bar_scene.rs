@@ -384,10 +384,10 @@ fn readouts_ui(
             }
             ui.label("solve");
             ui.label(format!(
-                "{} steps of {:.3e} s, {:.3} ms",
+                "{} steps of {:.3e} s, {}",
                 r.stats.steps,
                 r.stats.dt_s,
-                solve_time.as_secs_f64() * 1e3
+                super::ms(solve_time.as_secs_f64(), 3)
             ));
             ui.label("error estimate").on_hover_text("Step doubling: the same impact with twice the step (half the mesh for FE), Richardson's |q(h) - q(2h)| / 3");
             ui.label(match estimate {
@@ -408,13 +408,7 @@ fn compare_table(ui: &mut egui::Ui, peers: &[(ModelKind, ImpactResult)]) {
         .striped(true)
         .spacing([18.0, 4.0])
         .show(ui, |ui| {
-            for h in [
-                "model",
-                "peak force [N]",
-                "duration [ms]",
-                "e",
-                "solve [ms]",
-            ] {
+            for h in ["model", "peak force [N]", "duration [ms]", "e", "solve"] {
                 ui.strong(h);
             }
             ui.end_row();
@@ -423,7 +417,7 @@ fn compare_table(ui: &mut egui::Ui, peers: &[(ModelKind, ImpactResult)]) {
                 ui.label(r.peak_force_n.map_or("-".into(), |p| format!("{p:.4e}")));
                 ui.label(format!("{:.4}", r.contact_duration_s * 1e3));
                 ui.label(format!("{:.4}", r.restitution));
-                ui.label(format!("{:.3}", r.stats.wall_time_s * 1e3));
+                ui.label(super::ms(r.stats.wall_time_s, 3));
                 ui.end_row();
             }
         });

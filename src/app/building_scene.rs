@@ -369,7 +369,7 @@ impl BuildingScene {
         self.playback.ui(ui);
         let r = &s.result;
         ui.label(format!(
-            "{} impacts ({} contacts), max force {:.4e} N, peak displacement left {:.2} mm (without pounding {:.2}), right {:.2} mm ({:.2}); solve {:.1} ms",
+            "{} impacts ({} contacts), max force {:.4e} N, peak displacement left {:.2} mm (without pounding {:.2}), right {:.2} mm ({:.2}); solve {}",
             r.impacts.len(),
             r.contacts.len(),
             r.max_pounding_force_n,
@@ -377,7 +377,7 @@ impl BuildingScene {
             s.baseline.peak_displacement_m[0] * 1e3,
             r.peak_displacement_m[1] * 1e3,
             s.baseline.peak_displacement_m[1] * 1e3,
-            self.solve_time.as_secs_f64() * 1e3
+            super::ms(self.solve_time.as_secs_f64(), 1)
         ));
         if let Some(e) = &s.estimate {
             ui.label(format!(

@@ -63,6 +63,18 @@ pub struct Launch {
     pub screenshot: Option<std::path::PathBuf>,
 }
 
+/// Set by snapshot tests: wall-clock timings (which differ run to run) print as "-".
+pub static HIDE_TIMINGS: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// A duration in seconds shown in milliseconds with `decimals`.
+fn ms(seconds: f64, decimals: usize) -> String {
+    if HIDE_TIMINGS.load(std::sync::atomic::Ordering::Relaxed) {
+        "- ms".into()
+    } else {
+        format!("{:.*} ms", decimals, seconds * 1e3)
+    }
+}
+
 pub struct PoundingApp {
     scene: SceneKind,
     bar: BarScene,
@@ -200,6 +212,11 @@ impl PoundingApp {
             SceneKind::WaveVsLumped => &mut self.compare,
             _ => &mut self.bar,
         }
+    }
+
+    /// A solve is under way in some scene.
+    pub fn is_solving(&self) -> bool {
+        self.bar.busy() || self.compare.busy() || self.buildings.busy()
     }
 
     fn playback(&mut self) -> &mut playback::Playback {
@@ -409,10 +426,10 @@ impl eframe::App for PoundingApp {
                     ),
                 };
                 ui.label(format!(
-                    "UI {:.2} ms | solve {:.3} ms | change to result {:.1} ms{}",
-                    self.ui_ms,
-                    solve.as_secs_f64() * 1e3,
-                    latency.as_secs_f64() * 1e3,
+                    "UI {} | solve {} | change to result {}{}",
+                    ms(self.ui_ms * 1e-3, 2),
+                    ms(solve.as_secs_f64(), 3),
+                    ms(latency.as_secs_f64(), 1),
                     if busy { " | solving..." } else { "" }
                 ));
                 if let Some((m, is_error)) = &self.message {

@@ -72,3 +72,26 @@ pub fn field_energy_in_frame(
 pub fn field_energy(waves: &BarWaves, density: f64, youngs: f64, t: f64, n: usize) -> f64 {
     field_energy_in_frame(waves, density, youngs, t, n, 0.0)
 }
+
+/// A wgpu adapter (Mesa's lavapipe will do), or `None` to skip a rendering test on a machine
+/// without one. Under `CI=true` a missing adapter fails instead: CI installs one.
+#[cfg(feature = "gui")]
+pub fn adapter_or_skip() -> Option<eframe::egui_wgpu::wgpu::Adapter> {
+    use eframe::egui_wgpu::wgpu;
+    let instance =
+        wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
+    match pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
+        power_preference: wgpu::PowerPreference::LowPower,
+        ..Default::default()
+    })) {
+        Ok(a) => Some(a),
+        Err(e) => {
+            assert!(
+                std::env::var_os("CI").is_none(),
+                "CI needs a wgpu adapter (Mesa lavapipe): {e}"
+            );
+            eprintln!("skipping: no wgpu adapter ({e})");
+            None
+        }
+    }
+}
