@@ -446,6 +446,27 @@ fn impact_and_buildings_write_their_force_plot_as_png_or_svg() {
             && text.contains("pounding force [MN]")
             && text.trim_end().ends_with("</svg>")
     );
+    let big = dir.join("big.png");
+    let o = pounding(&[
+        "impact",
+        "--plot",
+        big.to_str().unwrap(),
+        "--plot-size",
+        "1500x900",
+        "--plot-scale",
+        "1.5",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let info = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(&big).unwrap()))
+        .read_info()
+        .unwrap()
+        .info()
+        .clone();
+    assert_eq!((info.width, info.height), (1500, 900));
+    for (flag, value) in [("--plot-size", "20x20"), ("--plot-scale", "0")] {
+        let err = stderr(&pounding(&["impact", "--plot", "x.png", flag, value]));
+        assert!(err.contains(flag) && err.contains("expected"), "{err}");
+    }
     let err = stderr(&pounding(&["impact", "--plot", "/nonexistent-dir/f.png"]));
     assert!(
         err.contains("--plot") && err.contains("/nonexistent-dir/f.png"),

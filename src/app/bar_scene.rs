@@ -153,6 +153,18 @@ impl BarScene {
         }
     }
 
+    /// The plots on screen last frame, by export name.
+    pub fn shown_plots(&self) -> Vec<(&'static str, &ShownPlot)> {
+        let mut plots = vec![];
+        if self.solved.is_some() {
+            plots.push(("force", &self.shown_force));
+            if !self.compare {
+                plots.push(("approach", &self.shown_approach));
+            }
+        }
+        plots
+    }
+
     pub fn main_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
         if let Some(e) = &self.error {
             ui.colored_label(Color32::from_rgb(220, 60, 50), e);

@@ -56,6 +56,8 @@ pub struct BuildingScene {
     version: u64,
     /// The view's rectangle last frame (for a screenshot of the view alone).
     pub view_rect: Option<egui::Rect>,
+    shown_displacements: ShownPlot,
+    shown_force: ShownPlot,
 }
 
 fn run_job(setup: BuildingSetup) -> Output {
@@ -153,6 +155,8 @@ impl BuildingScene {
             motion_path: String::new(),
             version: 0,
             view_rect: None,
+            shown_displacements: ShownPlot::default(),
+            shown_force: ShownPlot::default(),
         };
         s.request();
         s
@@ -336,6 +340,16 @@ impl BuildingScene {
         }
     }
 
+    /// The plots on screen last frame, by export name.
+    pub fn shown_plots(&self) -> Vec<(&'static str, &ShownPlot)> {
+        let mut plots = vec![];
+        if self.solved.is_some() {
+            plots.push(("displacements", &self.shown_displacements));
+            plots.push(("force", &self.shown_force));
+        }
+        plots
+    }
+
     pub fn main_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
         if let Some(e) = &self.error {
             ui.colored_label(Color32::from_rgb(220, 60, 50), e);
@@ -424,17 +438,14 @@ impl BuildingScene {
                 p.vline(VLine::new("t", t));
             });
         let b = disp_plot.transform.bounds();
-        exporter.buttons(
-            ui,
-            &ShownPlot {
-                title: "Roof displacements with and without pounding".into(),
-                x_label: "time [s]".into(),
-                y_label: "displacement [mm]".into(),
-                series: disp_lines,
-                bounds: Some((b.min(), b.max())),
-            },
-            "displacements",
-        );
+        self.shown_displacements = ShownPlot {
+            title: "Roof displacements with and without pounding".into(),
+            x_label: "time [s]".into(),
+            y_label: "displacement [mm]".into(),
+            series: disp_lines,
+            bounds: Some((b.min(), b.max())),
+        };
+        exporter.buttons(ui, &self.shown_displacements, "displacements");
         let zoom = self.zoom.take();
         let force_pts = pts(&r.time_s, &r.force_n, 1e-6);
         let force_plot = Plot::new("b-force")
@@ -453,17 +464,14 @@ impl BuildingScene {
                 }
             });
         let b = force_plot.transform.bounds();
-        exporter.buttons(
-            ui,
-            &ShownPlot {
-                title: format!("Pounding force: {} contact", r.contact.name()),
-                x_label: "time [s]".into(),
-                y_label: "pounding force [MN]".into(),
-                series: vec![("force".into(), force_pts)],
-                bounds: Some((b.min(), b.max())),
-            },
-            "force",
-        );
+        self.shown_force = ShownPlot {
+            title: format!("Pounding force: {} contact", r.contact.name()),
+            x_label: "time [s]".into(),
+            y_label: "pounding force [MN]".into(),
+            series: vec![("force".into(), force_pts)],
+            bounds: Some((b.min(), b.max())),
+        };
+        exporter.buttons(ui, &self.shown_force, "force");
         ui.label("impacts (click one here or in the force plot to zoom on it):");
         let mut clicked = None;
         // A click in the force plot picks the impact nearest in time.

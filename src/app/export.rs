@@ -56,6 +56,8 @@ pub struct Exporter {
     pub prefix: String,
     /// Pixel size of PNG exports.
     pub size: [u32; 2],
+    /// Text and line scale of plot exports.
+    pub scale: f64,
     done_tx: Sender<Result<String, String>>,
     done_rx: Receiver<Result<String, String>>,
 }
@@ -66,6 +68,7 @@ impl Default for Exporter {
         Exporter {
             prefix: "pounding".into(),
             size: [1600, 900],
+            scale: 1.0,
             done_tx,
             done_rx,
         }
@@ -85,6 +88,7 @@ impl Exporter {
         let path = PathBuf::from(format!("{}-{name}.{ext}", self.prefix));
         let plot = plot.clone();
         let size = (self.size[0], self.size[1]);
+        let scale = self.scale;
         let is_csv = ext == "csv";
         self.spawn(move || {
             let shown = path.display().to_string();
@@ -101,6 +105,7 @@ impl Exporter {
                     series: plot.visible(),
                     size,
                     markers: false,
+                    scale,
                     x_range: plot.bounds.map(|(a, b)| (a[0], b[0])),
                     y_range: plot.bounds.map(|(a, b)| (a[1], b[1])),
                 }

@@ -230,6 +230,9 @@ impl PoundingApp {
     fn top_bar(&mut self, ui: &mut egui::Ui) {
         ui.horizontal_wrapped(|ui| {
             ui.strong("Pounding Lab");
+            ui.menu_button("File", |ui| self.file_menu(ui))
+                .response
+                .on_hover_text("Exports: plots, screenshots");
             ui.separator();
             ui.selectable_value(&mut self.scene, SceneKind::BarImpact, "Bar impact")
                 .on_hover_text("One impact, one model, every readout");
@@ -272,28 +275,6 @@ impl PoundingApp {
                 });
             }
             ui.separator();
-            ui.label("export to")
-                .on_hover_text("Folder and name stem of exported plots and screenshots");
-            ui.add(egui::TextEdit::singleline(&mut self.exporter.prefix).desired_width(140.0));
-            if ui
-                .button("Screenshot")
-                .on_hover_text("The whole window as PNG")
-                .clicked()
-            {
-                self.exporter.screenshot(ui.ctx(), None, "window");
-            }
-            let view = match self.scene {
-                SceneKind::BarImpact => self.bar.view_rect,
-                SceneKind::WaveVsLumped => self.compare.view_rect,
-                SceneKind::Buildings => self.buildings.view_rect,
-            };
-            if ui
-                .add_enabled(view.is_some(), egui::Button::new("View PNG"))
-                .on_hover_text("The animated view alone as PNG")
-                .clicked()
-            {
-                self.exporter.screenshot(ui.ctx(), view, "view");
-            }
             if ui
                 .button("Help")
                 .on_hover_text("Keyboard and what you see (F1)")
@@ -302,6 +283,75 @@ impl PoundingApp {
                 self.help = !self.help;
             }
         });
+    }
+
+    fn file_menu(&mut self, ui: &mut egui::Ui) {
+        let e = &mut self.exporter;
+        ui.horizontal(|ui| {
+            ui.label("export to")
+                .on_hover_text("Folder and name stem: files are <this>-<plot>.<ext>");
+            ui.add(egui::TextEdit::singleline(&mut e.prefix).desired_width(180.0));
+        });
+        ui.horizontal(|ui| {
+            ui.label("PNG size");
+            ui.add(
+                egui::DragValue::new(&mut e.size[0])
+                    .range(200..=8000)
+                    .suffix(" px"),
+            );
+            ui.label("x");
+            ui.add(
+                egui::DragValue::new(&mut e.size[1])
+                    .range(150..=8000)
+                    .suffix(" px"),
+            );
+        });
+        ui.horizontal(|ui| {
+            ui.label("text and line scale");
+            ui.add(
+                egui::DragValue::new(&mut e.scale)
+                    .range(0.5..=4.0)
+                    .speed(0.05),
+            );
+        })
+        .response
+        .on_hover_text("2 draws text and lines twice as large (e.g. a 3200 x 1800 PNG for print)");
+        ui.separator();
+        let plots = match self.scene {
+            SceneKind::BarImpact => self.bar.shown_plots(),
+            SceneKind::WaveVsLumped => self.compare.shown_plots(),
+            SceneKind::Buildings => self.buildings.shown_plots(),
+        };
+        if ui
+            .add_enabled(
+                !plots.is_empty(),
+                egui::Button::new("Export every plot (PNG, SVG, CSV)"),
+            )
+            .clicked()
+        {
+            for (name, plot) in plots {
+                for ext in ["png", "svg", "csv"] {
+                    self.exporter.export(plot, name, ext);
+                }
+            }
+            ui.close();
+        }
+        if ui.button("Screenshot of the window").clicked() {
+            self.exporter.screenshot(ui.ctx(), None, "window");
+            ui.close();
+        }
+        let view = match self.scene {
+            SceneKind::BarImpact => self.bar.view_rect,
+            SceneKind::WaveVsLumped => self.compare.view_rect,
+            SceneKind::Buildings => self.buildings.view_rect,
+        };
+        if ui
+            .add_enabled(view.is_some(), egui::Button::new("Screenshot of the view"))
+            .clicked()
+        {
+            self.exporter.screenshot(ui.ctx(), view, "view");
+            ui.close();
+        }
     }
 
     fn preset_ui(&mut self, ui: &mut egui::Ui) {

@@ -323,6 +323,7 @@ pub fn run(args: &AccuracyArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             series,
             size: (900, 620),
             markers: true,
+            scale: 1.0,
             x_range: None,
             y_range: None,
         }

@@ -104,8 +104,9 @@ pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 name: result.contact.name().into(),
                 points,
             }],
-            size: (1200, 600),
+            size: args.common.plot_size.unwrap_or((1200, 600)),
             markers: false,
+            scale: args.common.plot_scale,
             x_range: None,
             y_range: None,
         }

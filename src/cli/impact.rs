@@ -65,8 +65,9 @@ pub fn run(args: &ImpactArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 name: setup.model.name().into(),
                 points,
             }],
-            size: (1000, 600),
+            size: args.common.plot_size.unwrap_or((1000, 600)),
             markers: false,
+            scale: args.common.plot_scale,
             x_range: None,
             y_range: None,
         }

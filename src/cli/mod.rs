@@ -108,6 +108,12 @@ pub struct SceneArgs {
     /// Write the force plot as an image (.png or .svg, by the extension)
     #[arg(long, value_name = "FILE")]
     pub plot: Option<std::path::PathBuf>,
+    /// Pixel size of a PNG --plot, e.g. 3000x1800 [default: the scene's]
+    #[arg(long, value_name = "WxH", value_parser = parse_plot_size)]
+    pub plot_size: Option<(u32, u32)>,
+    /// Text and line size of --plot relative to the default (0.25 to 8)
+    #[arg(long, value_name = "X", default_value_t = 1.0, value_parser = parse_plot_scale)]
+    pub plot_scale: f64,
     /// Print one JSON object instead of the summary
     #[arg(long)]
     pub json: bool,
@@ -117,6 +123,27 @@ pub struct SceneArgs {
     /// List the shipped presets, and exit
     #[arg(long)]
     pub list_presets: bool,
+}
+
+fn parse_plot_size(text: &str) -> Result<(u32, u32), String> {
+    let bad = || format!("'{text}': expected WIDTHxHEIGHT in pixels, each 100 to 10000");
+    let (w, h) = text.split_once(['x', 'X']).ok_or_else(bad)?;
+    let (w, h): (u32, u32) = (
+        w.trim().parse().map_err(|_| bad())?,
+        h.trim().parse().map_err(|_| bad())?,
+    );
+    if (100..=10_000).contains(&w) && (100..=10_000).contains(&h) {
+        Ok((w, h))
+    } else {
+        Err(bad())
+    }
+}
+
+fn parse_plot_scale(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(v) if (0.25..=8.0).contains(&v) => Ok(v),
+        _ => Err(format!("'{text}': expected a number from 0.25 to 8")),
+    }
 }
 
 /// Writes one `name  description` line per entry (the --list-keys and --list-presets output).

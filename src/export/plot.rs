@@ -22,6 +22,8 @@ pub struct LinePlot {
     pub size: (u32, u32),
     /// A dot at each point (for a few points, like a ladder's rungs).
     pub markers: bool,
+    /// Text and line size relative to the defaults (2 for print at twice the density).
+    pub scale: f64,
     /// Axis ranges (what a window shows); `None` fits the data.
     pub x_range: Option<(f64, f64)>,
     pub y_range: Option<(f64, f64)>,
@@ -122,12 +124,14 @@ impl LinePlot {
         let (y0, y1) = self
             .y_range
             .unwrap_or_else(|| self.range(self.log_y, |p| p.1));
+        let k = self.scale.clamp(0.25, 8.0);
+        let px = |v: f64| (v * k).round().max(1.0) as u32;
         let mut builder = ChartBuilder::on(&area);
         builder
-            .caption(&self.title, ("sans-serif", 22))
-            .margin(14)
-            .x_label_area_size(44)
-            .y_label_area_size(70);
+            .caption(&self.title, ("sans-serif", px(22.0)))
+            .margin(px(14.0))
+            .x_label_area_size(px(44.0))
+            .y_label_area_size(px(70.0));
         macro_rules! finish {
             ($chart:expr) => {{
                 let mut chart = $chart;
@@ -146,8 +150,8 @@ impl LinePlot {
                     .y_desc(self.y_label.as_str())
                     .x_label_formatter(&tick(self.log_x))
                     .y_label_formatter(&tick(self.log_y))
-                    .label_style(("sans-serif", 14))
-                    .axis_desc_style(("sans-serif", 16))
+                    .label_style(("sans-serif", px(14.0)))
+                    .axis_desc_style(("sans-serif", px(16.0)))
                     .draw()
                     .map_err(|e| e.to_string())?;
                 for (i, s) in self.series.iter().enumerate() {
@@ -164,15 +168,21 @@ impl LinePlot {
                         })
                         .collect();
                     chart
-                        .draw_series(LineSeries::new(pts.clone(), colour.stroke_width(2)))
+                        .draw_series(LineSeries::new(pts.clone(), colour.stroke_width(px(2.0))))
                         .map_err(|e| e.to_string())?
                         .label(s.name.as_str())
                         .legend(move |(x, y)| {
-                            PathElement::new(vec![(x, y), (x + 18, y)], colour.stroke_width(2))
+                            PathElement::new(
+                                vec![(x, y), (x + px(18.0) as i32, y)],
+                                colour.stroke_width(px(2.0)),
+                            )
                         });
                     if self.markers {
                         chart
-                            .draw_series(pts.iter().map(|&p| Circle::new(p, 3, colour.filled())))
+                            .draw_series(
+                                pts.iter()
+                                    .map(|&p| Circle::new(p, px(3.0), colour.filled())),
+                            )
                             .map_err(|e| e.to_string())?;
                     }
                 }
@@ -180,7 +190,8 @@ impl LinePlot {
                     .configure_series_labels()
                     .background_style(WHITE.mix(0.85))
                     .border_style(BLACK)
-                    .label_font(("sans-serif", 14))
+                    .legend_area_size(px(30.0))
+                    .label_font(("sans-serif", px(14.0)))
                     .draw()
                     .map_err(|e| e.to_string())?;
             }};
