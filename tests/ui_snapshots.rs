@@ -29,9 +29,6 @@ fn snapshot(scene: SceneKind, time_s: f64, name: &str) {
     let mut harness = Harness::builder()
         .with_size(egui::vec2(1280.0, 860.0))
         .wgpu()
-        // Typed fields sit beside their labels without being tied to them for screen readers
-        // yet (kittest's accessibility check lists them); that is a separate piece of work.
-        .with_accessibility_check(false)
         .build_eframe(|cc| PoundingApp::new(cc, launch));
     // Solves run on worker threads: step until all of them have landed and stayed so.
     let start = Instant::now();

@@ -253,11 +253,13 @@ impl BuildingScene {
             .show(ui, |ui| {
                 let m = &mut self.setup.motion;
                 ui.horizontal(|ui| {
+                    let label = ui.label("file").id;
                     ui.add(
                         egui::TextEdit::singleline(&mut self.motion_path)
                             .hint_text(".AT2 or text file (or drop one here)")
-                            .desired_width(200.0),
-                    );
+                            .desired_width(170.0),
+                    )
+                    .labelled_by(label);
                     if ui.button("Load").clicked() {
                         m.file = (!self.motion_path.trim().is_empty())
                             .then(|| self.motion_path.trim().to_string());
@@ -376,9 +378,12 @@ impl BuildingScene {
         draw_buildings(ui, rect, s, self.playback.t, self.exaggeration);
         self.view_rect = Some(rect);
         ui.horizontal(|ui| {
-            ui.label("exaggeration")
-                .on_hover_text("The buildings' drift is drawn this many times larger");
-            ui.add(egui::Slider::new(&mut self.exaggeration, 1.0..=500.0).logarithmic(true));
+            let label = ui
+                .label("exaggeration")
+                .on_hover_text("The buildings' drift is drawn this many times larger")
+                .id;
+            ui.add(egui::Slider::new(&mut self.exaggeration, 1.0..=500.0).logarithmic(true))
+                .labelled_by(label);
         });
         self.playback.ui(ui);
         let r = &s.result;

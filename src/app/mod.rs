@@ -288,31 +288,37 @@ impl PoundingApp {
     fn file_menu(&mut self, ui: &mut egui::Ui) {
         let e = &mut self.exporter;
         ui.horizontal(|ui| {
-            ui.label("export to")
-                .on_hover_text("Folder and name stem: files are <this>-<plot>.<ext>");
-            ui.add(egui::TextEdit::singleline(&mut e.prefix).desired_width(180.0));
+            let label = ui
+                .label("export to")
+                .on_hover_text("Folder and name stem: files are <this>-<plot>.<ext>")
+                .id;
+            ui.add(egui::TextEdit::singleline(&mut e.prefix).desired_width(180.0))
+                .labelled_by(label);
         });
         ui.horizontal(|ui| {
-            ui.label("PNG size");
+            let label = ui.label("PNG size (width x height)").id;
             ui.add(
                 egui::DragValue::new(&mut e.size[0])
                     .range(200..=8000)
                     .suffix(" px"),
-            );
+            )
+            .labelled_by(label);
             ui.label("x");
             ui.add(
                 egui::DragValue::new(&mut e.size[1])
                     .range(150..=8000)
                     .suffix(" px"),
-            );
+            )
+            .labelled_by(label);
         });
         ui.horizontal(|ui| {
-            ui.label("text and line scale");
+            let label = ui.label("text and line scale").id;
             ui.add(
                 egui::DragValue::new(&mut e.scale)
                     .range(0.5..=4.0)
                     .speed(0.05),
-            );
+            )
+            .labelled_by(label);
         })
         .response
         .on_hover_text("2 draws text and lines twice as large (e.g. a 3200 x 1800 PNG for print)");
@@ -355,6 +361,7 @@ impl PoundingApp {
     }
 
     fn preset_ui(&mut self, ui: &mut egui::Ui) {
+        let label = ui.label("preset").id;
         egui::ComboBox::from_id_salt("preset")
             .selected_text(&self.preset_choice)
             .show_ui(ui, |ui| {
@@ -365,7 +372,9 @@ impl PoundingApp {
                     ui.selectable_value(&mut self.preset_choice, name.to_string(), *name)
                         .on_hover_text(preset::description(text).unwrap_or_default());
                 }
-            });
+            })
+            .response
+            .labelled_by(label);
         if ui
             .button("Load preset")
             .on_hover_text("Replace the scene's parameters by the preset")
@@ -383,7 +392,9 @@ impl PoundingApp {
             self.message = self.current().load_preset(&name).err().map(|e| (e, true));
         }
         ui.separator();
+        let label = ui.label("scene file").id;
         ui.add(egui::TextEdit::singleline(&mut self.path).desired_width(140.0))
+            .labelled_by(label)
             .on_hover_text("A TOML scene file");
         if ui.button("Open").clicked() {
             let path = self.path.clone();

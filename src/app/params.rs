@@ -26,13 +26,19 @@ impl Fields {
     pub fn row(&mut self, ui: &mut egui::Ui, id: &str, spec: &Spec, value: &mut f64) -> bool {
         let mut changed = false;
         ui.horizontal(|ui| {
-            ui.label(spec.label).on_hover_text(spec.tooltip);
+            // The label names the slider and the field for screen readers too.
+            let label = ui.label(spec.label).on_hover_text(spec.tooltip).id;
             let mut v = value.clamp(spec.min, spec.max);
             let slider = egui::Slider::new(&mut v, spec.min..=spec.max)
                 .logarithmic(spec.log)
                 .show_value(false)
                 .clamping(egui::SliderClamping::Always);
-            if ui.add(slider).on_hover_text(spec.tooltip).changed() {
+            if ui
+                .add(slider)
+                .labelled_by(label)
+                .on_hover_text(spec.tooltip)
+                .changed()
+            {
                 *value = v;
                 changed = true;
                 self.text.remove(id);
@@ -48,11 +54,13 @@ impl Fields {
             {
                 *shown = format_value(*value);
             }
-            let response = ui.add(
-                egui::TextEdit::singleline(shown)
-                    .id(egui::Id::unique(("field", id)))
-                    .desired_width(80.0),
-            );
+            let response = ui
+                .add(
+                    egui::TextEdit::singleline(shown)
+                        .id(egui::Id::unique(("field", id)))
+                        .desired_width(80.0),
+                )
+                .labelled_by(label);
             let commit = response.lost_focus()
                 || (response.has_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)));
             if commit {

@@ -65,20 +65,25 @@ impl Playback {
                 restart = true;
                 self.t = 0.0;
             }
-            ui.label("speed").on_hover_text(
-                "Simulated time per real second: 1e-4 shows a millisecond impact over 10 s",
-            );
+            let label = ui
+                .label("speed")
+                .on_hover_text(
+                    "Simulated time per real second: 1e-4 shows a millisecond impact over 10 s",
+                )
+                .id;
             ui.add(
                 egui::Slider::new(&mut self.speed, 1e-7..=10.0)
                     .logarithmic(true)
                     .custom_formatter(|v, _| format!("{v:.1e} s/s")),
-            );
+            )
+            .labelled_by(label);
             let t_max = self.t_max;
-            ui.label("t");
+            let label = ui.label("t").on_hover_text("Animation time").id;
             ui.add(
                 egui::Slider::new(&mut self.t, 0.0..=t_max)
                     .custom_formatter(|v, _| format!("{:.4} ms", v * 1e3)),
-            );
+            )
+            .labelled_by(label);
         });
         restart
     }
