@@ -342,6 +342,13 @@ impl BuildingScene {
         }
     }
 
+    /// Loads a ground-motion file (a path typed, dropped or chosen in a dialog).
+    pub fn load_motion(&mut self, path: String) {
+        self.motion_path = path;
+        self.setup.motion.file = Some(self.motion_path.trim().to_string());
+        self.request();
+    }
+
     /// The plots on screen last frame, by export name.
     pub fn shown_plots(&self) -> Vec<(&'static str, &ShownPlot)> {
         let mut plots = vec![];

@@ -4,6 +4,7 @@
 mod bar_scene;
 mod bar_view;
 mod building_scene;
+mod dialog;
 mod export;
 mod impact_params;
 mod params;
@@ -86,6 +87,7 @@ pub struct PoundingApp {
     path: String,
     message: Option<(String, bool)>,
     exporter: export::Exporter,
+    dialogs: dialog::Dialogs,
     /// A launch screenshot has been asked for and not yet written.
     screenshot_pending: bool,
     ui_ms: f64,
@@ -198,6 +200,7 @@ impl PoundingApp {
             path: "scene.toml".into(),
             message: (!errors.is_empty()).then(|| (errors.join("; "), true)),
             exporter: export::Exporter::default(),
+            dialogs: dialog::Dialogs::default(),
             screenshot_pending: false,
             ui_ms: 0.0,
             frames: 0,
@@ -286,6 +289,25 @@ impl PoundingApp {
     }
 
     fn file_menu(&mut self, ui: &mut egui::Ui) {
+        if self.scene != SceneKind::Buildings {
+            if ui.button("Open scene...").clicked() {
+                self.dialogs.ask(dialog::Purpose::OpenScene, &self.path);
+                ui.close();
+            }
+            if ui.button("Save scene as...").clicked() {
+                self.dialogs.ask(dialog::Purpose::SaveScene, &self.path);
+                ui.close();
+            }
+        } else if ui.button("Open ground motion...").clicked() {
+            self.dialogs.ask(dialog::Purpose::Motion, "");
+            ui.close();
+        }
+        if ui.button("Choose export folder...").clicked() {
+            self.dialogs
+                .ask(dialog::Purpose::ExportFolder, &self.exporter.prefix);
+            ui.close();
+        }
+        ui.separator();
         let e = &mut self.exporter;
         ui.horizontal(|ui| {
             let label = ui
@@ -397,18 +419,53 @@ impl PoundingApp {
             .labelled_by(label)
             .on_hover_text("A TOML scene file");
         if ui.button("Open").clicked() {
-            let path = self.path.clone();
-            self.message = Some(match self.current().load_preset(&path) {
-                Ok(()) => (format!("loaded {path}"), false),
-                Err(e) => (e, true),
-            });
+            self.open_scene();
         }
         if ui.button("Save").clicked() {
-            let text = preset::impact_to_toml(&self.current().setup);
-            self.message = Some(match std::fs::write(&self.path, text) {
-                Ok(()) => (format!("saved {}", self.path), false),
-                Err(e) => (format!("could not save {}: {e}", self.path), true),
-            });
+            self.save_scene();
+        }
+    }
+
+    fn open_scene(&mut self) {
+        let path = self.path.clone();
+        self.message = Some(match self.current().load_preset(&path) {
+            Ok(()) => (format!("loaded {path}"), false),
+            Err(e) => (e, true),
+        });
+    }
+
+    fn save_scene(&mut self) {
+        let text = preset::impact_to_toml(&self.current().setup);
+        self.message = Some(match std::fs::write(&self.path, text) {
+            Ok(()) => (format!("saved {}", self.path), false),
+            Err(e) => (format!("could not save {}: {e}", self.path), true),
+        });
+    }
+
+    /// Acts on a file dialog that has closed.
+    fn dialog_done(&mut self) {
+        let Some((purpose, chosen)) = self.dialogs.poll() else {
+            return;
+        };
+        let Some(path) = chosen else {
+            self.message = Some((dialog::NOTHING_CHOSEN.into(), false));
+            return;
+        };
+        let shown = path.display().to_string();
+        match purpose {
+            dialog::Purpose::OpenScene => {
+                self.path = shown;
+                self.open_scene();
+            }
+            dialog::Purpose::SaveScene => {
+                self.path = shown;
+                self.save_scene();
+            }
+            dialog::Purpose::ExportFolder => {
+                self.exporter.prefix = path.join("pounding").display().to_string();
+                self.message = Some((format!("exports go to {shown}"), false));
+            }
+            dialog::Purpose::Motion => self.buildings.load_motion(shown),
         }
     }
 
@@ -453,6 +510,10 @@ impl eframe::App for PoundingApp {
         self.buildings.poll();
         if self.scene == SceneKind::Buildings {
             self.buildings.take_dropped(&ctx);
+        }
+        self.dialog_done();
+        if self.dialogs.is_open() {
+            ctx.request_repaint_after(std::time::Duration::from_millis(100));
         }
         if let Some(outcome) = self.exporter.poll() {
             if self.screenshot_pending {
