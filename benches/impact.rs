@@ -57,9 +57,34 @@ fn fe_fine_mesh(c: &mut Criterion) {
     });
 }
 
+/// The floor: 1000 Sears solves of the base case, bar 2 from 0.5 m to 10 m, in parallel,
+/// at most 1 s of wall time (the whole command, table written to a sink).
+fn sweep_1000(c: &mut Criterion) {
+    use pounding::cli::sweep::{SweepArgs, run};
+    let args = SweepArgs {
+        param: "bar2.length".into(),
+        from: 0.5,
+        to: 10.0,
+        count: 1000,
+        log: false,
+        models: vec!["sears".into()],
+        preset: None,
+        set: vec![],
+        csv: None,
+        plot: None,
+        json: false,
+    };
+    let mut group = c.benchmark_group("sweep");
+    group.sample_size(10);
+    group.bench_function("sears_1000_bar2_length", |b| {
+        b.iter(|| run(black_box(&args), &mut std::io::sink()).expect("sweeps"))
+    });
+    group.finish();
+}
+
 criterion_group! {
     name = benches;
     config = Criterion::default().sample_size(30).warm_up_time(std::time::Duration::from_millis(500)).measurement_time(std::time::Duration::from_secs(2));
-    targets = base_case, sears_step_cost_against_length, fe_fine_mesh
+    targets = base_case, sears_step_cost_against_length, fe_fine_mesh, sweep_1000
 }
 criterion_main!(benches);

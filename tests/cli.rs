@@ -474,3 +474,179 @@ fn impact_and_buildings_write_their_force_plot_as_png_or_svg() {
     );
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn a_sweep_point_is_the_same_impact_solved_alone() {
+    let v = json(&[
+        "sweep",
+        "--param",
+        "bar2.length",
+        "--from",
+        "0.5",
+        "--to",
+        "10",
+        "--count",
+        "5",
+    ]);
+    assert_eq!(v["solves"].as_u64(), Some(5));
+    assert!(v["wall_time_s"].as_f64().unwrap() > 0.0);
+    let values: Vec<f64> = v["values"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
+    assert_eq!(values, vec![0.5, 2.875, 5.25, 7.625, 10.0]);
+    for i in [0, 3] {
+        let point = &v["points"][i];
+        let alone = json(&["impact", "--set", &format!("bar2.length={}", values[i])]);
+        assert_eq!(point["value"].as_f64(), Some(values[i]));
+        assert_eq!(
+            point["peak_force_n"], alone["peak_force_n"],
+            "at {}",
+            values[i]
+        );
+        assert_eq!(
+            point["restitution"], alone["restitution"],
+            "at {}",
+            values[i]
+        );
+    }
+}
+
+#[test]
+fn wave_theory_peak_force_does_not_depend_on_the_struck_bar_length() {
+    // Z1 Z2 / (Z1 + Z2) v for equal steel rods: the length only sets how long the force lasts.
+    let v = json(&[
+        "sweep",
+        "--param",
+        "bar2.length",
+        "--from",
+        "0.5",
+        "--to",
+        "20",
+        "--count",
+        "12",
+        "--log",
+        "--model",
+        "wave",
+        "--model",
+        "sears",
+    ]);
+    assert_eq!(v["solves"].as_u64(), Some(24));
+    let points = v["points"].as_array().unwrap();
+    let wave: Vec<f64> = points
+        .iter()
+        .filter(|p| p["model"] == "wave")
+        .map(|p| p["peak_force_n"].as_f64().unwrap())
+        .collect();
+    assert_eq!(wave.len(), 12);
+    for f in &wave {
+        assert!((f - wave[0]).abs() <= 1e-9 * wave[0], "{wave:?}");
+    }
+    // Geometric spacing, ends included.
+    let values = v["values"].as_array().unwrap();
+    assert_eq!(values[0].as_f64(), Some(0.5));
+    assert!((values[11].as_f64().unwrap() - 20.0).abs() < 1e-12);
+    let ratio = values[1].as_f64().unwrap() / values[0].as_f64().unwrap();
+    assert!((ratio - 40f64.powf(1.0 / 11.0)).abs() < 1e-12);
+}
+
+#[test]
+fn sweep_writes_csv_and_plot_and_refuses_bad_ranges_by_name() {
+    let dir = std::env::temp_dir().join(format!("pounding-sweep-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (csv, svg) = (dir.join("s.csv"), dir.join("s.svg"));
+    let o = pounding(&[
+        "sweep",
+        "--param",
+        "bar1.velocity",
+        "--from",
+        "0.1",
+        "--to",
+        "5",
+        "--count",
+        "4",
+        "--csv",
+        csv.to_str().unwrap(),
+        "--plot",
+        svg.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stdout(&o).contains("4 solves in"), "{}", stdout(&o));
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next(),
+        Some("bar1.velocity,model,peak_force_n,contact_duration_s,restitution,contacts,error")
+    );
+    assert_eq!(lines.count(), 4);
+    assert!(
+        std::fs::read_to_string(&svg)
+            .unwrap()
+            .contains("peak force [kN]")
+    );
+    for (args, want) in [
+        (
+            vec!["--param", "bar9.length", "--from", "1", "--to", "2"],
+            "--param",
+        ),
+        (
+            vec!["--param", "model", "--from", "1", "--to", "2"],
+            "--param",
+        ),
+        (
+            vec![
+                "--param",
+                "bar2.length",
+                "--from",
+                "0",
+                "--to",
+                "2",
+                "--log",
+            ],
+            "--log",
+        ),
+        (
+            vec![
+                "--param",
+                "bar2.length",
+                "--from",
+                "1",
+                "--to",
+                "2",
+                "--count",
+                "1",
+            ],
+            "--count",
+        ),
+        (
+            vec!["--param", "bar2.length", "--from", "-1", "--to", "2"],
+            "bar2.length=-1",
+        ),
+        (
+            vec![
+                "--param",
+                "bar2.length",
+                "--from",
+                "1",
+                "--to",
+                "2",
+                "--model",
+                "x",
+            ],
+            "--model",
+        ),
+    ] {
+        let mut all = vec!["sweep"];
+        all.extend(args);
+        let o = pounding(&all);
+        assert!(!o.status.success());
+        let err = stderr(&o);
+        assert!(
+            err.contains(want) && !err.contains("panicked"),
+            "{all:?}: {err}"
+        );
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}

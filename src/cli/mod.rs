@@ -5,6 +5,7 @@ pub mod building_report;
 pub mod buildings;
 pub mod impact;
 pub mod report;
+pub mod sweep;
 
 use clap::{Parser, Subcommand};
 
@@ -28,6 +29,9 @@ pub enum Command {
     /// Error against run time: every model on a ladder of steps (FE: meshes) against a much finer
     /// solve, with the observed order; a table, CSV and a work-precision plot.
     Accuracy(accuracy::AccuracyArgs),
+    /// Vary one impact setting over a range (solved in parallel): peak force, contact duration
+    /// and e against it for each model.
+    Sweep(sweep::SweepArgs),
     /// Open the explorer window (what `pounding` with no command does).
     #[cfg(feature = "gui")]
     Window(WindowArgs),
@@ -76,6 +80,7 @@ pub fn run(cli: Cli, out: &mut dyn std::io::Write) -> anyhow::Result<()> {
         Some(Command::Impact(args)) => impact::run(&args, out),
         Some(Command::Buildings(args)) => buildings::run(&args, out),
         Some(Command::Accuracy(args)) => accuracy::run(&args, out),
+        Some(Command::Sweep(args)) => sweep::run(&args, out),
         #[cfg(feature = "gui")]
         Some(Command::Window(args)) => window(&args),
         #[cfg(feature = "gui")]
