@@ -62,17 +62,13 @@ fn fe_fine_mesh(c: &mut Criterion) {
 fn sweep_1000(c: &mut Criterion) {
     use pounding::cli::sweep::{SweepArgs, run};
     let args = SweepArgs {
-        param: "bar2.length".into(),
-        from: 0.5,
-        to: 10.0,
+        param: Some("bar2.length".into()),
+        from: Some(0.5),
+        to: Some(10.0),
         count: 1000,
         log: false,
         models: vec!["sears".into()],
-        preset: None,
-        set: vec![],
-        csv: None,
-        plot: None,
-        json: false,
+        common: Default::default(),
     };
     let mut group = c.benchmark_group("sweep");
     group.sample_size(10);

@@ -2,6 +2,8 @@
 
 use std::process::{Command, Output};
 
+mod common;
+
 fn pounding(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_pounding"))
         .args(args)
@@ -58,23 +60,13 @@ fn the_window_starts_draws_and_closes_on_request() {
     if has_display {
         assert!(o.status.success(), "{}", stderr(&o));
         // The frame it drew is not blank: many colours, and no one colour covers most of it.
-        let decoder = png::Decoder::new(std::io::BufReader::new(
-            std::fs::File::open(&shot).expect("the screenshot was written"),
-        ));
-        let mut reader = decoder.read_info().expect("a PNG");
-        let mut rgba = vec![0; reader.output_buffer_size().unwrap()];
-        let info = reader.next_frame(&mut rgba).expect("decodes");
-        assert!(
-            info.width >= 400 && info.height >= 300,
-            "{}x{}",
-            info.width,
-            info.height
-        );
+        let (width, height, _, rgba) = common::read_png(&shot);
+        assert!(width >= 400 && height >= 300, "{}x{}", width, height);
         let mut counts = std::collections::HashMap::new();
         for px in rgba.chunks(4) {
             *counts.entry([px[0], px[1], px[2]]).or_insert(0usize) += 1;
         }
-        let pixels = (info.width * info.height) as usize;
+        let pixels = (width * height) as usize;
         let commonest = counts.values().copied().max().unwrap();
         assert!(counts.len() > 200, "only {} colours", counts.len());
         assert!(
@@ -417,11 +409,8 @@ fn impact_and_buildings_write_their_force_plot_as_png_or_svg() {
             .status
             .success()
     );
-    let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(&png).unwrap()));
-    let mut reader = decoder.read_info().expect("a PNG");
-    let mut pixels = vec![0; reader.output_buffer_size().unwrap()];
-    let info = reader.next_frame(&mut pixels).expect("decodes");
-    assert_eq!((info.width, info.height), (1000, 600));
+    let (width, height, _, pixels) = common::read_png(&png);
+    assert_eq!((width, height), (1000, 600));
     // A white page with a drawn curve, axes and text: not one colour.
     let white = pixels.iter().filter(|&&b| b == 255).count();
     assert!(
@@ -457,12 +446,8 @@ fn impact_and_buildings_write_their_force_plot_as_png_or_svg() {
         "1.5",
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
-    let info = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(&big).unwrap()))
-        .read_info()
-        .unwrap()
-        .info()
-        .clone();
-    assert_eq!((info.width, info.height), (1500, 900));
+    let (width, height, _, _) = common::read_png(&big);
+    assert_eq!((width, height), (1500, 900));
     for (flag, value) in [("--plot-size", "20x20"), ("--plot-scale", "0")] {
         let err = stderr(&pounding(&["impact", "--plot", "x.png", flag, value]));
         assert!(err.contains(flag) && err.contains("expected"), "{err}");

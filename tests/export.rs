@@ -5,27 +5,26 @@
 use pounding::export::plot::{LinePlot, Series};
 use std::path::PathBuf;
 
+mod common;
+
 fn plot(scale: f64) -> LinePlot {
     LinePlot {
-        title: "Contact force".into(),
-        x_label: "time [ms]".into(),
-        y_label: "force [kN]".into(),
-        log_x: false,
-        log_y: false,
-        series: vec![Series {
-            name: "sears".into(),
-            points: (0..200)
-                .map(|i| {
-                    let t = i as f64 / 199.0;
-                    (t, (std::f64::consts::PI * t).sin() * 135.0)
-                })
-                .collect(),
-        }],
         size: (800, 500),
-        markers: false,
         scale,
-        x_range: None,
-        y_range: None,
+        ..LinePlot::new(
+            "Contact force",
+            "time [ms]",
+            "force [kN]",
+            vec![Series {
+                name: "sears".into(),
+                points: (0..200)
+                    .map(|i| {
+                        let t = i as f64 / 199.0;
+                        (t, (std::f64::consts::PI * t).sin() * 135.0)
+                    })
+                    .collect(),
+            }],
+        )
     }
 }
 
@@ -36,13 +35,9 @@ fn temp(name: &str) -> PathBuf {
 /// Pixel size, the share of pixels that are not white, and the curve's thickness: the median
 /// over columns of the count of pixels in the curve's blue (the curve is one stroke per column
 /// except where it is steep).
-fn png_ink(path: &PathBuf) -> ((u32, u32), f64, f64) {
-    let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(path).unwrap()));
-    let mut reader = decoder.read_info().expect("a PNG");
-    let mut buf = vec![0; reader.output_buffer_size().unwrap()];
-    let info = reader.next_frame(&mut buf).expect("decodes");
-    let (w, h) = (info.width as usize, info.height as usize);
-    let channels = info.color_type.samples();
+fn png_ink(path: &std::path::Path) -> ((u32, u32), f64, f64) {
+    let (width, height, channels, buf) = common::read_png(path);
+    let (w, h) = (width as usize, height as usize);
     let px = |x: usize, y: usize| &buf[(y * w + x) * channels..(y * w + x) * channels + 3];
     let inked = (0..h)
         .flat_map(|y| (0..w).map(move |x| (x, y)))
@@ -55,7 +50,7 @@ fn png_ink(path: &PathBuf) -> ((u32, u32), f64, f64) {
         .collect();
     thickness.sort_unstable();
     (
-        (info.width, info.height),
+        (width, height),
         inked as f64 / (w * h) as f64,
         thickness[thickness.len() / 2] as f64,
     )

@@ -234,13 +234,12 @@ fn bars_view_matches_its_snapshot() {
         eprintln!("wrote {}", path.display());
         return;
     }
-    let decoder = png::Decoder::new(std::io::BufReader::new(
-        std::fs::File::open(&path).expect("snapshot exists (UPDATE_SNAPSHOTS=1 writes it)"),
-    ));
-    let mut reader = decoder.read_info().expect("snapshot is a PNG");
-    let mut stored = vec![0; reader.output_buffer_size().expect("size")];
-    let info = reader.next_frame(&mut stored).expect("snapshot decodes");
-    assert_eq!((info.width, info.height), (W, H), "snapshot size");
+    assert!(
+        path.exists(),
+        "snapshot missing (UPDATE_SNAPSHOTS=1 writes it)"
+    );
+    let (width, height, _, stored) = common::read_png(&path);
+    assert_eq!((width, height), (W, H), "snapshot size");
     // Rasterizer noise moves a few edge pixels by a few levels; a missing bar, a wrong colour
     // map or a shifted front changes thousands of pixels by far more.
     let differing = pixels
@@ -258,11 +257,6 @@ fn bars_view_matches_its_snapshot() {
 }
 
 fn write_png(path: &Path, rgba: &[u8]) {
-    let file = std::io::BufWriter::new(std::fs::File::create(path).expect("writable"));
-    let mut enc = png::Encoder::new(file, W, H);
-    enc.set_color(png::ColorType::Rgba);
-    enc.set_depth(png::BitDepth::Eight);
-    enc.write_header()
-        .and_then(|mut w| w.write_image_data(rgba))
+    pounding::export::plot::write_png(path, (W, H), png::ColorType::Rgba, rgba)
         .expect("PNG written");
 }

@@ -97,17 +97,16 @@ impl Exporter {
                     .map_err(|e| format!("could not write {shown}: {e}"))
             } else {
                 LinePlot {
-                    title: plot.title.clone(),
-                    x_label: plot.x_label.clone(),
-                    y_label: plot.y_label.clone(),
-                    log_x: false,
-                    log_y: false,
-                    series: plot.visible(),
                     size,
-                    markers: false,
                     scale,
                     x_range: plot.bounds.map(|(a, b)| (a[0], b[0])),
                     y_range: plot.bounds.map(|(a, b)| (a[1], b[1])),
+                    ..LinePlot::new(
+                        plot.title.clone(),
+                        plot.x_label.clone(),
+                        plot.y_label.clone(),
+                        plot.visible(),
+                    )
                 }
                 .write(&path)
                 .map_err(|e| format!("could not write {e:#}"))
@@ -185,15 +184,7 @@ fn write_png(
             rgba.extend_from_slice(&px.to_array());
         }
     }
-    let write = || -> Result<(), Box<dyn std::error::Error>> {
-        let file = std::io::BufWriter::new(std::fs::File::create(path)?);
-        let mut enc = png::Encoder::new(file, cw as u32, ch as u32);
-        enc.set_color(png::ColorType::Rgba);
-        enc.set_depth(png::BitDepth::Eight);
-        enc.write_header()?.write_image_data(&rgba)?;
-        Ok(())
-    };
-    write()
+    crate::export::plot::write_png(path, (cw as u32, ch as u32), png::ColorType::Rgba, &rgba)
         .map(|()| format!("wrote {shown}"))
         .map_err(|e| format!("could not write {shown}: {e}"))
 }

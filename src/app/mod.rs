@@ -9,6 +9,7 @@ mod export;
 mod impact_params;
 mod params;
 mod playback;
+mod scene;
 mod series;
 pub mod worker;
 
@@ -17,6 +18,7 @@ use crate::io::settings::ImpactSetup;
 use bar_scene::BarScene;
 use building_scene::BuildingScene;
 use eframe::egui::{self, Color32};
+use scene::Scene;
 use std::time::Instant;
 
 /// Storage keys; the suffix is the format's version, so an older save is never misread.
@@ -222,12 +224,27 @@ impl PoundingApp {
         self.bar.busy() || self.compare.busy() || self.buildings.busy()
     }
 
-    fn playback(&mut self) -> &mut playback::Playback {
+    /// The scene on screen.
+    fn shown(&self) -> &dyn Scene {
         match self.scene {
-            SceneKind::BarImpact => &mut self.bar.playback,
-            SceneKind::WaveVsLumped => &mut self.compare.playback,
-            SceneKind::Buildings => &mut self.buildings.playback,
+            SceneKind::BarImpact => &self.bar,
+            SceneKind::WaveVsLumped => &self.compare,
+            SceneKind::Buildings => &self.buildings,
         }
+    }
+
+    /// The scene on screen, and the exporter its plots' buttons use.
+    fn shown_mut(&mut self) -> (&mut dyn Scene, &export::Exporter) {
+        let scene: &mut dyn Scene = match self.scene {
+            SceneKind::BarImpact => &mut self.bar,
+            SceneKind::WaveVsLumped => &mut self.compare,
+            SceneKind::Buildings => &mut self.buildings,
+        };
+        (scene, &self.exporter)
+    }
+
+    fn playback(&mut self) -> &mut playback::Playback {
+        self.shown_mut().0.playback()
     }
 
     fn top_bar(&mut self, ui: &mut egui::Ui) {
@@ -345,11 +362,7 @@ impl PoundingApp {
         .response
         .on_hover_text("2 draws text and lines twice as large (e.g. a 3200 x 1800 PNG for print)");
         ui.separator();
-        let plots = match self.scene {
-            SceneKind::BarImpact => self.bar.shown_plots(),
-            SceneKind::WaveVsLumped => self.compare.shown_plots(),
-            SceneKind::Buildings => self.buildings.shown_plots(),
-        };
+        let plots = self.shown().shown_plots();
         if ui
             .add_enabled(
                 !plots.is_empty(),
@@ -368,11 +381,7 @@ impl PoundingApp {
             self.exporter.screenshot(ui.ctx(), None, "window");
             ui.close();
         }
-        let view = match self.scene {
-            SceneKind::BarImpact => self.bar.view_rect,
-            SceneKind::WaveVsLumped => self.compare.view_rect,
-            SceneKind::Buildings => self.buildings.view_rect,
-        };
+        let view = self.shown().view_rect();
         if ui
             .add_enabled(view.is_some(), egui::Button::new("Screenshot of the view"))
             .clicked()
@@ -397,19 +406,17 @@ impl PoundingApp {
             })
             .response
             .labelled_by(label);
-        if ui
+        // Both buttons load the chosen preset (Reset reads as undoing edits); both are drawn
+        // every frame, so neither is skipped when the other is clicked.
+        let load = ui
             .button("Load preset")
             .on_hover_text("Replace the scene's parameters by the preset")
-            .clicked()
-        {
-            let name = self.preset_choice.clone();
-            self.message = self.current().load_preset(&name).err().map(|e| (e, true));
-        }
-        if ui
+            .clicked();
+        let reset = ui
             .button("Reset")
             .on_hover_text("Back to the preset's values")
-            .clicked()
-        {
+            .clicked();
+        if load || reset {
             let name = self.preset_choice.clone();
             self.message = self.current().load_preset(&name).err().map(|e| (e, true));
         }
@@ -532,21 +539,8 @@ impl eframe::App for PoundingApp {
         egui::Panel::top("top").show(ui, |ui| self.top_bar(ui));
         egui::Panel::bottom("status").show(ui, |ui| {
             ui.horizontal(|ui| {
-                let (solve, latency, busy) = match self.scene {
-                    SceneKind::BarImpact => {
-                        (self.bar.solve_time, self.bar.latency, self.bar.busy())
-                    }
-                    SceneKind::WaveVsLumped => (
-                        self.compare.solve_time,
-                        self.compare.latency,
-                        self.compare.busy(),
-                    ),
-                    SceneKind::Buildings => (
-                        self.buildings.solve_time,
-                        self.buildings.latency,
-                        self.buildings.busy(),
-                    ),
-                };
+                let (solve, latency) = self.shown().timings();
+                let busy = self.shown().busy();
                 ui.label(format!(
                     "UI {} | solve {} | change to result {}{}",
                     ms(self.ui_ms * 1e-3, 2),
@@ -569,18 +563,11 @@ impl eframe::App for PoundingApp {
             .resizable(true)
             .default_size(380.0)
             .show(ui, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| match self.scene {
-                    SceneKind::Buildings => self.buildings.params_ui(ui),
-                    _ => self.current().params_ui(ui),
-                });
+                egui::ScrollArea::vertical().show(ui, |ui| self.shown_mut().0.params_ui(ui));
             });
         egui::CentralPanel::default().show(ui, |ui| {
-            let exporter = &self.exporter;
-            egui::ScrollArea::vertical().show(ui, |ui| match self.scene {
-                SceneKind::BarImpact => self.bar.main_ui(ui, exporter),
-                SceneKind::WaveVsLumped => self.compare.main_ui(ui, exporter),
-                SceneKind::Buildings => self.buildings.main_ui(ui, exporter),
-            });
+            let (scene, exporter) = self.shown_mut();
+            egui::ScrollArea::vertical().show(ui, |ui| scene.main_ui(ui, exporter));
         });
         if self.help {
             let mut open = true;
@@ -593,7 +580,7 @@ impl eframe::App for PoundingApp {
             });
             self.help = open;
         }
-        let busy = self.bar.busy() || self.compare.busy() || self.buildings.busy();
+        let busy = self.is_solving();
         if self.playback().playing || busy {
             ctx.request_repaint();
         }

@@ -315,17 +315,11 @@ pub fn run(args: &AccuracyArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             )
         };
         LinePlot {
-            title: title.into(),
-            x_label: "wall time per solve [ms]".into(),
-            y_label: y.into(),
             log_x: true,
             log_y: true,
-            series,
             size: (900, 620),
             markers: true,
-            scale: 1.0,
-            x_range: None,
-            y_range: None,
+            ..LinePlot::new(title, "wall time per solve [ms]", y, series)
         }
         .write(path)?;
     }

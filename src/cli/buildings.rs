@@ -82,37 +82,27 @@ pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         },
         &motion,
     )?;
-    if let Some(path) = &args.common.plot {
-        use crate::export::plot::{LinePlot, Series};
+    args.common.write_plot((1200, 600), || {
         let points = result
             .time_s
             .iter()
             .zip(&result.force_n)
             .map(|(t, f)| (*t, f * 1e-6))
             .collect();
-        LinePlot {
-            title: format!(
+        crate::export::plot::LinePlot::new(
+            format!(
                 "Pounding force: {} contact, {}",
                 result.contact.name(),
                 motion.name
             ),
-            x_label: "time [s]".into(),
-            y_label: "pounding force [MN]".into(),
-            log_x: false,
-            log_y: false,
-            series: vec![Series {
+            "time [s]",
+            "pounding force [MN]",
+            vec![crate::export::plot::Series {
                 name: result.contact.name().into(),
                 points,
             }],
-            size: args.common.plot_size.unwrap_or((1200, 600)),
-            markers: false,
-            scale: args.common.plot_scale,
-            x_range: None,
-            y_range: None,
-        }
-        .write(path)
-        .map_err(|e| anyhow::anyhow!("--plot: {e}"))?;
-    }
+        )
+    })?;
     if let Some(path) = &args.common.csv {
         super::write_csv(out, path, |w| {
             crate::io::csv::write_building_history(w, &result)

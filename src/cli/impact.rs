@@ -1,10 +1,10 @@
 //! `pounding impact`: one impact, summarised, as JSON, or as CSV histories.
 
 use super::report::{ImpactReport, summary};
+use crate::export::plot::{LinePlot, Series};
 use crate::io::preset::{self, DEFAULT_PRESET};
-use crate::io::settings::IMPACT_KEYS;
+use crate::io::settings::{IMPACT_KEYS, ImpactSetup};
 use crate::model::impact::{ModelKind, solve};
-use anyhow::bail;
 use clap::Args;
 use std::io::Write;
 
@@ -17,63 +17,72 @@ pub struct ImpactArgs {
     pub model: Option<String>,
 }
 
-pub fn run(args: &ImpactArgs, out: &mut dyn Write) -> anyhow::Result<()> {
-    if args.common.list_keys {
-        return super::list(
+/// Answers --list-keys and --list-presets for impact commands; `true` when it did.
+pub(super) fn answered_lists(
+    common: &super::SceneArgs,
+    out: &mut dyn Write,
+) -> anyhow::Result<bool> {
+    if common.list_keys {
+        super::list(
             out,
             22,
             IMPACT_KEYS.iter().map(|(k, w)| (*k, w.to_string())),
-        );
+        )?;
+    } else if common.list_presets {
+        super::list_presets(out, "impact")?;
     }
-    if args.common.list_presets {
-        return super::list_presets(out, "impact");
-    }
-    let preset_name = args.common.preset.as_deref().unwrap_or(DEFAULT_PRESET);
-    let mut setup: crate::io::settings::ImpactSetup =
+    Ok(common.list_keys || common.list_presets)
+}
+
+/// The preset (or the default) with the --set overrides applied, and the preset's name.
+pub(super) fn setup(common: &super::SceneArgs) -> anyhow::Result<(ImpactSetup, &str)> {
+    let preset_name = common.preset.as_deref().unwrap_or(DEFAULT_PRESET);
+    let mut setup: ImpactSetup =
         preset::load_for(preset_name, "impact").map_err(|e| anyhow::anyhow!("preset {e}"))?;
-    for assignment in &args.common.set {
+    for assignment in &common.set {
         setup
             .apply_assignment(assignment)
             .map_err(|e| anyhow::anyhow!("--set {e}"))?;
     }
+    Ok((setup, preset_name))
+}
+
+pub(super) fn parse_model(name: &str) -> anyhow::Result<ModelKind> {
+    ModelKind::from_name(name).ok_or_else(|| {
+        anyhow::anyhow!(
+            "--model: unknown model '{name}': allowed sears|wave|lumped-hertz|lumped-linear|kelvin|stereo|fe"
+        )
+    })
+}
+
+pub fn run(args: &ImpactArgs, out: &mut dyn Write) -> anyhow::Result<()> {
+    if answered_lists(&args.common, out)? {
+        return Ok(());
+    }
+    let (mut setup, preset_name) = setup(&args.common)?;
     if let Some(m) = &args.model {
-        setup.model = match ModelKind::from_name(m) {
-            Some(k) => k,
-            None => bail!(
-                "--model: unknown model '{m}': allowed sears|wave|lumped-hertz|lumped-linear|kelvin|stereo|fe"
-            ),
-        };
+        setup.model = parse_model(m)?;
     }
     let result = solve(setup.model, &setup.scenario)?;
     let estimate =
         crate::model::impact::estimate::estimate_error(setup.model, &setup.scenario, &result).ok();
-    if let Some(path) = &args.common.plot {
-        use crate::export::plot::{LinePlot, Series};
+    args.common.write_plot((1000, 600), || {
         let points = result
             .time_s
             .iter()
             .zip(&result.force_n)
             .map(|(t, f)| (t * 1e3, f * 1e-3))
             .collect();
-        LinePlot {
-            title: format!("Contact force: {} ({})", setup.model.name(), preset_name),
-            x_label: "time [ms]".into(),
-            y_label: "force [kN]".into(),
-            log_x: false,
-            log_y: false,
-            series: vec![Series {
+        LinePlot::new(
+            format!("Contact force: {} ({})", setup.model.name(), preset_name),
+            "time [ms]",
+            "force [kN]",
+            vec![Series {
                 name: setup.model.name().into(),
                 points,
             }],
-            size: args.common.plot_size.unwrap_or((1000, 600)),
-            markers: false,
-            scale: args.common.plot_scale,
-            x_range: None,
-            y_range: None,
-        }
-        .write(path)
-        .map_err(|e| anyhow::anyhow!("--plot: {e}"))?;
-    }
+        )
+    })?;
     if let Some(path) = &args.common.csv {
         super::write_csv(out, path, |w| {
             crate::io::csv::write_impact_history(w, &result)

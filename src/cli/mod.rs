@@ -116,9 +116,9 @@ pub struct SceneArgs {
     /// Pixel size of a PNG --plot, e.g. 3000x1800 [default: the scene's]
     #[arg(long, value_name = "WxH", value_parser = parse_plot_size)]
     pub plot_size: Option<(u32, u32)>,
-    /// Text and line size of --plot relative to the default (0.25 to 8)
-    #[arg(long, value_name = "X", default_value_t = 1.0, value_parser = parse_plot_scale)]
-    pub plot_scale: f64,
+    /// Text and line size of --plot relative to the default (0.25 to 8) [default: 1]
+    #[arg(long, value_name = "X", value_parser = parse_plot_scale)]
+    pub plot_scale: Option<f64>,
     /// Print one JSON object instead of the summary
     #[arg(long)]
     pub json: bool,
@@ -128,6 +128,26 @@ pub struct SceneArgs {
     /// List the shipped presets, and exit
     #[arg(long)]
     pub list_presets: bool,
+}
+
+impl SceneArgs {
+    /// Writes the plot `make` builds to --plot, if given, at --plot-size (else `default_size`)
+    /// and --plot-scale.
+    pub(crate) fn write_plot(
+        &self,
+        default_size: (u32, u32),
+        make: impl FnOnce() -> crate::export::plot::LinePlot,
+    ) -> anyhow::Result<()> {
+        let Some(path) = &self.plot else {
+            return Ok(());
+        };
+        let plot = crate::export::plot::LinePlot {
+            size: self.plot_size.unwrap_or(default_size),
+            scale: self.plot_scale.unwrap_or(1.0),
+            ..make()
+        };
+        plot.write(path).map_err(|e| anyhow::anyhow!("--plot: {e}"))
+    }
 }
 
 fn parse_plot_size(text: &str) -> Result<(u32, u32), String> {

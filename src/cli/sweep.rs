@@ -2,7 +2,6 @@
 //! peak force, contact duration and e against it for each model asked for.
 
 use crate::export::plot::{LinePlot, Series};
-use crate::io::preset::{self, DEFAULT_PRESET};
 use crate::io::settings::{IMPACT_KEYS, ImpactSetup};
 use crate::model::impact::{ModelKind, solve};
 use anyhow::{anyhow, bail};
@@ -12,19 +11,20 @@ use serde::Serialize;
 use std::io::Write;
 use std::time::Instant;
 
-const MODELS: &str = "sears|wave|lumped-hertz|lumped-linear|kelvin|stereo|fe";
+/// The flags that answer without a sweep.
+const LISTS: [&str; 2] = ["list_keys", "list_presets"];
 
 #[derive(Args, Debug)]
 pub struct SweepArgs {
     /// The setting to vary: any --set key of `pounding impact` (see `pounding impact --list-keys`)
-    #[arg(long, value_name = "KEY")]
-    pub param: String,
+    #[arg(long, value_name = "KEY", required_unless_present_any = LISTS)]
+    pub param: Option<String>,
     /// First value
-    #[arg(long, value_name = "A", allow_negative_numbers = true)]
-    pub from: f64,
+    #[arg(long, value_name = "A", allow_negative_numbers = true, required_unless_present_any = LISTS)]
+    pub from: Option<f64>,
     /// Last value
-    #[arg(long, value_name = "B", allow_negative_numbers = true)]
-    pub to: f64,
+    #[arg(long, value_name = "B", allow_negative_numbers = true, required_unless_present_any = LISTS)]
+    pub to: Option<f64>,
     /// Number of values, ends included (2 to 100000)
     #[arg(long, value_name = "N", default_value_t = 50)]
     pub count: usize,
@@ -34,21 +34,10 @@ pub struct SweepArgs {
     /// Model (repeatable to compare): sears|wave|lumped-hertz|lumped-linear|kelvin|stereo|fe [default: the preset's]
     #[arg(long = "model", value_name = "M")]
     pub models: Vec<String>,
-    /// Preset name or TOML file the sweep starts from [default: paper-base]
-    #[arg(long, value_name = "NAME-or-FILE")]
-    pub preset: Option<String>,
-    /// Fixed overrides, as in `pounding impact --set` (repeatable)
-    #[arg(long = "set", value_name = "KEY=VALUE")]
-    pub set: Vec<String>,
-    /// Write every point as CSV (`-` for standard output)
-    #[arg(long, value_name = "FILE")]
-    pub csv: Option<std::path::PathBuf>,
-    /// Write peak force against the swept value (.png or .svg)
-    #[arg(long, value_name = "FILE")]
-    pub plot: Option<std::path::PathBuf>,
-    /// Print one JSON object instead of the table
-    #[arg(long)]
-    pub json: bool,
+    /// The preset, fixed --set overrides and outputs, as for `pounding impact`; --csv writes
+    /// every point, --plot the peak force against the swept value.
+    #[command(flatten)]
+    pub common: super::SceneArgs,
 }
 
 #[derive(Serialize, Debug, Clone)]
@@ -88,21 +77,20 @@ pub fn values(from: f64, to: f64, count: usize, log: bool) -> Vec<f64> {
         .collect()
 }
 
-fn check(args: &SweepArgs) -> anyhow::Result<()> {
+/// The swept key and range, checked.
+fn check(args: &SweepArgs) -> anyhow::Result<(&str, f64, f64)> {
+    let (Some(key), Some(from), Some(to)) = (args.param.as_deref(), args.from, args.to) else {
+        bail!("--param, --from and --to are required");
+    };
     if !(2..=100_000).contains(&args.count) {
         bail!("--count: {} is outside 2 to 100000", args.count);
     }
-    if !args.from.is_finite() || !args.to.is_finite() {
+    if !from.is_finite() || !to.is_finite() {
         bail!("--from/--to: values must be finite numbers");
     }
-    if args.log && (args.from <= 0.0 || args.to <= 0.0) {
-        bail!(
-            "--log: --from and --to must be > 0 (got {} and {})",
-            args.from,
-            args.to
-        );
+    if args.log && (from <= 0.0 || to <= 0.0) {
+        bail!("--log: --from and --to must be > 0 (got {from} and {to})");
     }
-    let key = args.param.as_str();
     let known = IMPACT_KEYS.iter().any(|(k, _)| {
         *k == key
             || (k.starts_with("barN.")
@@ -111,43 +99,36 @@ fn check(args: &SweepArgs) -> anyhow::Result<()> {
                     .any(|b| key == format!("{b}{}", &k[5..])))
     });
     if !known || key == "model" {
-        bail!(
-            "--param: '{key}' is not a numeric impact setting; see `pounding impact --list-keys`"
-        );
+        bail!("--param: '{key}' is not a numeric impact setting; see `pounding sweep --list-keys`");
     }
-    Ok(())
+    Ok((key, from, to))
 }
 
 pub fn run(args: &SweepArgs, out: &mut dyn Write) -> anyhow::Result<()> {
-    check(args)?;
-    let preset_name = args.preset.as_deref().unwrap_or(DEFAULT_PRESET);
-    let mut base: ImpactSetup =
-        preset::load_for(preset_name, "impact").map_err(|e| anyhow!("preset {e}"))?;
-    for a in &args.set {
-        base.apply_assignment(a).map_err(|e| anyhow!("--set {e}"))?;
+    if super::impact::answered_lists(&args.common, out)? {
+        return Ok(());
     }
+    let (param, from, to) = check(args)?;
+    let (base, _) = super::impact::setup(&args.common)?;
     let models: Vec<ModelKind> = if args.models.is_empty() {
         vec![base.model]
     } else {
         args.models
             .iter()
-            .map(|m| {
-                ModelKind::from_name(m)
-                    .ok_or_else(|| anyhow!("--model: unknown model '{m}': allowed {MODELS}"))
-            })
+            .map(|m| super::impact::parse_model(m))
             .collect::<anyhow::Result<_>>()?
     };
-    let values = values(args.from, args.to, args.count, args.log);
+    let values = values(from, to, args.count, args.log);
     // Every setup is built and validated before any solve, so a bad range fails at once and
     // names the value.
     let setups: Vec<ImpactSetup> = values
         .iter()
         .map(|v| {
             let mut s = base;
-            s.apply_assignment(&format!("{}={v}", args.param))
+            s.apply_assignment(&format!("{param}={v}"))
                 .and_then(|()| s.scenario.validate())
                 .map(|()| s)
-                .map_err(|e| anyhow!("--param {}={v}: {e}", args.param))
+                .map_err(|e| anyhow!("--param {param}={v}: {e}"))
         })
         .collect::<anyhow::Result<_>>()?;
     let jobs: Vec<(ModelKind, usize)> = models
@@ -182,7 +163,7 @@ pub fn run(args: &SweepArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         })
         .collect();
     let report = SweepReport {
-        param: args.param.clone(),
+        param: param.to_string(),
         models: models.iter().map(|m| m.name().to_string()).collect(),
         values,
         solves: points.len(),
@@ -190,16 +171,15 @@ pub fn run(args: &SweepArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         wall_time_s: start.elapsed().as_secs_f64(),
         threads: rayon::current_num_threads(),
     };
-    if let Some(path) = &args.csv {
+    if let Some(path) = &args.common.csv {
         write_csv(&report, path, out)?;
     }
-    if let Some(path) = &args.plot {
-        plot(&report, args.log, path)?;
-    }
-    if args.json {
+    args.common
+        .write_plot((1000, 600), || plot(&report, args.log))?;
+    if args.common.json {
         serde_json::to_writer_pretty(&mut *out, &report)?;
         writeln!(out)?;
-    } else if args.csv.as_deref() != Some(std::path::Path::new("-")) {
+    } else if args.common.csv.as_deref() != Some(std::path::Path::new("-")) {
         table(&report, out)?;
     }
     Ok(())
@@ -264,7 +244,7 @@ fn write_csv(r: &SweepReport, path: &std::path::Path, out: &mut dyn Write) -> an
     Ok(())
 }
 
-fn plot(r: &SweepReport, log: bool, path: &std::path::Path) -> anyhow::Result<()> {
+fn plot(r: &SweepReport, log: bool) -> LinePlot {
     let series = r
         .models
         .iter()
@@ -279,18 +259,13 @@ fn plot(r: &SweepReport, log: bool, path: &std::path::Path) -> anyhow::Result<()
         })
         .collect();
     LinePlot {
-        title: format!("Peak contact force against {}", r.param),
-        x_label: r.param.clone(),
-        y_label: "peak force [kN]".into(),
         log_x: log,
-        log_y: false,
-        series,
-        size: (1000, 600),
         markers: r.values.len() <= 30,
-        scale: 1.0,
-        x_range: None,
-        y_range: None,
+        ..LinePlot::new(
+            format!("Peak contact force against {}", r.param),
+            r.param.clone(),
+            "peak force [kN]",
+            series,
+        )
     }
-    .write(path)
-    .map_err(|e| anyhow!("--plot: {e}"))
 }

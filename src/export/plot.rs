@@ -54,6 +54,28 @@ const PALETTE: [RGBColor; 8] = [
 ];
 
 impl LinePlot {
+    /// A linear-axes plot of 1000 x 600 pixels at scale 1, fitted to its data.
+    pub fn new(
+        title: impl Into<String>,
+        x_label: impl Into<String>,
+        y_label: impl Into<String>,
+        series: Vec<Series>,
+    ) -> Self {
+        LinePlot {
+            title: title.into(),
+            x_label: x_label.into(),
+            y_label: y_label.into(),
+            log_x: false,
+            log_y: false,
+            series,
+            size: (1000, 600),
+            markers: false,
+            scale: 1.0,
+            x_range: None,
+            y_range: None,
+        }
+    }
+
     /// Writes the plot; the extension picks the format (`.svg` or `.png`).
     pub fn write(&self, path: &Path) -> anyhow::Result<()> {
         register_font();
@@ -82,11 +104,7 @@ impl LinePlot {
         let (w, h) = self.size;
         let mut rgb = vec![255u8; (w * h * 3) as usize];
         self.draw(BitMapBackend::with_buffer(&mut rgb, self.size).into_drawing_area())?;
-        let file = std::io::BufWriter::new(std::fs::File::create(path)?);
-        let mut encoder = png::Encoder::new(file, w, h);
-        encoder.set_color(png::ColorType::Rgb);
-        encoder.set_depth(png::BitDepth::Eight);
-        encoder.write_header()?.write_image_data(&rgb)?;
+        write_png(path, (w, h), png::ColorType::Rgb, &rgb)?;
         Ok(())
     }
 
@@ -221,4 +239,18 @@ impl LinePlot {
         area.present().map_err(|e| e.to_string())?;
         Ok(())
     }
+}
+
+/// Encodes 8-bit pixels (`color` says how many channels) as a PNG file.
+pub fn write_png(
+    path: &Path,
+    (width, height): (u32, u32),
+    color: png::ColorType,
+    pixels: &[u8],
+) -> Result<(), png::EncodingError> {
+    let file = std::io::BufWriter::new(std::fs::File::create(path)?);
+    let mut encoder = png::Encoder::new(file, width, height);
+    encoder.set_color(color);
+    encoder.set_depth(png::BitDepth::Eight);
+    encoder.write_header()?.write_image_data(pixels)
 }

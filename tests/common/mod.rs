@@ -22,20 +22,25 @@ pub fn wave_force(sc: &ImpactScenario) -> f64 {
 /// Momentum of a bar computed from its velocity field (rho~ A times the integral of v dx),
 /// independently of the impulse the solver reports. Simpson's rule on `n` intervals.
 pub fn field_momentum(waves: &BarWaves, density: f64, t: f64, n: usize) -> f64 {
-    let l = waves.length_m();
+    density * waves.area_m2 * simpson(waves.length_m(), n, |x| waves.velocity_m_s(x, t))
+}
+
+/// Simpson's rule for the integral of `f` over [0, l] on `n` (even) intervals.
+pub fn simpson(l: f64, n: usize, f: impl Fn(f64) -> f64) -> f64 {
     let h = l / n as f64;
-    let mut s = 0.0;
-    for k in 0..=n {
-        let w = if k == 0 || k == n {
-            1.0
-        } else if k % 2 == 1 {
-            4.0
-        } else {
-            2.0
-        };
-        s += w * waves.velocity_m_s(k as f64 * h, t);
-    }
-    density * waves.area_m2 * s * h / 3.0
+    let s: f64 = (0..=n)
+        .map(|k| {
+            let w = if k == 0 || k == n {
+                1.0
+            } else if k % 2 == 1 {
+                4.0
+            } else {
+                2.0
+            };
+            w * f(k as f64 * h)
+        })
+        .sum();
+    s * h / 3.0
 }
 
 /// Mechanical energy of a bar from its field, in a frame moving at `frame_v`: the integral of
@@ -48,24 +53,10 @@ pub fn field_energy_in_frame(
     n: usize,
     frame_v: f64,
 ) -> f64 {
-    let l = waves.length_m();
-    let h = l / n as f64;
-    let mut s = 0.0;
-    for k in 0..=n {
-        let w = if k == 0 || k == n {
-            1.0
-        } else if k % 2 == 1 {
-            4.0
-        } else {
-            2.0
-        };
-        let x = k as f64 * h;
+    simpson(waves.length_m(), n, |x| {
         let (v, sigma) = (waves.velocity_m_s(x, t) - frame_v, waves.stress_pa(x, t));
-        s += w
-            * (0.5 * density * waves.area_m2 * v * v
-                + 0.5 * waves.area_m2 * sigma * sigma / youngs);
-    }
-    s * h / 3.0
+        0.5 * density * waves.area_m2 * v * v + 0.5 * waves.area_m2 * sigma * sigma / youngs
+    })
 }
 
 /// Mechanical energy of a bar from its field (lab frame).
@@ -94,4 +85,16 @@ pub fn adapter_or_skip() -> Option<eframe::egui_wgpu::wgpu::Adapter> {
             None
         }
     }
+}
+
+/// A PNG file's width, height, samples per pixel and 8-bit samples.
+pub fn read_png(path: &std::path::Path) -> (u32, u32, usize, Vec<u8>) {
+    let file =
+        std::fs::File::open(path).unwrap_or_else(|e| panic!("{} should open: {e}", path.display()));
+    let mut reader = png::Decoder::new(std::io::BufReader::new(file))
+        .read_info()
+        .expect("a PNG");
+    let mut pixels = vec![0; reader.output_buffer_size().expect("a size")];
+    let info = reader.next_frame(&mut pixels).expect("decodes");
+    (info.width, info.height, info.color_type.samples(), pixels)
 }

@@ -1,0 +1,71 @@
+//! What the window asks of whichever scene is on screen, so the frame, the status bar and the
+//! File menu handle every scene alike (a new scene implements this and nothing else changes).
+
+use super::bar_scene::BarScene;
+use super::building_scene::BuildingScene;
+use super::export::{Exporter, ShownPlot};
+use super::playback::Playback;
+use eframe::egui;
+use std::time::Duration;
+
+pub trait Scene {
+    fn playback(&mut self) -> &mut Playback;
+    /// A solve is under way.
+    fn busy(&self) -> bool;
+    /// The last solve's own time, and the time from the change to its result.
+    fn timings(&self) -> (Duration, Duration);
+    /// The animated view's rectangle last frame.
+    fn view_rect(&self) -> Option<egui::Rect>;
+    /// The plots on screen last frame, by export name.
+    fn shown_plots(&self) -> Vec<(&'static str, &ShownPlot)>;
+    fn params_ui(&mut self, ui: &mut egui::Ui);
+    fn main_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter);
+}
+
+impl Scene for BarScene {
+    fn playback(&mut self) -> &mut Playback {
+        &mut self.playback
+    }
+    fn busy(&self) -> bool {
+        BarScene::busy(self)
+    }
+    fn timings(&self) -> (Duration, Duration) {
+        (self.solve_time, self.latency)
+    }
+    fn view_rect(&self) -> Option<egui::Rect> {
+        self.view_rect
+    }
+    fn shown_plots(&self) -> Vec<(&'static str, &ShownPlot)> {
+        BarScene::shown_plots(self)
+    }
+    fn params_ui(&mut self, ui: &mut egui::Ui) {
+        BarScene::params_ui(self, ui)
+    }
+    fn main_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
+        BarScene::main_ui(self, ui, exporter)
+    }
+}
+
+impl Scene for BuildingScene {
+    fn playback(&mut self) -> &mut Playback {
+        &mut self.playback
+    }
+    fn busy(&self) -> bool {
+        BuildingScene::busy(self)
+    }
+    fn timings(&self) -> (Duration, Duration) {
+        (self.solve_time, self.latency)
+    }
+    fn view_rect(&self) -> Option<egui::Rect> {
+        self.view_rect
+    }
+    fn shown_plots(&self) -> Vec<(&'static str, &ShownPlot)> {
+        BuildingScene::shown_plots(self)
+    }
+    fn params_ui(&mut self, ui: &mut egui::Ui) {
+        BuildingScene::params_ui(self, ui)
+    }
+    fn main_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
+        BuildingScene::main_ui(self, ui, exporter)
+    }
+}
