@@ -11,3 +11,4 @@ pub mod io;
 pub mod model;
 #[cfg(feature = "gui")]
 pub mod render;
+pub mod study;

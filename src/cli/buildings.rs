@@ -46,6 +46,27 @@ pub fn load_motion(setup: &BuildingSetup) -> anyhow::Result<GroundMotion> {
     Ok(motion)
 }
 
+/// The preset (or `paper-buildings`) with the --set overrides and --motion applied, and the
+/// preset's name.
+pub(super) fn setup<'a>(
+    preset_name: Option<&'a str>,
+    sets: &[String],
+    motion: Option<&std::path::Path>,
+) -> anyhow::Result<(BuildingSetup, &'a str)> {
+    let preset_name = preset_name.unwrap_or("paper-buildings");
+    let mut setup: BuildingSetup =
+        preset::load_for(preset_name, "buildings").map_err(|e| anyhow::anyhow!("preset {e}"))?;
+    for a in sets {
+        setup
+            .apply_assignment(a)
+            .map_err(|e| anyhow::anyhow!("--set {e}"))?;
+    }
+    if let Some(path) = motion {
+        setup.motion.file = Some(path.display().to_string());
+    }
+    Ok((setup, preset_name))
+}
+
 pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     if args.common.list_keys {
         return super::list(
@@ -57,20 +78,14 @@ pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     if args.common.list_presets {
         return super::list_presets(out, "buildings");
     }
-    let preset_name = args.common.preset.as_deref().unwrap_or("paper-buildings");
-    let mut setup: BuildingSetup =
-        preset::load_for(preset_name, "buildings").map_err(|e| anyhow::anyhow!("preset {e}"))?;
-    for a in &args.common.set {
-        setup
-            .apply_assignment(a)
-            .map_err(|e| anyhow::anyhow!("--set {e}"))?;
-    }
+    let (mut setup, preset_name) = setup(
+        args.common.preset.as_deref(),
+        &args.common.set,
+        args.motion.as_deref(),
+    )?;
     if let Some(c) = &args.contact {
         setup.scenario.contact = ContactModel::from_name(c)
             .ok_or_else(|| anyhow::anyhow!("--contact: unknown model '{c}': allowed sears|linear|kelvin|hertz|hertzdamp|jankowski|stereo|none"))?;
-    }
-    if let Some(path) = &args.motion {
-        setup.motion.file = Some(path.display().to_string());
     }
     let motion = load_motion(&setup)?;
     let result = solve(&setup.scenario, &motion)?;

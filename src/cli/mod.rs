@@ -5,6 +5,7 @@ pub mod building_report;
 pub mod buildings;
 pub mod impact;
 pub mod report;
+pub mod study;
 pub mod sweep;
 
 use clap::{Parser, Subcommand};
@@ -32,6 +33,9 @@ pub enum Command {
     /// Vary one impact setting over a range (solved in parallel): peak force, contact duration
     /// and e against it for each model.
     Sweep(sweep::SweepArgs),
+    /// Rerun one of the paper's figures (or `all`): PNG, SVG and CSV per figure, and the numbers
+    /// its claims are checked against (see `pounding study --list`).
+    Study(study::StudyArgs),
     /// Open the explorer window (what `pounding` with no command does).
     #[cfg(feature = "gui")]
     Window(WindowArgs),
@@ -81,6 +85,7 @@ pub fn run(cli: Cli, out: &mut dyn std::io::Write) -> anyhow::Result<()> {
         Some(Command::Buildings(args)) => buildings::run(&args, out),
         Some(Command::Accuracy(args)) => accuracy::run(&args, out),
         Some(Command::Sweep(args)) => sweep::run(&args, out),
+        Some(Command::Study(args)) => study::run(&args, out),
         #[cfg(feature = "gui")]
         Some(Command::Window(args)) => window(&args),
         #[cfg(feature = "gui")]

@@ -2,11 +2,11 @@
 //! peak force, contact duration and e against it for each model asked for.
 
 use crate::export::plot::{LinePlot, Series};
-use crate::io::settings::{IMPACT_KEYS, ImpactSetup};
-use crate::model::impact::{ModelKind, solve};
+use crate::model::impact::ModelKind;
+use crate::study::Progress;
+use crate::study::sweep::{self, Point};
 use anyhow::{anyhow, bail};
 use clap::Args;
-use rayon::prelude::*;
 use serde::Serialize;
 use std::io::Write;
 use std::time::Instant;
@@ -40,18 +40,6 @@ pub struct SweepArgs {
     pub common: super::SceneArgs,
 }
 
-#[derive(Serialize, Debug, Clone)]
-pub struct Point {
-    pub model: String,
-    pub value: f64,
-    pub peak_force_n: Option<f64>,
-    pub contact_duration_s: Option<f64>,
-    pub restitution: Option<f64>,
-    pub contacts: Option<usize>,
-    /// Why this point has no result (a solver error), if so.
-    pub error: Option<String>,
-}
-
 #[derive(Serialize, Debug)]
 pub struct SweepReport {
     pub param: String,
@@ -63,52 +51,14 @@ pub struct SweepReport {
     pub threads: usize,
 }
 
-/// The swept values: linear or geometric, ends included.
-pub fn values(from: f64, to: f64, count: usize, log: bool) -> Vec<f64> {
-    (0..count)
-        .map(|i| {
-            let f = i as f64 / (count - 1) as f64;
-            if log {
-                (from.ln() + f * (to.ln() - from.ln())).exp()
-            } else {
-                from + f * (to - from)
-            }
-        })
-        .collect()
-}
-
-/// The swept key and range, checked.
-fn check(args: &SweepArgs) -> anyhow::Result<(&str, f64, f64)> {
-    let (Some(key), Some(from), Some(to)) = (args.param.as_deref(), args.from, args.to) else {
-        bail!("--param, --from and --to are required");
-    };
-    if !(2..=100_000).contains(&args.count) {
-        bail!("--count: {} is outside 2 to 100000", args.count);
-    }
-    if !from.is_finite() || !to.is_finite() {
-        bail!("--from/--to: values must be finite numbers");
-    }
-    if args.log && (from <= 0.0 || to <= 0.0) {
-        bail!("--log: --from and --to must be > 0 (got {from} and {to})");
-    }
-    let known = IMPACT_KEYS.iter().any(|(k, _)| {
-        *k == key
-            || (k.starts_with("barN.")
-                && ["bar1.", "bar2."]
-                    .iter()
-                    .any(|b| key == format!("{b}{}", &k[5..])))
-    });
-    if !known || key == "model" {
-        bail!("--param: '{key}' is not a numeric impact setting; see `pounding sweep --list-keys`");
-    }
-    Ok((key, from, to))
-}
-
 pub fn run(args: &SweepArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     if super::impact::answered_lists(&args.common, out)? {
         return Ok(());
     }
-    let (param, from, to) = check(args)?;
+    let (Some(param), Some(from), Some(to)) = (args.param.as_deref(), args.from, args.to) else {
+        bail!("--param, --from and --to are required");
+    };
+    sweep::check(param, from, to, args.count, args.log).map_err(|e| anyhow!(e))?;
     let (base, _) = super::impact::setup(&args.common)?;
     let models: Vec<ModelKind> = if args.models.is_empty() {
         vec![base.model]
@@ -118,50 +68,10 @@ pub fn run(args: &SweepArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             .map(|m| super::impact::parse_model(m))
             .collect::<anyhow::Result<_>>()?
     };
-    let values = values(from, to, args.count, args.log);
-    // Every setup is built and validated before any solve, so a bad range fails at once and
-    // names the value.
-    let setups: Vec<ImpactSetup> = values
-        .iter()
-        .map(|v| {
-            let mut s = base;
-            s.apply_assignment(&format!("{param}={v}"))
-                .and_then(|()| s.scenario.validate())
-                .map(|()| s)
-                .map_err(|e| anyhow!("--param {param}={v}: {e}"))
-        })
-        .collect::<anyhow::Result<_>>()?;
-    let jobs: Vec<(ModelKind, usize)> = models
-        .iter()
-        .flat_map(|&m| (0..setups.len()).map(move |i| (m, i)))
-        .collect();
+    let values = sweep::values(from, to, args.count, args.log);
+    let setups = sweep::setups(&base, param, &values).map_err(|e| anyhow!(e))?;
     let start = Instant::now();
-    let points: Vec<Point> = jobs
-        .par_iter()
-        .map(|&(model, i)| {
-            let value = values[i];
-            match solve(model, &setups[i].scenario) {
-                Ok(r) => Point {
-                    model: model.name().into(),
-                    value,
-                    peak_force_n: r.peak_force_n,
-                    contact_duration_s: Some(r.contact_duration_s),
-                    restitution: Some(r.restitution),
-                    contacts: Some(r.contacts.len()),
-                    error: None,
-                },
-                Err(e) => Point {
-                    model: model.name().into(),
-                    value,
-                    peak_force_n: None,
-                    contact_duration_s: None,
-                    restitution: None,
-                    contacts: None,
-                    error: Some(e.to_string()),
-                },
-            }
-        })
-        .collect();
+    let points = sweep::run(&setups, &values, &models, &Progress::new())?;
     let report = SweepReport {
         param: param.to_string(),
         models: models.iter().map(|m| m.name().to_string()).collect(),

@@ -6,11 +6,13 @@ use std::path::Path;
 use std::sync::Once;
 
 /// One series: its legend name and points.
+#[derive(Clone, Debug)]
 pub struct Series {
     pub name: String,
     pub points: Vec<(f64, f64)>,
 }
 
+#[derive(Clone, Debug)]
 pub struct LinePlot {
     pub title: String,
     pub x_label: String,

@@ -31,6 +31,10 @@ pub const EMBEDDED: &[(&str, &str)] = &[
         "paper-slabs",
         include_str!("../../assets/presets/paper-slabs.toml"),
     ),
+    (
+        "paper-buildings",
+        include_str!("../../assets/presets/paper-buildings.toml"),
+    ),
 ];
 
 /// The default scene.
