@@ -67,3 +67,8 @@ fn wave_vs_lumped_scene_matches_its_snapshot() {
 fn building_scene_matches_its_snapshot() {
     snapshot(SceneKind::Buildings, 3.0, "scene-buildings");
 }
+
+#[test]
+fn parameter_study_scene_matches_its_snapshot() {
+    snapshot(SceneKind::Study, 0.0, "scene-parameter-study");
+}

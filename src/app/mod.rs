@@ -11,6 +11,7 @@ mod params;
 mod playback;
 mod scene;
 mod series;
+mod study_scene;
 pub mod worker;
 
 use crate::io::preset::{self, EMBEDDED};
@@ -32,6 +33,7 @@ pub enum SceneKind {
     BarImpact,
     WaveVsLumped,
     Buildings,
+    Study,
 }
 
 impl SceneKind {
@@ -40,6 +42,7 @@ impl SceneKind {
             SceneKind::BarImpact => "bar",
             SceneKind::WaveVsLumped => "compare",
             SceneKind::Buildings => "buildings",
+            SceneKind::Study => "study",
         }
     }
     pub fn from_name(s: &str) -> Option<Self> {
@@ -47,6 +50,7 @@ impl SceneKind {
             SceneKind::BarImpact,
             SceneKind::WaveVsLumped,
             SceneKind::Buildings,
+            SceneKind::Study,
         ]
         .into_iter()
         .find(|k| k.name() == s)
@@ -83,6 +87,7 @@ pub struct PoundingApp {
     bar: BarScene,
     compare: BarScene,
     buildings: BuildingScene,
+    study: study_scene::StudyScene,
     dark: bool,
     help: bool,
     preset_choice: String,
@@ -187,11 +192,13 @@ impl PoundingApp {
                 p.t = t;
             }
         }
+        let study = study_scene::StudyScene::new(ctx, bar.setup);
         PoundingApp {
             scene,
             bar,
             compare,
             buildings,
+            study,
             dark,
             help: false,
             preset_choice: launch
@@ -221,7 +228,7 @@ impl PoundingApp {
 
     /// A solve is under way in some scene.
     pub fn is_solving(&self) -> bool {
-        self.bar.busy() || self.compare.busy() || self.buildings.busy()
+        self.bar.busy() || self.compare.busy() || self.buildings.busy() || self.study.busy()
     }
 
     /// The scene on screen.
@@ -230,6 +237,7 @@ impl PoundingApp {
             SceneKind::BarImpact => &self.bar,
             SceneKind::WaveVsLumped => &self.compare,
             SceneKind::Buildings => &self.buildings,
+            SceneKind::Study => &self.study,
         }
     }
 
@@ -239,6 +247,7 @@ impl PoundingApp {
             SceneKind::BarImpact => &mut self.bar,
             SceneKind::WaveVsLumped => &mut self.compare,
             SceneKind::Buildings => &mut self.buildings,
+            SceneKind::Study => &mut self.study,
         };
         (scene, &self.exporter)
     }
@@ -260,6 +269,10 @@ impl PoundingApp {
                 .on_hover_text("Sears, wave theory, lumped and FE models overlaid");
             ui.selectable_value(&mut self.scene, SceneKind::Buildings, "Building pounding")
                 .on_hover_text("Two buildings swaying in an earthquake, with and without pounding");
+            ui.selectable_value(&mut self.scene, SceneKind::Study, "Parameter study")
+                .on_hover_text(
+                    "One setting swept over a range: peak force, duration and e per model",
+                );
             ui.separator();
             if self.scene == SceneKind::Buildings {
                 if ui
@@ -515,6 +528,8 @@ impl eframe::App for PoundingApp {
             s.poll();
         }
         self.buildings.poll();
+        self.study.base = self.bar.setup;
+        self.study.poll();
         if self.scene == SceneKind::Buildings {
             self.buildings.take_dropped(&ctx);
         }
@@ -581,7 +596,8 @@ impl eframe::App for PoundingApp {
             self.help = open;
         }
         let busy = self.is_solving();
-        if self.playback().playing || busy {
+        // A launch that closes after N frames keeps frames coming even on a still scene.
+        if self.playback().playing || busy || self.launch.exit_after_frames.is_some() {
             ctx.request_repaint();
         }
         self.frames += 1;

@@ -5,6 +5,7 @@ use super::bar_scene::BarScene;
 use super::building_scene::BuildingScene;
 use super::export::{Exporter, ShownPlot};
 use super::playback::Playback;
+use super::study_scene::StudyScene;
 use eframe::egui;
 use std::time::Duration;
 
@@ -67,5 +68,29 @@ impl Scene for BuildingScene {
     }
     fn main_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
         BuildingScene::main_ui(self, ui, exporter)
+    }
+}
+
+impl Scene for StudyScene {
+    fn playback(&mut self) -> &mut Playback {
+        &mut self.playback
+    }
+    fn busy(&self) -> bool {
+        StudyScene::busy(self)
+    }
+    fn timings(&self) -> (Duration, Duration) {
+        (self.solve_time, self.latency)
+    }
+    fn view_rect(&self) -> Option<egui::Rect> {
+        None
+    }
+    fn shown_plots(&self) -> Vec<(&'static str, &ShownPlot)> {
+        StudyScene::shown_plots(self)
+    }
+    fn params_ui(&mut self, ui: &mut egui::Ui) {
+        StudyScene::params_ui(self, ui)
+    }
+    fn main_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
+        StudyScene::main_ui(self, ui, exporter)
     }
 }

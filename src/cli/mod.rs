@@ -44,7 +44,7 @@ pub enum Command {
 #[cfg(feature = "gui")]
 #[derive(clap::Args, Debug, Default)]
 pub struct WindowArgs {
-    /// Scene to open: bar|compare|buildings
+    /// Scene to open: bar|compare|buildings|study
     #[arg(long)]
     pub scene: Option<String>,
     /// Impact preset to open with (instead of the last session's scene)
@@ -66,7 +66,7 @@ fn window(args: &WindowArgs) -> anyhow::Result<()> {
     let scene = match args.scene.as_deref() {
         None => None,
         Some(name) => Some(crate::app::SceneKind::from_name(name).ok_or_else(|| {
-            anyhow::anyhow!("--scene: unknown scene '{name}': allowed bar|compare|buildings")
+            anyhow::anyhow!("--scene: unknown scene '{name}': allowed bar|compare|buildings|study")
         })?),
     };
     crate::app::run(crate::app::Launch {

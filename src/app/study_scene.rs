@@ -1,0 +1,463 @@
+//! The Parameter study scene: one impact setting swept over a range on top of the Bar impact
+//! scene's settings, with peak force, contact duration and e against it for each chosen model.
+//! The sweep runs on a thread of its own (its solves on every core), shows its progress and can be
+//! cancelled; the window keeps drawing throughout.
+
+use super::export::{Exporter, ShownPlot};
+use super::playback::Playback;
+use crate::io::settings::ImpactSetup;
+use crate::model::impact::ModelKind;
+use crate::study::sweep::{self, Point};
+use crate::study::{Cancelled, Progress};
+use eframe::egui::{self, Color32};
+use egui_plot::{Legend, Line, Plot, Points};
+use std::sync::Arc;
+use std::sync::mpsc::{Receiver, channel};
+use std::time::{Duration, Instant};
+
+/// A sensible range for a key when it is picked: (from, to, geometric).
+fn default_range(key: &str) -> (f64, f64, bool) {
+    let field = key.rsplit('.').next().unwrap_or(key);
+    match field {
+        "length" => (0.1, 10.0, true),
+        "velocity" => (0.01, 100.0, true),
+        "radius" => (0.01, 0.5, true),
+        "end_radius" => (0.005, 5.0, true),
+        "area" => (1e-4, 1.0, true),
+        "added_mass" => (0.0, 500.0, false),
+        "youngs_modulus" => (1e9, 4e11, true),
+        "poisson_ratio" => (0.0, 0.49, false),
+        "density" => (1000.0, 20000.0, true),
+        "stiffness" => (1e8, 1e14, true),
+        "zone_scale" => (0.01, 10.0, true),
+        "zone_length" => (0.001, 1.0, true),
+        "divisions" => (1.0, 50.0, true),
+        "restitution" => (0.0, 1.0, false),
+        "dt" => (1e-7, 1e-5, true),
+        "window" => (0.0, 0.01, false),
+        "max_steps" => (1e3, 1e6, true),
+        "segments" => (10.0, 1000.0, true),
+        "courant" => (0.1, 0.95, false),
+        _ => (0.5, 2.0, false),
+    }
+}
+
+/// Models offered, and the ones ticked at start.
+const MODELS: [ModelKind; 7] = ModelKind::ALL;
+const TICKED: [ModelKind; 3] = [ModelKind::Sears, ModelKind::Wave, ModelKind::LumpedHertz];
+
+/// A validated sweep: the setups, their values and the models.
+type Job = (Vec<ImpactSetup>, Vec<f64>, Vec<ModelKind>);
+
+/// A plotted quantity: title, axis label, and how to read it from a point.
+type Quantity = (&'static str, &'static str, fn(&Point) -> Option<f64>);
+
+struct Running {
+    progress: Arc<Progress>,
+    rx: Receiver<Result<Vec<Point>, Cancelled>>,
+    started: Instant,
+    param: String,
+    log: bool,
+}
+
+/// The last finished sweep.
+struct Finished {
+    param: String,
+    log: bool,
+    points: Vec<Point>,
+}
+
+pub struct StudyScene {
+    pub playback: Playback,
+    /// The settings every point starts from (the Bar impact scene's, kept current by the app).
+    pub base: ImpactSetup,
+    param: String,
+    from: String,
+    to: String,
+    count: usize,
+    log: bool,
+    models: [bool; 7],
+    running: Option<Running>,
+    finished: Option<Finished>,
+    status: Option<(String, bool)>,
+    pub solve_time: Duration,
+    pub latency: Duration,
+    shown: [ShownPlot; 3],
+    ctx: egui::Context,
+}
+
+fn fmt(x: f64) -> String {
+    super::params::format_value(x)
+}
+
+impl StudyScene {
+    pub fn new(ctx: &egui::Context, base: ImpactSetup) -> Self {
+        let param = "bar2.length".to_string();
+        let mut s = StudyScene {
+            playback: Playback {
+                playing: false,
+                ..Playback::default()
+            },
+            base,
+            param: param.clone(),
+            from: "0.5".into(),
+            to: "10".into(),
+            count: 50,
+            log: false,
+            models: MODELS.map(|m| TICKED.contains(&m)),
+            running: None,
+            finished: None,
+            status: None,
+            solve_time: Duration::ZERO,
+            latency: Duration::ZERO,
+            shown: Default::default(),
+            ctx: ctx.clone(),
+        };
+        s.start();
+        s
+    }
+
+    pub fn busy(&self) -> bool {
+        self.running.is_some()
+    }
+
+    pub fn progress(&self) -> Option<(usize, usize)> {
+        self.running
+            .as_ref()
+            .map(|r| (r.progress.done(), r.progress.total()))
+    }
+
+    /// Validates the inputs and starts the sweep on a thread; a refusal names the field.
+    pub fn start(&mut self) {
+        if let Some(r) = &self.running {
+            r.progress.cancel();
+        }
+        match self.prepare() {
+            Ok((setups, values, models)) => {
+                let progress = Arc::new(Progress::new());
+                let (tx, rx) = channel();
+                let p = progress.clone();
+                let ctx = self.ctx.clone();
+                std::thread::Builder::new()
+                    .name("pounding-study".into())
+                    .spawn(move || {
+                        let _ = tx.send(sweep::run(&setups, &values, &models, &p));
+                        ctx.request_repaint();
+                    })
+                    .expect("the study thread starts");
+                self.running = Some(Running {
+                    progress,
+                    rx,
+                    started: Instant::now(),
+                    param: self.param.clone(),
+                    log: self.log,
+                });
+                self.status = None;
+            }
+            Err(e) => self.status = Some((e, true)),
+        }
+    }
+
+    fn prepare(&self) -> Result<Job, String> {
+        let number = |name: &str, text: &str| {
+            text.trim()
+                .parse::<f64>()
+                .map_err(|_| format!("{name}: '{}' is not a number", text.trim()))
+        };
+        let (from, to) = (number("from", &self.from)?, number("to", &self.to)?);
+        sweep::check(&self.param, from, to, self.count, self.log)
+            .map_err(|e| e.replace("--", ""))?;
+        let models: Vec<ModelKind> = MODELS
+            .iter()
+            .zip(self.models)
+            .filter(|(_, on)| *on)
+            .map(|(m, _)| *m)
+            .collect();
+        if models.is_empty() {
+            return Err("models: tick at least one".into());
+        }
+        let values = sweep::values(from, to, self.count, self.log);
+        let setups = sweep::setups(&self.base, &self.param, &values)
+            .map_err(|e| e.replace("--param ", ""))?;
+        Ok((setups, values, models))
+    }
+
+    /// Takes a finished sweep, if one arrived.
+    pub fn poll(&mut self) {
+        let Some(r) = &self.running else { return };
+        let Ok(outcome) = r.rx.try_recv() else {
+            self.ctx.request_repaint_after(Duration::from_millis(50));
+            return;
+        };
+        let elapsed = r.started.elapsed();
+        match outcome {
+            Ok(points) => {
+                let failed = points.iter().filter(|p| p.error.is_some()).count();
+                self.status = Some((
+                    format!(
+                        "{} solves in {} on {} threads{}",
+                        points.len(),
+                        super::ms(elapsed.as_secs_f64(), 1),
+                        rayon::current_num_threads(),
+                        if failed > 0 {
+                            format!("; {failed} points without a result (hover a plot's point)")
+                        } else {
+                            String::new()
+                        }
+                    ),
+                    false,
+                ));
+                self.finished = Some(Finished {
+                    param: r.param.clone(),
+                    log: r.log,
+                    points,
+                });
+                self.solve_time = elapsed;
+                self.latency = elapsed;
+            }
+            Err(Cancelled) => {
+                self.status = Some((
+                    format!(
+                        "cancelled after {} of {} solves",
+                        r.progress.done(),
+                        r.progress.total()
+                    ),
+                    false,
+                ));
+            }
+        }
+        self.running = None;
+    }
+
+    pub fn cancel(&mut self) {
+        if let Some(r) = &self.running {
+            r.progress.cancel();
+        }
+    }
+
+    pub fn shown_plots(&self) -> Vec<(&'static str, &ShownPlot)> {
+        ["peak-force", "duration", "restitution"]
+            .into_iter()
+            .zip(&self.shown)
+            .collect()
+    }
+
+    pub fn params_ui(&mut self, ui: &mut egui::Ui) {
+        ui.heading("Parameter study");
+        ui.label(
+            "Sweeps one setting of the Bar impact scene (its preset and values are the base).",
+        );
+        ui.add_space(4.0);
+        let label = ui.label("swept setting").id;
+        let before = self.param.clone();
+        egui::ComboBox::from_id_salt("study-param")
+            .selected_text(&self.param)
+            .height(400.0)
+            .show_ui(ui, |ui| {
+                for k in sweep::numeric_keys() {
+                    ui.selectable_value(&mut self.param, k.clone(), k);
+                }
+            })
+            .response
+            .labelled_by(label);
+        if self.param != before {
+            let (a, b, log) = default_range(&self.param);
+            (self.from, self.to, self.log) = (fmt(a), fmt(b), log);
+        }
+        for (name, text) in [("from", &mut self.from), ("to", &mut self.to)] {
+            ui.horizontal(|ui| {
+                let label = ui.label(name).id;
+                ui.add(egui::TextEdit::singleline(text).desired_width(120.0))
+                    .labelled_by(label)
+                    .on_hover_text("typed values are checked when the study runs");
+            });
+        }
+        ui.horizontal(|ui| {
+            let label = ui.label("points").id;
+            ui.add(egui::DragValue::new(&mut self.count).range(2..=10_000))
+                .labelled_by(label)
+                .on_hover_text("values swept, ends included (2 to 10000)");
+        });
+        ui.checkbox(&mut self.log, "geometric spacing")
+            .on_hover_text("equal ratios between values (from and to > 0)");
+        ui.add_space(4.0);
+        ui.label("models");
+        for (m, on) in MODELS.iter().zip(self.models.iter_mut()) {
+            ui.checkbox(on, m.name());
+        }
+        ui.add_space(6.0);
+        ui.horizontal(|ui| {
+            if ui
+                .button("Run")
+                .on_hover_text("solve every point on every core")
+                .clicked()
+            {
+                self.start();
+            }
+            if ui
+                .add_enabled(self.busy(), egui::Button::new("Cancel"))
+                .on_hover_text("stop: finished points are dropped")
+                .clicked()
+            {
+                self.cancel();
+            }
+        });
+        if let Some((done, total)) = self.progress() {
+            ui.add(
+                egui::ProgressBar::new(done as f32 / total.max(1) as f32)
+                    .text(format!("{done} / {total} solves")),
+            );
+        }
+        if let Some((m, is_error)) = &self.status {
+            let colour = if *is_error {
+                Color32::from_rgb(220, 60, 50)
+            } else {
+                ui.visuals().text_color()
+            };
+            ui.colored_label(colour, m);
+        }
+    }
+
+    pub fn main_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
+        let Some(f) = &self.finished else {
+            ui.label(if self.busy() {
+                "solving..."
+            } else {
+                "press Run"
+            });
+            return;
+        };
+        let x_label = if f.log {
+            format!("log10 {}", f.param)
+        } else {
+            f.param.clone()
+        };
+        let x = |v: f64| if f.log { v.log10() } else { v };
+        let quantities: [Quantity; 3] = [
+            ("Peak contact force", "peak force [kN]", |p| {
+                p.peak_force_n.map(|f| f * 1e-3)
+            }),
+            ("Contact duration", "contact duration [ms]", |p| {
+                p.contact_duration_s.map(|d| d * 1e3)
+            }),
+            ("Coefficient of restitution", "e", |p| p.restitution),
+        ];
+        let h = ((ui.available_height() - 120.0) / 3.0).clamp(140.0, 300.0);
+        let models: Vec<&str> = MODELS
+            .iter()
+            .map(|m| m.name())
+            .filter(|m| f.points.iter().any(|p| p.model == *m))
+            .collect();
+        for (k, (title, y_label, get)) in quantities.iter().enumerate() {
+            let series: Vec<(String, Vec<[f64; 2]>)> = models
+                .iter()
+                .map(|m| {
+                    let pts = f
+                        .points
+                        .iter()
+                        .filter(|p| p.model == *m)
+                        .filter_map(|p| get(p).map(|y| [x(p.value), y]))
+                        .filter(|p| p[0].is_finite() && p[1].is_finite())
+                        .collect();
+                    (m.to_string(), pts)
+                })
+                .collect();
+            let few = f.points.len() / models.len().max(1) <= 40;
+            let response = Plot::new(("study", k))
+                .height(h)
+                .legend(Legend::default())
+                .x_axis_label(x_label.clone())
+                .y_axis_label(*y_label)
+                .link_axis(egui::Id::unique("study-plots"), [true, false])
+                .show(ui, |p| {
+                    for (name, pts) in &series {
+                        p.line(Line::new(name.as_str(), pts.clone()));
+                        if few {
+                            p.points(Points::new(name.as_str(), pts.clone()).radius(2.5));
+                        }
+                    }
+                });
+            let b = response.transform.bounds();
+            self.shown[k] = ShownPlot {
+                title: format!("{title} against {}", f.param),
+                x_label: x_label.clone(),
+                y_label: y_label.to_string(),
+                series,
+                bounds: Some((b.min(), b.max())),
+            };
+            exporter.buttons(
+                ui,
+                &self.shown[k],
+                ["peak-force", "duration", "restitution"][k],
+            );
+        }
+        let failed: Vec<&Point> = f.points.iter().filter(|p| p.error.is_some()).collect();
+        if !failed.is_empty() {
+            ui.collapsing(format!("{} points without a result", failed.len()), |ui| {
+                for p in failed.iter().take(50) {
+                    ui.label(format!(
+                        "{} = {}: {}: {}",
+                        f.param,
+                        fmt(p.value),
+                        p.model,
+                        p.error.as_deref().unwrap_or_default()
+                    ));
+                }
+            });
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn wait(s: &mut StudyScene) {
+        let start = Instant::now();
+        while s.busy() {
+            s.poll();
+            assert!(
+                start.elapsed() < Duration::from_secs(60),
+                "the study never ended"
+            );
+            std::thread::sleep(Duration::from_millis(5));
+        }
+    }
+
+    #[test]
+    fn a_sweep_lands_with_every_point_then_a_long_one_can_be_cancelled() {
+        let mut s = StudyScene::new(&egui::Context::default(), ImpactSetup::default());
+        wait(&mut s);
+        assert_eq!(s.finished.as_ref().map(|f| f.points.len()), Some(150));
+        // A sweep far too long to finish first: FE with fine meshes.
+        s.models = MODELS.map(|m| m == ModelKind::Fe);
+        s.count = 10_000;
+        s.start();
+        assert!(s.busy());
+        s.cancel();
+        wait(&mut s);
+        let (msg, is_error) = s.status.clone().unwrap();
+        assert!(msg.starts_with("cancelled after") && !is_error, "{msg}");
+        assert_eq!(s.finished.as_ref().map(|f| f.points.len()), Some(150));
+    }
+
+    #[test]
+    fn bad_inputs_are_refused_naming_the_field_and_kept_as_typed() {
+        let mut s = StudyScene::new(&egui::Context::default(), ImpactSetup::default());
+        wait(&mut s);
+        s.from = "abc".into();
+        s.start();
+        assert!(!s.busy());
+        let (msg, is_error) = s.status.clone().unwrap();
+        assert!(is_error && msg.starts_with("from:"), "{msg}");
+        assert_eq!(s.from, "abc");
+        s.from = "-1".into();
+        s.start();
+        let (msg, _) = s.status.clone().unwrap();
+        assert!(msg.contains("bar2.length") && msg.contains("-1"), "{msg}");
+        s.from = "0.5".into();
+        s.models = [false; 7];
+        s.start();
+        assert!(s.status.clone().unwrap().0.starts_with("models:"));
+    }
+}
