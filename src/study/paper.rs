@@ -800,15 +800,30 @@ fn slab_n(ctx: &Context) -> anyhow::Result<StudyOutput> {
             ))
         })
         .collect::<anyhow::Result<_>>()?;
-    let results = histories(ctx, &jobs)?;
+    // n = 10 once more in the end reading (no plane delay): what the waves do without the paper
+    // reading's overshoot.
+    let mut jobs = jobs;
+    let end = with(&jobs[3].1, &["sears.reading=end".into()])?;
+    jobs.push((ModelKind::Sears, end));
+    let mut results = histories(ctx, &jobs)?;
+    let end = results.pop().expect("the end-reading run");
     let limit = wave_force(&base);
     let mut series: Vec<Series> = ns
         .iter()
         .zip(&results)
         .map(|(n, r)| force_series(format!("n = {n}"), r))
         .collect();
+    series.push(force_series("n = 10, end reading", &end));
     series.push(level("wave force", limit * 1e-3, end_ms(&results)));
-    let mut findings = vec![finding("wave force Z/2 (v1 - v2)", limit, "N")];
+    let mut findings = vec![
+        finding("wave force Z/2 (v1 - v2)", limit, "N"),
+        finding(
+            "n = 10, end reading: peak / wave force",
+            end.peak_force_n.unwrap_or(0.0) / limit,
+            "",
+        ),
+        finding("n = 10, end reading: duration", end.contact_duration_s, "s"),
+    ];
     for (n, r) in ns.iter().zip(&results) {
         findings.push(finding(
             format!("n = {n}: rise time to 90%"),
