@@ -27,6 +27,7 @@ const IMPACT_KEY: &str = "impact-scene-v1";
 const COMPARE_KEY: &str = "compare-scene-v1";
 const UI_KEY: &str = "ui-v1";
 const BUILDINGS_KEY: &str = "buildings-scene-v1";
+const STUDY_KEY: &str = "study-scene-v1";
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum SceneKind {
@@ -192,7 +193,14 @@ impl PoundingApp {
                 p.t = t;
             }
         }
-        let study = study_scene::StudyScene::new(ctx, bar.setup);
+        let mut study = study_scene::StudyScene::new(ctx, bar.setup);
+        if let Some(text) = storage
+            .and_then(|s| s.get_string(STUDY_KEY))
+            .filter(|_| !fresh)
+            && let Err(e) = study.restore(&text)
+        {
+            errors.push(e);
+        }
         PoundingApp {
             scene,
             bar,
@@ -624,6 +632,7 @@ impl eframe::App for PoundingApp {
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         storage.set_string(IMPACT_KEY, preset::impact_to_toml(&self.bar.setup));
         storage.set_string(COMPARE_KEY, preset::impact_to_toml(&self.compare.setup));
+        storage.set_string(STUDY_KEY, self.study.state());
         storage.set_string(
             BUILDINGS_KEY,
             preset::buildings_to_toml(&self.buildings.setup),

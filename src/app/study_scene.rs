@@ -117,6 +117,76 @@ impl StudyScene {
         s
     }
 
+    /// The study's inputs as `key=value` lines, as typed (what the window keeps between sessions).
+    pub fn state(&self) -> String {
+        let models: Vec<&str> = MODELS
+            .iter()
+            .zip(self.models)
+            .filter(|(_, on)| *on)
+            .map(|(m, _)| m.name())
+            .collect();
+        format!(
+            "param={}\nfrom={}\nto={}\ncount={}\nlog={}\nmodels={}\n",
+            self.param,
+            self.from.trim(),
+            self.to.trim(),
+            self.count,
+            self.log,
+            models.join(",")
+        )
+    }
+
+    /// Restores inputs saved by [`StudyScene::state`] and reruns; what cannot be read is named
+    /// and left at its current value.
+    pub fn restore(&mut self, text: &str) -> Result<(), String> {
+        let mut bad = vec![];
+        for line in text.lines().filter(|l| !l.trim().is_empty()) {
+            let (k, v) = line.split_once('=').unwrap_or((line, ""));
+            let ok = match k {
+                "param" if sweep::numeric_keys().iter().any(|n| n == v) => {
+                    self.param = v.into();
+                    true
+                }
+                "from" => {
+                    self.from = v.into();
+                    true
+                }
+                "to" => {
+                    self.to = v.into();
+                    true
+                }
+                "count" => v
+                    .parse()
+                    .ok()
+                    .filter(|c| (2..=10_000).contains(c))
+                    .map(|c| self.count = c)
+                    .is_some(),
+                "log" => v.parse().map(|b| self.log = b).is_ok(),
+                "models" => {
+                    let names: Vec<&str> = v.split(',').collect();
+                    let known = names.iter().all(|n| ModelKind::from_name(n).is_some());
+                    if known {
+                        self.models = MODELS.map(|m| names.contains(&m.name()));
+                    }
+                    known
+                }
+                _ => false,
+            };
+            if !ok {
+                bad.push(line.to_string());
+            }
+        }
+        self.start();
+        if bad.is_empty() {
+            Ok(())
+        } else {
+            Err(format!(
+                "the last session's parameter study: could not read {}",
+                bad.join("; ")
+            ))
+        }
+    }
+
     pub fn busy(&self) -> bool {
         self.running.is_some()
     }
@@ -439,6 +509,25 @@ mod tests {
         let (msg, is_error) = s.status.clone().unwrap();
         assert!(msg.starts_with("cancelled after") && !is_error, "{msg}");
         assert_eq!(s.finished.as_ref().map(|f| f.points.len()), Some(150));
+    }
+
+    #[test]
+    fn the_inputs_come_back_as_typed_and_unreadable_lines_are_named() {
+        let mut s = StudyScene::new(&egui::Context::default(), ImpactSetup::default());
+        s.param = "bar1.velocity".into();
+        (s.from, s.to, s.count, s.log) = ("0.01".into(), "1e2".into(), 7, true);
+        s.models = MODELS.map(|m| m == ModelKind::Wave);
+        let saved = s.state();
+        let mut back = StudyScene::new(&egui::Context::default(), ImpactSetup::default());
+        back.restore(&saved).unwrap();
+        assert_eq!(back.state(), saved);
+        wait(&mut back);
+        assert_eq!(back.finished.as_ref().map(|f| f.points.len()), Some(7));
+        let err = back
+            .restore("count=0\nmodels=sears,nope\nlog=true")
+            .unwrap_err();
+        assert!(err.contains("count=0") && err.contains("nope"), "{err}");
+        assert_eq!(back.count, 7);
     }
 
     #[test]

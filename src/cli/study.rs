@@ -5,7 +5,7 @@ use crate::export::plot::LinePlot;
 use crate::study::{self, Context, Finding, Progress, Study};
 use anyhow::{Context as _, anyhow, bail};
 use clap::Args;
-use indicatif::{ProgressBar, ProgressStyle};
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use serde::Serialize;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -194,11 +194,8 @@ fn with_bar<T: Send>(
     quiet: bool,
     work: impl FnOnce() -> T + Send,
 ) -> T {
-    let bar = if quiet {
-        ProgressBar::hidden()
-    } else {
-        ProgressBar::new(0)
-    };
+    // Hidden until the study has planned its solves, so it never shows an empty 0/0 bar.
+    let bar = ProgressBar::hidden();
     bar.set_style(
         ProgressStyle::with_template("{prefix:>20} [{bar:40}] {pos}/{len} solves, {elapsed}")
             .unwrap_or_else(|_| ProgressStyle::default_bar())
@@ -207,7 +204,12 @@ fn with_bar<T: Send>(
     bar.set_prefix(name.to_string());
     let out = std::thread::scope(|scope| {
         let job = scope.spawn(work);
+        let mut drawn = quiet;
         while !job.is_finished() {
+            if !drawn && progress.total() > 0 {
+                bar.set_draw_target(ProgressDrawTarget::stderr());
+                drawn = true;
+            }
             bar.set_length(progress.total() as u64);
             bar.set_position(progress.done() as u64);
             std::thread::sleep(Duration::from_millis(20));
