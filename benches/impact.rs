@@ -78,9 +78,26 @@ fn sweep_1000(c: &mut Criterion) {
     group.finish();
 }
 
+/// Every impact study of the paper (Figures 4-9, Sections 3.3-3.5) solved, without writing
+/// files: what `pounding study` spends on solving.
+fn paper_studies(c: &mut Criterion) {
+    use pounding::study::{self, Context, Progress};
+    let mut group = c.benchmark_group("study");
+    group.sample_size(10);
+    for s in study::studies().into_iter().filter(|s| !s.buildings) {
+        group.bench_function(s.name, |b| {
+            b.iter(|| {
+                let progress = Progress::new();
+                (s.run)(&Context::new(&progress)).expect("the study runs")
+            })
+        });
+    }
+    group.finish();
+}
+
 criterion_group! {
     name = benches;
     config = Criterion::default().sample_size(30).warm_up_time(std::time::Duration::from_millis(500)).measurement_time(std::time::Duration::from_secs(2));
-    targets = base_case, sears_step_cost_against_length, fe_fine_mesh, sweep_1000
+    targets = base_case, sears_step_cost_against_length, fe_fine_mesh, sweep_1000, paper_studies
 }
 criterion_main!(benches);

@@ -90,6 +90,23 @@ fn fmt(x: f64) -> String {
     super::params::format_value(x)
 }
 
+/// A tick label: three significant digits.
+fn tick(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return "0".into();
+    }
+    if !(1e-3..1e4).contains(&x.abs()) {
+        return format!("{x:.2e}");
+    }
+    let decimals = (2 - x.abs().log10().floor() as i32).max(0) as usize;
+    let text = format!("{x:.decimals$}");
+    if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        text
+    }
+}
+
 impl StudyScene {
     pub fn new(ctx: &egui::Context, base: ImpactSetup) -> Self {
         let param = "bar2.length".to_string();
@@ -433,10 +450,15 @@ impl StudyScene {
                 })
                 .collect();
             let few = f.points.len() / models.len().max(1) <= 40;
-            let response = Plot::new(("study", k))
-                .height(h)
-                .legend(Legend::default())
-                .x_axis_label(x_label.clone())
+            let mut plot = Plot::new(("study", k)).height(h).legend(Legend::default());
+            // Geometric sweeps are drawn against log10 of the value; the ticks show the value.
+            plot = if f.log {
+                plot.x_axis_label(format!("{} (log scale)", f.param))
+                    .x_axis_formatter(|mark, _| tick(10f64.powf(mark.value)))
+            } else {
+                plot.x_axis_label(x_label.clone())
+            };
+            let response = plot
                 .y_axis_label(*y_label)
                 .link_axis(egui::Id::unique("study-plots"), [true, false])
                 .show(ui, |p| {
@@ -528,6 +550,14 @@ mod tests {
             .unwrap_err();
         assert!(err.contains("count=0") && err.contains("nope"), "{err}");
         assert_eq!(back.count, 7);
+    }
+
+    #[test]
+    fn log_axis_ticks_read_as_three_significant_digits() {
+        let shown: Vec<String> = [0.501187, 1.0, 1.258925, 7.943282, 12345.0, 0.0001]
+            .map(tick)
+            .into();
+        assert_eq!(shown, ["0.501", "1", "1.26", "7.94", "1.23e4", "1.00e-4"]);
     }
 
     #[test]
