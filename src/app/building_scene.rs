@@ -350,7 +350,7 @@ impl BuildingScene {
     }
 
     /// The plots on screen last frame, by export name.
-    pub fn shown_plots(&self) -> Vec<(&'static str, &ShownPlot)> {
+    pub fn shown_plots(&self) -> Vec<(&str, &ShownPlot)> {
         let mut plots = vec![];
         if self.solved.is_some() {
             plots.push(("displacements", &self.shown_displacements));

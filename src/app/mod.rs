@@ -1,12 +1,14 @@
 //! The explorer window: an eframe app with a wgpu view. Scenes share the physics core with the
 //! command line; each one solves off the UI thread and draws only what it shows.
 
+mod background;
 mod bar_scene;
 mod bar_view;
 mod building_scene;
 mod dialog;
 mod export;
 mod impact_params;
+mod paper_figures;
 mod params;
 mod playback;
 mod scene;

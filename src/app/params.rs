@@ -111,3 +111,15 @@ pub fn format_value(x: f64) -> String {
         format!("{x:.4e}")
     }
 }
+
+/// A scene's last outcome: a message, in red when it is an error.
+pub fn status_ui(ui: &mut egui::Ui, status: Option<&(String, bool)>) {
+    if let Some((message, is_error)) = status {
+        let colour = if *is_error {
+            egui::Color32::from_rgb(220, 60, 50)
+        } else {
+            ui.visuals().text_color()
+        };
+        ui.colored_label(colour, message);
+    }
+}

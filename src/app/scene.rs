@@ -18,7 +18,7 @@ pub trait Scene {
     /// The animated view's rectangle last frame.
     fn view_rect(&self) -> Option<egui::Rect>;
     /// The plots on screen last frame, by export name.
-    fn shown_plots(&self) -> Vec<(&'static str, &ShownPlot)>;
+    fn shown_plots(&self) -> Vec<(&str, &ShownPlot)>;
     fn params_ui(&mut self, ui: &mut egui::Ui);
     fn main_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter);
 }
@@ -36,7 +36,7 @@ impl Scene for BarScene {
     fn view_rect(&self) -> Option<egui::Rect> {
         self.view_rect
     }
-    fn shown_plots(&self) -> Vec<(&'static str, &ShownPlot)> {
+    fn shown_plots(&self) -> Vec<(&str, &ShownPlot)> {
         BarScene::shown_plots(self)
     }
     fn params_ui(&mut self, ui: &mut egui::Ui) {
@@ -60,7 +60,7 @@ impl Scene for BuildingScene {
     fn view_rect(&self) -> Option<egui::Rect> {
         self.view_rect
     }
-    fn shown_plots(&self) -> Vec<(&'static str, &ShownPlot)> {
+    fn shown_plots(&self) -> Vec<(&str, &ShownPlot)> {
         BuildingScene::shown_plots(self)
     }
     fn params_ui(&mut self, ui: &mut egui::Ui) {
@@ -84,7 +84,7 @@ impl Scene for StudyScene {
     fn view_rect(&self) -> Option<egui::Rect> {
         None
     }
-    fn shown_plots(&self) -> Vec<(&'static str, &ShownPlot)> {
+    fn shown_plots(&self) -> Vec<(&str, &ShownPlot)> {
         StudyScene::shown_plots(self)
     }
     fn params_ui(&mut self, ui: &mut egui::Ui) {

@@ -35,3 +35,12 @@ pub fn decimate(time: &[f64], y: &[f64], scale: f64) -> Vec<[f64; 2]> {
     }
     out
 }
+
+/// At most about 20 000 points of a line given as pairs (see [`decimate`]).
+pub fn thin(points: Vec<[f64; 2]>) -> Vec<[f64; 2]> {
+    if points.len() <= 20_000 {
+        return points;
+    }
+    let (x, y): (Vec<f64>, Vec<f64>) = points.iter().map(|p| (p[0], p[1])).unzip();
+    decimate(&x, &y, 1.0)
+}

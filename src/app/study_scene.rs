@@ -3,17 +3,17 @@
 //! The sweep runs on a thread of its own (its solves on every core), shows its progress and can be
 //! cancelled; the window keeps drawing throughout.
 
+use super::background::Background;
 use super::export::{Exporter, ShownPlot};
+use super::paper_figures::PaperFigures;
 use super::playback::Playback;
 use crate::io::settings::ImpactSetup;
 use crate::model::impact::ModelKind;
+use crate::study::Cancelled;
 use crate::study::sweep::{self, Point};
-use crate::study::{Cancelled, Progress};
-use eframe::egui::{self, Color32};
+use eframe::egui;
 use egui_plot::{Legend, Line, Plot, Points};
-use std::sync::Arc;
-use std::sync::mpsc::{Receiver, channel};
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 /// A sensible range for a key when it is picked: (from, to, geometric).
 fn default_range(key: &str) -> (f64, f64, bool) {
@@ -53,9 +53,7 @@ type Job = (Vec<ImpactSetup>, Vec<f64>, Vec<ModelKind>);
 type Quantity = (&'static str, &'static str, fn(&Point) -> Option<f64>);
 
 struct Running {
-    progress: Arc<Progress>,
-    rx: Receiver<Result<Vec<Point>, Cancelled>>,
-    started: Instant,
+    job: Background<Result<Vec<Point>, Cancelled>>,
     param: String,
     log: bool,
 }
@@ -67,8 +65,17 @@ struct Finished {
     points: Vec<Point>,
 }
 
+/// What the scene shows: a sweep of one setting, or one of the paper's figures.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Mode {
+    Sweep,
+    Paper,
+}
+
 pub struct StudyScene {
     pub playback: Playback,
+    mode: Mode,
+    paper: PaperFigures,
     /// The settings every point starts from (the Bar impact scene's, kept current by the app).
     pub base: ImpactSetup,
     param: String,
@@ -91,7 +98,7 @@ fn fmt(x: f64) -> String {
 }
 
 /// A tick label: three significant digits.
-fn tick(x: f64) -> String {
+pub(super) fn tick(x: f64) -> String {
     if x == 0.0 || !x.is_finite() {
         return "0".into();
     }
@@ -122,6 +129,8 @@ impl StudyScene {
             count: 50,
             log: false,
             models: MODELS.map(|m| TICKED.contains(&m)),
+            mode: Mode::Sweep,
+            paper: PaperFigures::new(ctx),
             running: None,
             finished: None,
             status: None,
@@ -143,7 +152,13 @@ impl StudyScene {
             .map(|(m, _)| m.name())
             .collect();
         format!(
-            "param={}\nfrom={}\nto={}\ncount={}\nlog={}\nmodels={}\n",
+            "mode={}\npaper={}\nparam={}\nfrom={}\nto={}\ncount={}\nlog={}\nmodels={}\n",
+            if self.mode == Mode::Paper {
+                "paper"
+            } else {
+                "sweep"
+            },
+            self.paper.choice,
             self.param,
             self.from.trim(),
             self.to.trim(),
@@ -160,6 +175,18 @@ impl StudyScene {
         for line in text.lines().filter(|l| !l.trim().is_empty()) {
             let (k, v) = line.split_once('=').unwrap_or((line, ""));
             let ok = match k {
+                "mode" => match v {
+                    "paper" => {
+                        self.mode = Mode::Paper;
+                        true
+                    }
+                    "sweep" => {
+                        self.mode = Mode::Sweep;
+                        true
+                    }
+                    _ => false,
+                },
+                "paper" => self.paper.choose(v),
                 "param" if sweep::numeric_keys().iter().any(|n| n == v) => {
                     self.param = v.into();
                     true
@@ -194,6 +221,9 @@ impl StudyScene {
             }
         }
         self.start();
+        if self.mode == Mode::Paper {
+            self.paper.start();
+        }
         if bad.is_empty() {
             Ok(())
         } else {
@@ -205,37 +235,18 @@ impl StudyScene {
     }
 
     pub fn busy(&self) -> bool {
-        self.running.is_some()
-    }
-
-    pub fn progress(&self) -> Option<(usize, usize)> {
-        self.running
-            .as_ref()
-            .map(|r| (r.progress.done(), r.progress.total()))
+        self.running.is_some() || self.paper.busy()
     }
 
     /// Validates the inputs and starts the sweep on a thread; a refusal names the field.
     pub fn start(&mut self) {
-        if let Some(r) = &self.running {
-            r.progress.cancel();
-        }
+        self.cancel();
         match self.prepare() {
             Ok((setups, values, models)) => {
-                let progress = Arc::new(Progress::new());
-                let (tx, rx) = channel();
-                let p = progress.clone();
-                let ctx = self.ctx.clone();
-                std::thread::Builder::new()
-                    .name("pounding-study".into())
-                    .spawn(move || {
-                        let _ = tx.send(sweep::run(&setups, &values, &models, &p));
-                        ctx.request_repaint();
-                    })
-                    .expect("the study thread starts");
                 self.running = Some(Running {
-                    progress,
-                    rx,
-                    started: Instant::now(),
+                    job: Background::spawn(&self.ctx, move |p| {
+                        sweep::run(&setups, &values, &models, p)
+                    }),
                     param: self.param.clone(),
                     log: self.log,
                 });
@@ -269,14 +280,15 @@ impl StudyScene {
         Ok((setups, values, models))
     }
 
-    /// Takes a finished sweep, if one arrived.
+    /// Takes a finished sweep or paper figure, if one arrived.
     pub fn poll(&mut self) {
+        if let Some(t) = self.paper.poll() {
+            (self.solve_time, self.latency) = (t, t);
+        }
         let Some(r) = &self.running else { return };
-        let Ok(outcome) = r.rx.try_recv() else {
-            self.ctx.request_repaint_after(Duration::from_millis(50));
+        let Some((outcome, elapsed)) = r.job.try_take(&self.ctx) else {
             return;
         };
-        let elapsed = r.started.elapsed();
         match outcome {
             Ok(points) => {
                 let failed = points.iter().filter(|p| p.error.is_some()).count();
@@ -303,14 +315,8 @@ impl StudyScene {
                 self.latency = elapsed;
             }
             Err(Cancelled) => {
-                self.status = Some((
-                    format!(
-                        "cancelled after {} of {} solves",
-                        r.progress.done(),
-                        r.progress.total()
-                    ),
-                    false,
-                ));
+                let (done, total) = r.job.counts();
+                self.status = Some((format!("cancelled after {done} of {total} solves"), false));
             }
         }
         self.running = None;
@@ -318,11 +324,17 @@ impl StudyScene {
 
     pub fn cancel(&mut self) {
         if let Some(r) = &self.running {
-            r.progress.cancel();
+            r.job.cancel();
         }
     }
 
-    pub fn shown_plots(&self) -> Vec<(&'static str, &ShownPlot)> {
+    pub fn shown_plots(&self) -> Vec<(&str, &ShownPlot)> {
+        if self.mode == Mode::Paper {
+            return self.paper.shown_plots();
+        }
+        if self.finished.is_none() {
+            return vec![];
+        }
         ["peak-force", "duration", "restitution"]
             .into_iter()
             .zip(&self.shown)
@@ -331,6 +343,18 @@ impl StudyScene {
 
     pub fn params_ui(&mut self, ui: &mut egui::Ui) {
         ui.heading("Parameter study");
+        ui.horizontal(|ui| {
+            let before = self.mode;
+            ui.selectable_value(&mut self.mode, Mode::Sweep, "Sweep a setting");
+            ui.selectable_value(&mut self.mode, Mode::Paper, "The paper's figures");
+            if self.mode != before && !self.paper.busy() && self.paper.shown_plots().is_empty() {
+                self.paper.start();
+            }
+        });
+        if self.mode == Mode::Paper {
+            self.paper.params_ui(ui);
+            return;
+        }
         ui.label(
             "Sweeps one setting of the Bar impact scene (its preset and values are the base).",
         );
@@ -389,23 +413,17 @@ impl StudyScene {
                 self.cancel();
             }
         });
-        if let Some((done, total)) = self.progress() {
-            ui.add(
-                egui::ProgressBar::new(done as f32 / total.max(1) as f32)
-                    .text(format!("{done} / {total} solves")),
-            );
+        if let Some(r) = &self.running {
+            r.job.progress_ui(ui);
         }
-        if let Some((m, is_error)) = &self.status {
-            let colour = if *is_error {
-                Color32::from_rgb(220, 60, 50)
-            } else {
-                ui.visuals().text_color()
-            };
-            ui.colored_label(colour, m);
-        }
+        super::params::status_ui(ui, self.status.as_ref());
     }
 
     pub fn main_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
+        if self.mode == Mode::Paper {
+            self.paper.main_ui(ui, exporter);
+            return;
+        }
         let Some(f) = &self.finished else {
             ui.label(if self.busy() {
                 "solving..."
@@ -503,6 +521,7 @@ impl StudyScene {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::time::Instant;
 
     fn wait(s: &mut StudyScene) {
         let start = Instant::now();
@@ -550,6 +569,21 @@ mod tests {
             .unwrap_err();
         assert!(err.contains("count=0") && err.contains("nope"), "{err}");
         assert_eq!(back.count, 7);
+    }
+
+    #[test]
+    fn a_paper_figure_runs_in_the_background_and_offers_its_plots_for_export() {
+        let mut s = StudyScene::new(&egui::Context::default(), ImpactSetup::default());
+        s.restore("mode=paper\npaper=fig5-models").unwrap();
+        wait(&mut s);
+        let names: Vec<&str> = s.shown_plots().iter().map(|(n, _)| *n).collect();
+        assert_eq!(
+            names,
+            ["fig5-models-0.1m", "fig5-models-1m", "fig5-models-10m"]
+        );
+        assert!(s.paper.status().is_some_and(|m| m.starts_with("9 solves")));
+        let err = s.restore("paper=fig12-displacements").unwrap_err();
+        assert!(err.contains("fig12-displacements"), "{err}");
     }
 
     #[test]
