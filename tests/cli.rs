@@ -1,23 +1,9 @@
 //! The `pounding` binary as a user and a script would call it.
 
-use std::process::{Command, Output};
+use common::{pounding, stderr, stdout};
+use std::process::Command;
 
 mod common;
-
-fn pounding(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_pounding"))
-        .args(args)
-        .output()
-        .expect("the binary runs")
-}
-
-fn stdout(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
 
 fn json(args: &[&str]) -> serde_json::Value {
     let mut all = args.to_vec();

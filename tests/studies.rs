@@ -5,7 +5,9 @@
 use pounding::io::building_settings::BuildingSetup;
 use pounding::io::preset;
 use pounding::study::{self, Cancelled, Context, Progress, StudyOutput, sweep};
-use std::process::Command;
+
+mod common;
+use common::pounding;
 
 fn run(name: &str) -> StudyOutput {
     let progress = Progress::new();
@@ -233,13 +235,6 @@ fn a_cancelled_sweep_stops_without_solving_and_counts_its_jobs() {
     let p = Progress::new();
     let points = sweep::run(&setups, &values, &models, &p).unwrap();
     assert_eq!((points.len(), p.done()), (40, 40));
-}
-
-fn pounding(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_pounding"))
-        .args(args)
-        .output()
-        .expect("the binary runs")
 }
 
 #[test]

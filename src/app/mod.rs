@@ -11,6 +11,7 @@ mod impact_params;
 mod paper_figures;
 mod params;
 mod playback;
+mod plot_view;
 mod scene;
 mod series;
 mod study_scene;
@@ -538,7 +539,10 @@ impl eframe::App for PoundingApp {
             s.poll();
         }
         self.buildings.poll();
-        self.study.base = self.bar.setup;
+        // The study starts from the Bar impact scene's settings; only the shown study can Run.
+        if self.scene == SceneKind::Study {
+            self.study.base = self.bar.setup;
+        }
         self.study.poll();
         if self.scene == SceneKind::Buildings {
             self.buildings.take_dropped(&ctx);

@@ -3,10 +3,9 @@
 
 use super::background::Background;
 use super::export::{Exporter, ShownPlot};
-use crate::export::plot::LinePlot;
+use super::plot_view;
 use crate::study::{self, Cancelled, Context, Progress, StudyOutput};
 use eframe::egui;
-use egui_plot::{Legend, Line, Plot};
 use std::time::Duration;
 
 struct Done {
@@ -180,7 +179,7 @@ impl PaperFigures {
         let h = ((ui.available_height() - 60.0 * n - 120.0) / n).clamp(200.0, 420.0);
         for (k, (fig, shown)) in d.output.figures.iter().zip(&mut d.shown).enumerate() {
             ui.strong(&fig.plot.title);
-            *shown = draw(ui, k, &fig.plot, h);
+            *shown = plot_view::draw(ui, ("paper-figure", k), &fig.plot, h, None);
             exporter.buttons(ui, shown, &fig.stem);
             ui.add_space(6.0);
         }
@@ -197,46 +196,5 @@ impl PaperFigures {
         })
         .header_response
         .on_hover_text("docs/paper-reproduction.md checks the paper's claims against these");
-    }
-}
-
-/// A study's plot in egui_plot; geometric axes are drawn against log10 with the values on the
-/// ticks. Returns what it shows, for export.
-fn draw(ui: &mut egui::Ui, id: usize, plot: &LinePlot, height: f32) -> ShownPlot {
-    let x = |v: f64| if plot.log_x { v.log10() } else { v };
-    let series: Vec<(String, Vec<[f64; 2]>)> = plot
-        .series
-        .iter()
-        .map(|s| {
-            let pts = s.points.iter().map(|(a, b)| [x(*a), *b]).collect();
-            (s.name.clone(), super::series::thin(pts))
-        })
-        .collect();
-    let mut p = Plot::new(("paper-figure", id))
-        .height(height)
-        .legend(Legend::default())
-        .y_axis_label(plot.y_label.clone());
-    p = if plot.log_x {
-        p.x_axis_label(format!("{} (log scale)", plot.x_label))
-            .x_axis_formatter(|mark, _| super::study_scene::tick(10f64.powf(mark.value)))
-    } else {
-        p.x_axis_label(plot.x_label.clone())
-    };
-    let response = p.show(ui, |p| {
-        for (name, pts) in &series {
-            p.line(Line::new(name.as_str(), pts.clone()).allow_band(false));
-        }
-    });
-    let b = response.transform.bounds();
-    ShownPlot {
-        title: plot.title.clone(),
-        x_label: if plot.log_x {
-            format!("log10 {}", plot.x_label)
-        } else {
-            plot.x_label.clone()
-        },
-        y_label: plot.y_label.clone(),
-        series,
-        bounds: Some((b.min(), b.max())),
     }
 }

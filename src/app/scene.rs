@@ -79,7 +79,7 @@ impl Scene for StudyScene {
         StudyScene::busy(self)
     }
     fn timings(&self) -> (Duration, Duration) {
-        (self.solve_time, self.latency)
+        (self.solve_time, self.solve_time)
     }
     fn view_rect(&self) -> Option<egui::Rect> {
         None

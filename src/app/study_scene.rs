@@ -6,13 +6,15 @@
 use super::background::Background;
 use super::export::{Exporter, ShownPlot};
 use super::paper_figures::PaperFigures;
+use super::params::format_value;
 use super::playback::Playback;
+use super::plot_view;
+use crate::export::plot::{LinePlot, Series};
 use crate::io::settings::ImpactSetup;
 use crate::model::impact::ModelKind;
 use crate::study::Cancelled;
 use crate::study::sweep::{self, Point};
 use eframe::egui;
-use egui_plot::{Legend, Line, Plot, Points};
 use std::time::Duration;
 
 /// A sensible range for a key when it is picked: (from, to, geometric).
@@ -41,6 +43,9 @@ fn default_range(key: &str) -> (f64, f64, bool) {
         _ => (0.5, 2.0, false),
     }
 }
+
+/// The sweep's plots by export name.
+const PLOT_NAMES: [&str; 3] = ["peak-force", "duration", "restitution"];
 
 /// Models offered, and the ones ticked at start.
 const MODELS: [ModelKind; 7] = ModelKind::ALL;
@@ -87,31 +92,10 @@ pub struct StudyScene {
     running: Option<Running>,
     finished: Option<Finished>,
     status: Option<(String, bool)>,
+    /// The last study's wall time: it is also the time from Run to its result.
     pub solve_time: Duration,
-    pub latency: Duration,
     shown: [ShownPlot; 3],
     ctx: egui::Context,
-}
-
-fn fmt(x: f64) -> String {
-    super::params::format_value(x)
-}
-
-/// A tick label: three significant digits.
-pub(super) fn tick(x: f64) -> String {
-    if x == 0.0 || !x.is_finite() {
-        return "0".into();
-    }
-    if !(1e-3..1e4).contains(&x.abs()) {
-        return format!("{x:.2e}");
-    }
-    let decimals = (2 - x.abs().log10().floor() as i32).max(0) as usize;
-    let text = format!("{x:.decimals$}");
-    if text.contains('.') {
-        text.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        text
-    }
 }
 
 impl StudyScene {
@@ -135,7 +119,6 @@ impl StudyScene {
             finished: None,
             status: None,
             solve_time: Duration::ZERO,
-            latency: Duration::ZERO,
             shown: Default::default(),
             ctx: ctx.clone(),
         };
@@ -283,7 +266,7 @@ impl StudyScene {
     /// Takes a finished sweep or paper figure, if one arrived.
     pub fn poll(&mut self) {
         if let Some(t) = self.paper.poll() {
-            (self.solve_time, self.latency) = (t, t);
+            self.solve_time = t;
         }
         let Some(r) = &self.running else { return };
         let Some((outcome, elapsed)) = r.job.try_take(&self.ctx) else {
@@ -312,7 +295,6 @@ impl StudyScene {
                     points,
                 });
                 self.solve_time = elapsed;
-                self.latency = elapsed;
             }
             Err(Cancelled) => {
                 let (done, total) = r.job.counts();
@@ -335,10 +317,7 @@ impl StudyScene {
         if self.finished.is_none() {
             return vec![];
         }
-        ["peak-force", "duration", "restitution"]
-            .into_iter()
-            .zip(&self.shown)
-            .collect()
+        PLOT_NAMES.into_iter().zip(&self.shown).collect()
     }
 
     pub fn params_ui(&mut self, ui: &mut egui::Ui) {
@@ -373,7 +352,7 @@ impl StudyScene {
             .labelled_by(label);
         if self.param != before {
             let (a, b, log) = default_range(&self.param);
-            (self.from, self.to, self.log) = (fmt(a), fmt(b), log);
+            (self.from, self.to, self.log) = (format_value(a), format_value(b), log);
         }
         for (name, text) in [("from", &mut self.from), ("to", &mut self.to)] {
             ui.horizontal(|ui| {
@@ -432,12 +411,6 @@ impl StudyScene {
             });
             return;
         };
-        let x_label = if f.log {
-            format!("log10 {}", f.param)
-        } else {
-            f.param.clone()
-        };
-        let x = |v: f64| if f.log { v.log10() } else { v };
         let quantities: [Quantity; 3] = [
             ("Peak contact force", "peak force [kN]", |p| {
                 p.peak_force_n.map(|f| f * 1e-3)
@@ -454,52 +427,31 @@ impl StudyScene {
             .filter(|m| f.points.iter().any(|p| p.model == *m))
             .collect();
         for (k, (title, y_label, get)) in quantities.iter().enumerate() {
-            let series: Vec<(String, Vec<[f64; 2]>)> = models
+            let series = models
                 .iter()
-                .map(|m| {
-                    let pts = f
+                .map(|m| Series {
+                    name: m.to_string(),
+                    points: f
                         .points
                         .iter()
                         .filter(|p| p.model == *m)
-                        .filter_map(|p| get(p).map(|y| [x(p.value), y]))
-                        .filter(|p| p[0].is_finite() && p[1].is_finite())
-                        .collect();
-                    (m.to_string(), pts)
+                        .filter_map(|p| get(p).map(|y| (p.value, y)))
+                        .collect(),
                 })
                 .collect();
-            let few = f.points.len() / models.len().max(1) <= 40;
-            let mut plot = Plot::new(("study", k)).height(h).legend(Legend::default());
-            // Geometric sweeps are drawn against log10 of the value; the ticks show the value.
-            plot = if f.log {
-                plot.x_axis_label(format!("{} (log scale)", f.param))
-                    .x_axis_formatter(|mark, _| tick(10f64.powf(mark.value)))
-            } else {
-                plot.x_axis_label(x_label.clone())
+            let plot = LinePlot {
+                log_x: f.log,
+                markers: f.points.len() / models.len().max(1) <= 40,
+                ..LinePlot::new(
+                    format!("{title} against {}", f.param),
+                    f.param.clone(),
+                    *y_label,
+                    series,
+                )
             };
-            let response = plot
-                .y_axis_label(*y_label)
-                .link_axis(egui::Id::unique("study-plots"), [true, false])
-                .show(ui, |p| {
-                    for (name, pts) in &series {
-                        p.line(Line::new(name.as_str(), pts.clone()));
-                        if few {
-                            p.points(Points::new(name.as_str(), pts.clone()).radius(2.5));
-                        }
-                    }
-                });
-            let b = response.transform.bounds();
-            self.shown[k] = ShownPlot {
-                title: format!("{title} against {}", f.param),
-                x_label: x_label.clone(),
-                y_label: y_label.to_string(),
-                series,
-                bounds: Some((b.min(), b.max())),
-            };
-            exporter.buttons(
-                ui,
-                &self.shown[k],
-                ["peak-force", "duration", "restitution"][k],
-            );
+            let link = Some(egui::Id::unique("study-plots"));
+            self.shown[k] = plot_view::draw(ui, ("study", k), &plot, h, link);
+            exporter.buttons(ui, &self.shown[k], PLOT_NAMES[k]);
         }
         let failed: Vec<&Point> = f.points.iter().filter(|p| p.error.is_some()).collect();
         if !failed.is_empty() {
@@ -508,7 +460,7 @@ impl StudyScene {
                     ui.label(format!(
                         "{} = {}: {}: {}",
                         f.param,
-                        fmt(p.value),
+                        format_value(p.value),
                         p.model,
                         p.error.as_deref().unwrap_or_default()
                     ));
@@ -584,14 +536,6 @@ mod tests {
         assert!(s.paper.status().is_some_and(|m| m.starts_with("9 solves")));
         let err = s.restore("paper=fig12-displacements").unwrap_err();
         assert!(err.contains("fig12-displacements"), "{err}");
-    }
-
-    #[test]
-    fn log_axis_ticks_read_as_three_significant_digits() {
-        let shown: Vec<String> = [0.501187, 1.0, 1.258925, 7.943282, 12345.0, 0.0001]
-            .map(tick)
-            .into();
-        assert_eq!(shown, ["0.501", "1", "1.26", "7.94", "1.23e4", "1.00e-4"]);
     }
 
     #[test]

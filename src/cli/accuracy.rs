@@ -331,7 +331,7 @@ pub fn run(args: &AccuracyArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 &serde_json::json!({ "scene": args.scene, "rungs": rows })
             )?
         )?;
-    } else if args.csv.as_ref().is_none_or(|p| p.as_os_str() != "-") {
+    } else if !super::csv_to_stdout(args.csv.as_deref()) {
         let res = if buildings {
             "steps/scale"
         } else {

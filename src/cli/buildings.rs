@@ -133,12 +133,7 @@ pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             estimate.as_ref(),
         );
         writeln!(out, "{}", serde_json::to_string_pretty(&report)?)?;
-    } else if args
-        .common
-        .csv
-        .as_ref()
-        .is_none_or(|p| p.as_os_str() != "-")
-    {
+    } else if !super::csv_to_stdout(args.common.csv.as_deref()) {
         write!(
             out,
             "{}",

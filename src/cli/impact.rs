@@ -91,12 +91,7 @@ pub fn run(args: &ImpactArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     if args.common.json {
         let report = ImpactReport::new(&setup, preset_name, &result, estimate.as_ref());
         writeln!(out, "{}", serde_json::to_string_pretty(&report)?)?;
-    } else if args
-        .common
-        .csv
-        .as_ref()
-        .is_none_or(|p| p.as_os_str() != "-")
-    {
+    } else if !super::csv_to_stdout(args.common.csv.as_deref()) {
         write!(
             out,
             "{}",

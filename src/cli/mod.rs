@@ -201,6 +201,11 @@ pub(crate) fn list_presets(out: &mut dyn std::io::Write, scene: &str) -> anyhow:
     )
 }
 
+/// Whether --csv is `-`: the CSV goes to standard output, so the summary must not.
+pub(crate) fn csv_to_stdout(csv: Option<&std::path::Path>) -> bool {
+    csv.is_some_and(|p| p.as_os_str() == "-")
+}
+
 /// Writes CSV to a file, or to `out` for `-`, saying which path failed and why.
 pub(crate) fn write_csv(
     out: &mut dyn std::io::Write,
@@ -208,7 +213,7 @@ pub(crate) fn write_csv(
     write: impl Fn(&mut dyn std::io::Write) -> std::io::Result<()>,
 ) -> anyhow::Result<()> {
     use anyhow::Context;
-    if path.as_os_str() == "-" {
+    if csv_to_stdout(Some(path)) {
         return Ok(write(out)?);
     }
     let file = std::fs::File::create(path)

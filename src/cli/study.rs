@@ -139,18 +139,18 @@ pub fn run(args: &StudyArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             ((s.run)(&ctx), t.elapsed().as_secs_f64())
         });
         let output = output.with_context(|| format!("study {}", s.name))?;
-        let mut notes = output.notes;
+        let mut notes = vec![];
         if s.buildings {
-            if let Some(m) = &motion {
-                notes.insert(0, format!("ground motion: {}", m.name));
-            }
+            notes.extend(
+                motion
+                    .as_ref()
+                    .map(|m| format!("ground motion: {}", m.name)),
+            );
             if args.motion.is_none() {
-                notes.insert(
-                    1,
-                    "the paper used 8 s of El Centro 1940: give it with --motion".into(),
-                );
+                notes.push("the paper used 8 s of El Centro 1940: give it with --motion".into());
             }
         }
+        notes.extend(output.notes);
         let mut files = Vec::new();
         for fig in &output.figures {
             for f in &formats {

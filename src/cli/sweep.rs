@@ -89,7 +89,7 @@ pub fn run(args: &SweepArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     if args.common.json {
         serde_json::to_writer_pretty(&mut *out, &report)?;
         writeln!(out)?;
-    } else if args.common.csv.as_deref() != Some(std::path::Path::new("-")) {
+    } else if !super::csv_to_stdout(args.common.csv.as_deref()) {
         table(&report, out)?;
     }
     Ok(())
@@ -146,12 +146,7 @@ fn write_csv(r: &SweepReport, path: &std::path::Path, out: &mut dyn Write) -> an
             p.error.as_deref().unwrap_or("").replace(',', ";")
         );
     }
-    if path == std::path::Path::new("-") {
-        out.write_all(text.as_bytes())?;
-    } else {
-        std::fs::write(path, text).map_err(|e| anyhow!("--csv: {}: {e}", path.display()))?;
-    }
-    Ok(())
+    super::write_csv(out, path, |w| w.write_all(text.as_bytes()))
 }
 
 fn plot(r: &SweepReport, log: bool) -> LinePlot {

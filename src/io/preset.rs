@@ -282,6 +282,11 @@ pub fn load_for<S: Configurable + Default>(
     Ok(setup)
 }
 
+/// A value the program may choose, as TOML: the number as written, or "auto".
+fn or_auto(value: Option<String>) -> String {
+    value.unwrap_or_else(|| "\"auto\"".into())
+}
+
 /// A setup written back as a preset (the inverse of [`apply_text`]): what "save scene" writes
 /// and what the window keeps between sessions.
 pub fn impact_to_toml(setup: &ImpactSetup) -> String {
@@ -315,17 +320,17 @@ pub fn impact_to_toml(setup: &ImpactSetup) -> String {
     }
     let c = &sc.contact;
     let _ = writeln!(s, "[contact]\nlaw = \"{}\"", c.law.name());
-    match c.stiffness {
-        Some(k) => writeln!(s, "stiffness = {k:e}"),
-        None => writeln!(s, "stiffness = \"auto\""),
-    }
-    .ok();
+    let _ = writeln!(
+        s,
+        "stiffness = {}",
+        or_auto(c.stiffness.map(|k| format!("{k:e}")))
+    );
     let _ = writeln!(s, "zone_scale = {:?}", c.zone_scale);
-    match c.zone_length_m {
-        Some(d) => writeln!(s, "zone_length = {d:?}"),
-        None => writeln!(s, "zone_length = \"auto\""),
-    }
-    .ok();
+    let _ = writeln!(
+        s,
+        "zone_length = {}",
+        or_auto(c.zone_length_m.map(|d| format!("{d:?}")))
+    );
     let _ = writeln!(
         s,
         "divisions = {:?}\nrestitution = {:?}\n",
@@ -374,11 +379,11 @@ pub fn buildings_to_toml(setup: &super::building_settings::BuildingSetup) -> Str
         );
     }
     let _ = writeln!(s, "[contact]\nmodel = \"{}\"", sc.contact.name());
-    match sc.stiffness {
-        Some(k) => writeln!(s, "stiffness = {k:e}"),
-        None => writeln!(s, "stiffness = \"auto\""),
-    }
-    .ok();
+    let _ = writeln!(
+        s,
+        "stiffness = {}",
+        or_auto(sc.stiffness.map(|k| format!("{k:e}")))
+    );
     let _ = writeln!(
         s,
         "restitution = {:?}\nreading = \"{}\"",
@@ -389,11 +394,11 @@ pub fn buildings_to_toml(setup: &super::building_settings::BuildingSetup) -> Str
             "end"
         }
     );
-    match sc.zone_length_m {
-        Some(d) => writeln!(s, "zone_length = {d:?}\n"),
-        None => writeln!(s, "zone_length = \"auto\"\n"),
-    }
-    .ok();
+    let _ = writeln!(
+        s,
+        "zone_length = {}\n",
+        or_auto(sc.zone_length_m.map(|d| format!("{d:?}")))
+    );
     let _ = writeln!(
         s,
         "[slab]\ndamping = {:?}\n\n[impact]\nmerge_gap_s = {:?}\n",

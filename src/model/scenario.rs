@@ -288,6 +288,18 @@ impl ImpactScenario {
         self.bar1.velocity_m_s - self.bar2.velocity_m_s
     }
 
+    /// The two bars' impedances in series, Z1 Z2 / (Z1 + Z2) [N s/m].
+    pub fn series_impedance_n_s_m(&self) -> f64 {
+        let (z1, z2) = (self.bar1.impedance_n_s_m(), self.bar2.impedance_n_s_m());
+        z1 * z2 / (z1 + z2)
+    }
+
+    /// Wave theory's contact force Z1 Z2 / (Z1 + Z2) (v1 - v2) [N]: the most elastic bars can
+    /// carry.
+    pub fn wave_force_n(&self) -> f64 {
+        self.series_impedance_n_s_m() * self.approach_velocity_m_s()
+    }
+
     /// The contact law chosen by `contact.law`.
     pub fn contact_law(&self) -> Result<ContactLaw, InputError> {
         match self.contact.law {

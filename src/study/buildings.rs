@@ -141,11 +141,7 @@ fn forces(ctx: &Context) -> anyhow::Result<StudyOutput> {
         .max_by(|a, b| a.1.peak_force_n.total_cmp(&b.1.peak_force_n))
     {
         let sc = &ctx.buildings;
-        let (z1, z2) = (
-            sc.left.slab_impedance_n_s_m(),
-            sc.right.slab_impedance_n_s_m(),
-        );
-        let wave = z1 * z2 / (z1 + z2) * strongest.approach_velocity_m_s;
+        let wave = sc.slab_series_impedance_n_s_m() * strongest.approach_velocity_m_s;
         let pad = 0.25 * strongest.duration_s().max(1e-3);
         let (t0, t1) = (strongest.start_s - pad, strongest.end_s + pad);
         let window = |r: &BuildingResult| -> Vec<(f64, f64)> {

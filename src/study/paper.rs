@@ -158,15 +158,6 @@ fn force_series(name: impl Into<String>, r: &ImpactResult) -> Series {
     }
 }
 
-/// Wave theory's contact force Z1 Z2 / (Z1 + Z2) (v1 - v2) [N].
-fn wave_force(s: &ImpactSetup) -> f64 {
-    let (z1, z2) = (
-        s.scenario.bar1.impedance_n_s_m(),
-        s.scenario.bar2.impedance_n_s_m(),
-    );
-    z1 * z2 / (z1 + z2) * s.scenario.approach_velocity_m_s()
-}
-
 fn level(name: &str, y: f64, t_end_ms: f64) -> Series {
     Series {
         name: name.into(),
@@ -254,7 +245,7 @@ fn lengths(ctx: &Context) -> anyhow::Result<StudyOutput> {
         .map(|&l| Ok((ModelKind::Sears, lengths_of(&base, l, 2.0 * l)?)))
         .collect::<anyhow::Result<_>>()?;
     let results = histories(ctx, &jobs)?;
-    let limit = wave_force(&base);
+    let limit = base.scenario.wave_force_n();
     let mut series: Vec<Series> = l1s
         .iter()
         .zip(&results)
@@ -589,7 +580,7 @@ fn stiffness(ctx: &Context) -> anyhow::Result<StudyOutput> {
         .map(|&dome| Ok((ModelKind::Sears, with(&base, &sets(dome))?)))
         .collect::<anyhow::Result<_>>()?;
     let results = histories(ctx, &jobs)?;
-    let limit = wave_force(&base);
+    let limit = base.scenario.wave_force_n();
     let mut series: Vec<Series> = domes
         .iter()
         .zip(&results)
@@ -632,20 +623,15 @@ fn zone(ctx: &Context) -> anyhow::Result<StudyOutput> {
     for reading in readings {
         let s = with(&base, &[format!("sears.reading={reading}")])?;
         for &x in &xs {
-            // A zone longer than a reading allows is that point's error, not the study's.
+            // A zone longer than a reading allows is that point's error (solve validates), not
+            // the study's.
             let mut p = s;
             p.scenario.contact.zone_scale = x;
             jobs.push((ModelKind::Sears, p));
         }
         jobs.push((ModelKind::Sears, s));
     }
-    let points = par_map(ctx.progress, &jobs, |(m, s)| {
-        s.scenario
-            .validate()
-            .map_err(|e| e.to_string())
-            .and_then(|()| solve(*m, &s.scenario).map_err(|e| e.to_string()))
-            .map(|r| summarise(&r))
-    })?;
+    let points = summaries(ctx, &jobs)?;
     let n = xs.len();
     let mut series = Vec::new();
     let mut findings = Vec::new();
@@ -762,7 +748,7 @@ fn material(ctx: &Context) -> anyhow::Result<StudyOutput> {
         ));
         findings.push(finding(
             format!("{name}: peak / wave force"),
-            r.peak_force_n.unwrap_or(0.0) / wave_force(s),
+            r.peak_force_n.unwrap_or(0.0) / s.scenario.wave_force_n(),
             "",
         ));
         findings.push(finding(
@@ -815,7 +801,7 @@ fn slab_n(ctx: &Context) -> anyhow::Result<StudyOutput> {
     jobs.push((ModelKind::Sears, end));
     let mut results = histories(ctx, &jobs)?;
     let end = results.pop().expect("the end-reading run");
-    let limit = wave_force(&base);
+    let limit = base.scenario.wave_force_n();
     let mut series: Vec<Series> = ns
         .iter()
         .zip(&results)

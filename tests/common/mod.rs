@@ -5,6 +5,22 @@ use pounding::model::field::BarWaves;
 use pounding::model::impact::{ImpactResult, ModelKind, solve};
 use pounding::model::scenario::ImpactScenario;
 
+/// The `pounding` binary run with `args`.
+pub fn pounding(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_pounding"))
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+pub fn stdout(o: &std::process::Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+pub fn stderr(o: &std::process::Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
 pub fn run(model: ModelKind, sc: &ImpactScenario) -> ImpactResult {
     solve(model, sc).unwrap_or_else(|e| panic!("{} should solve: {e}", model.name()))
 }

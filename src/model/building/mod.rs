@@ -219,6 +219,16 @@ impl BuildingScenario {
         })
     }
 
+    /// The two slabs' impedances in series, Z1 Z2 / (Z1 + Z2) [N s/m]: times an approach velocity,
+    /// the wave-theory pounding force.
+    pub fn slab_series_impedance_n_s_m(&self) -> f64 {
+        let (z1, z2) = (
+            self.left.slab_impedance_n_s_m(),
+            self.right.slab_impedance_n_s_m(),
+        );
+        z1 * z2 / (z1 + z2)
+    }
+
     pub fn effective_mass_kg(&self) -> f64 {
         self.left.mass_kg * self.right.mass_kg / (self.left.mass_kg + self.right.mass_kg)
     }

@@ -175,11 +175,7 @@ fn steps(
         ContactLaw::linear(element.stiffness)
     };
     let z_eff = if sc.contact == ContactModel::Sears {
-        let (z1, z2) = (
-            sc.left.slab_impedance_n_s_m(),
-            sc.right.slab_impedance_n_s_m(),
-        );
-        z1 * z2 / (z1 + z2)
+        sc.slab_series_impedance_n_s_m()
     } else {
         f64::INFINITY
     };

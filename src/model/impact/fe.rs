@@ -94,11 +94,10 @@ pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
     let mut warnings = vec![];
     // The link and the two end nodes oscillate at sqrt(k_t / m_ends): the link is stable at any
     // step, but accurate only where the step resolves that oscillation.
-    let (z1, z2) = (sc.bar1.impedance_n_s_m(), sc.bar2.impedance_n_s_m());
-    let scale = contact_time_scale(&law, w, m_eff, z1 * z2 / (z1 + z2));
+    let scale = contact_time_scale(&law, w, m_eff, sc.series_impedance_n_s_m());
     // The wave-theory force bounds the force between elastic bars, so its tangent is the stiffest
     // the link gets.
-    let f_est = z1 * z2 / (z1 + z2) * w;
+    let f_est = sc.wave_force_n();
     let m_ends = 1.0 / (left.inv_m[n] + right.inv_m[0]);
     let link_step = 0.5 * (m_ends / law.tangent_at_force(f_est)).sqrt();
     if h > link_step {
