@@ -1,24 +1,15 @@
-//! Criterion benchmarks of the building pounding run: 8 s of El Centro (from ../shared/data when
-//! present, else the synthetic record) with the Sears contact and with a linear spring.
+//! Criterion benchmarks of the building pounding run: 8 s of the shipped El Centro 1940 record
+//! with each contact element.
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use pounding::io::motion::{Units, parse};
 use pounding::model::building::{BuildingScenario, ContactModel, solve};
 use pounding::model::motion::GroundMotion;
 use std::hint::black_box;
 
 fn record() -> GroundMotion {
-    match std::fs::read_to_string("../shared/data/elcentro_1940_ns.txt") {
-        Ok(text) => parse(&text, "elcentro", Units::G, None)
-            .expect("the shared record parses")
-            .truncated(8.0),
-        Err(_) => {
-            eprintln!("../shared/data is absent: benchmarking on the synthetic record");
-            pounding::model::motion::synthetic::SyntheticSpec::default()
-                .generate()
-                .truncated(8.0)
-        }
-    }
+    pounding::io::motion::built_in("elcentro-1940")
+        .expect("built in")
+        .truncated(8.0)
 }
 
 fn el_centro_8s(c: &mut Criterion) {

@@ -1,26 +1,13 @@
 //! Two buildings pounding: closed forms, balances, convergence, and the paper's case.
 
-use pounding::io::motion::{Units, parse};
 use pounding::model::building::{BuildingResult, BuildingScenario, ContactModel, solve};
 use pounding::model::motion::GroundMotion;
 
-fn el_centro_8s() -> Option<GroundMotion> {
-    let text = std::fs::read_to_string("../shared/data/elcentro_1940_ns.txt").ok()?;
-    Some(
-        parse(&text, "elcentro_1940_ns.txt", Units::G, None)
-            .unwrap()
-            .truncated(8.0),
-    )
-}
-
-/// A record to shake the buildings with: El Centro where the shared data is present, else the
-/// built-in synthetic record (so these tests never depend on files outside the repository).
+/// The paper's record: the first 8 s of the shipped El Centro 1940 N-S.
 fn record() -> GroundMotion {
-    el_centro_8s().unwrap_or_else(|| {
-        pounding::model::motion::synthetic::SyntheticSpec::default()
-            .generate()
-            .truncated(8.0)
-    })
+    pounding::io::motion::built_in("elcentro-1940")
+        .expect("El Centro is built in")
+        .truncated(8.0)
 }
 
 fn run(sc: &BuildingScenario, m: &GroundMotion) -> BuildingResult {

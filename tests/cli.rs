@@ -268,7 +268,7 @@ fn a_closed_output_pipe_ends_quietly() {
 }
 
 #[test]
-fn buildings_runs_the_papers_case_on_the_synthetic_record_by_default() {
+fn buildings_runs_the_papers_case_on_el_centro_by_default() {
     let v = json(&["buildings"]);
     for key in [
         "impacts",
@@ -282,32 +282,42 @@ fn buildings_runs_the_papers_case_on_the_synthetic_record_by_default() {
         assert!(v.get(key).is_some(), "missing {key}");
     }
     assert!(v["impacts"].as_array().unwrap().len() as u64 == v["impact_count"].as_u64().unwrap());
-    assert!(v["motion"]["name"].as_str().unwrap().contains("synthetic"));
+    assert!(
+        v["motion"]["name"]
+            .as_str()
+            .unwrap()
+            .contains("El Centro 1940")
+    );
+    assert_eq!(v["motion"]["points"], 401);
     assert_eq!(v["contact_model"], "sears");
+    let synthetic = json(&["buildings", "--set", "motion.file=synthetic"]);
+    assert!(
+        synthetic["motion"]["name"]
+            .as_str()
+            .unwrap()
+            .contains("synthetic")
+    );
 }
 
 #[test]
-fn buildings_takes_every_contact_model_and_the_shared_record() {
-    let motion = "../shared/data/elcentro_1940_ns.txt";
-    let have = std::path::Path::new(motion).is_file();
-    for model in [
-        "sears",
-        "linear",
-        "kelvin",
-        "hertz",
-        "hertzdamp",
-        "jankowski",
-        "stereo",
-        "none",
-    ] {
-        let mut args = vec!["buildings", "--contact", model];
-        if have {
-            args.extend(["--motion", motion]);
+fn buildings_takes_every_contact_model_and_the_shipped_record_by_name_or_path() {
+    for motion in ["elcentro-1940", "assets/motions/elcentro-1940-ns.txt"] {
+        for model in [
+            "sears",
+            "linear",
+            "kelvin",
+            "hertz",
+            "hertzdamp",
+            "jankowski",
+            "stereo",
+            "none",
+        ] {
+            let v = json(&["buildings", "--contact", model, "--motion", motion]);
+            assert_eq!(v["contact_model"], model);
+            assert_eq!(v["motion"]["points"], 401, "{motion}: the preset's 8 s");
+            let pounds = v["impact_count"].as_u64().unwrap() > 0;
+            assert_eq!(pounds, model != "none", "{model}");
         }
-        let v = json(&args);
-        assert_eq!(v["contact_model"], model);
-        let pounds = v["impact_count"].as_u64().unwrap() > 0;
-        assert_eq!(pounds, model != "none", "{model}");
     }
 }
 

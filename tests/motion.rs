@@ -1,21 +1,17 @@
 //! Ground motion: the readers, units, and the synthetic record.
 
-use pounding::io::motion::{Units, parse};
+use pounding::io::motion::{MotionSpec, Units, built_in, load, parse};
 use pounding::model::motion::G;
 use pounding::model::motion::synthetic::SyntheticSpec;
 
-const SHARED: &str = "../shared/data";
-
 #[test]
 fn el_centro_text_record_has_the_documented_peak_and_length() {
-    let Ok(text) = std::fs::read_to_string(format!("{SHARED}/elcentro_1940_ns.txt")) else {
-        eprintln!("skipped: {SHARED}/elcentro_1940_ns.txt is not here");
-        return;
-    };
-    let m = parse(&text, "elcentro_1940_ns.txt", Units::G, None).unwrap();
+    let text = std::fs::read_to_string("assets/motions/elcentro-1940-ns.txt").unwrap();
+    let m = parse(&text, "elcentro-1940-ns.txt", Units::G, None).unwrap();
+    assert_eq!(built_in("elcentro-1940").unwrap().accel_m_s2, m.accel_m_s2);
     let s = m.stats();
-    // shared/data/README.md: 1559 points at 0.02 s, PGA 0.31882 g at 2.02 s, PGV 0.361 m/s,
-    // Arias 1.80 m/s.
+    // The record's header: 1559 points at 0.02 s, PGA 0.31882 g at 2.02 s; its PGV (0.361 m/s)
+    // and Arias intensity (1.80 m/s) as computed independently when it was shipped.
     assert_eq!(s.points, 1559);
     assert!((m.dt_s - 0.02).abs() < 1e-12);
     assert!((s.pga_m_s2 / G - 0.31882).abs() < 1e-9 && (s.pga_time_s - 2.02).abs() < 1e-9);
@@ -42,23 +38,66 @@ fn response_spectrum_of_a_sine_peaks_at_resonance_with_the_closed_form_value() {
     assert!(m.spectral_accel(0.25, 0.05) < 0.5 * sa && m.spectral_accel(1.0, 0.05) < 0.5 * sa);
 }
 
+/// A value as PEER writes it: mantissa in [0.1, 1) without the leading zero, `-.9984852E-03`.
+fn peer_number(v: f64) -> String {
+    if v == 0.0 {
+        return ".0000000E+00".into();
+    }
+    let mut exp = v.abs().log10().floor() as i32 + 1;
+    let mut digits = (v.abs() / 10f64.powi(exp) * 1e7).round() as u64;
+    if digits >= 10_000_000 {
+        digits /= 10;
+        exp += 1;
+    }
+    let sign = if v < 0.0 { "-" } else { "" };
+    format!("{sign}.{digits:07}E{exp:+03}")
+}
+
+/// A PEER-style AT2 file of `values` (in g) at `dt`: five values a row, the last row short.
+fn at2_text(values: &[f64], dt: f64) -> String {
+    let mut text = format!(
+        "PEER NGA STRONG MOTION DATABASE RECORD\nTest event, 1/1/2000, Test station, 000\nACCELERATION TIME SERIES IN UNITS OF G\nNPTS=  {:5}, DT=   {} SEC,\n",
+        values.len(),
+        format!("{dt:.4}").trim_start_matches('0')
+    );
+    for row in values.chunks(5) {
+        for v in row {
+            text += &format!("  {:>13}", peer_number(*v));
+        }
+        text += "\n";
+    }
+    text
+}
+
 #[test]
 fn peer_at2_record_reads_with_its_own_step() {
-    let Ok(text) = std::fs::read_to_string(format!("{SHARED}/RSN6_IMPVALL.I_I-ELC180-hor1.AT2"))
-    else {
-        eprintln!("skipped: the AT2 record is not here");
-        return;
+    // A record written here in PEER's layout (the NGA files are not ours to ship), read from a
+    // file by extension, in g whatever the units asked for text.
+    let values: Vec<f64> = (0..23)
+        .map(|i| 0.25 * (0.7 * i as f64).sin() * if i == 17 { 1.2 } else { 1.0 })
+        .collect();
+    let path = std::env::temp_dir().join(format!("pounding-{}-test.AT2", std::process::id()));
+    std::fs::write(&path, at2_text(&values, 0.005)).unwrap();
+    let spec = MotionSpec {
+        file: Some(path.display().to_string()),
+        units: Units::MetresPerSecond2,
+        ..MotionSpec::default()
     };
-    let m = parse(&text, "RSN6.AT2", Units::MetresPerSecond2, None).unwrap();
+    let m = load(&spec).unwrap();
+    std::fs::remove_file(&path).ok();
+    assert_eq!(m.accel_m_s2.len(), 23);
+    assert!((m.dt_s - 0.005).abs() < 1e-15);
+    for (got, want) in m.accel_m_s2.iter().zip(&values) {
+        assert!((got / G - want).abs() < 1e-7, "{got} against {want} g");
+    }
     let s = m.stats();
-    // README: NPTS = 5372, DT = 0.01 s, PGA 0.2808 g at 2.18 s (AT2 files are in g whatever the
-    // units asked for text).
-    assert_eq!(s.points, 5372);
-    assert!((m.dt_s - 0.01).abs() < 1e-12);
-    assert!(
-        (s.pga_m_s2 / G - 0.2808).abs() < 1e-4 && (s.pga_time_s - 2.18).abs() < 1e-9,
-        "{s:?}"
-    );
+    let (i, peak) = values
+        .iter()
+        .enumerate()
+        .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
+        .unwrap();
+    assert!((s.pga_m_s2 / G - peak.abs()).abs() < 1e-7);
+    assert!((s.pga_time_s - 0.005 * i as f64).abs() < 1e-12);
 }
 
 #[test]

@@ -13,7 +13,7 @@ fn run(name: &str) -> StudyOutput {
     let progress = Progress::new();
     let s = study::find(name).unwrap_or_else(|| panic!("study {name} exists"));
     let setup: BuildingSetup = preset::load_for("paper-buildings", "buildings").unwrap();
-    let motion = setup.motion.synthetic.generate().truncated(8.0);
+    let motion = pounding::io::motion::load(&setup.motion).unwrap();
     let ctx = Context {
         progress: &progress,
         motion: Some(&motion),

@@ -7,7 +7,6 @@ use super::params::{Fields, Spec};
 use super::playback::Playback;
 use super::series::decimate;
 use super::worker::Worker;
-use crate::cli::buildings::load_motion;
 use crate::io::building_settings::BuildingSetup;
 use crate::model::building::{
     BuildingErrorEstimate, BuildingResult, BuildingScenario, ContactModel, SlabReading,
@@ -61,7 +60,8 @@ pub struct BuildingScene {
 }
 
 fn run_job(setup: BuildingSetup) -> Output {
-    let motion = load_motion(&setup).map_err(|e| format!("{e:#}"))?;
+    let motion =
+        crate::io::motion::load(&setup.motion).map_err(|e| format!("ground motion: {e}"))?;
     let result = solve(&setup.scenario, &motion).map_err(|e| e.to_string())?;
     let baseline = solve(
         &BuildingScenario {
@@ -252,6 +252,39 @@ impl BuildingScene {
             .default_open(true)
             .show(ui, |ui| {
                 let m = &mut self.setup.motion;
+                let built_in = crate::io::motion::BUILT_IN;
+                let shown = match &m.file {
+                    None => "synthetic (Kanai-Tajimi)".to_string(),
+                    Some(f) => built_in
+                        .iter()
+                        .find(|b| b.name == f)
+                        .map_or_else(|| "file".to_string(), |b| b.title.to_string()),
+                };
+                ui.horizontal(|ui| {
+                    let label = ui.label("record").id;
+                    egui::ComboBox::from_id_salt("motion-record")
+                        .selected_text(shown)
+                        .show_ui(ui, |ui| {
+                            for b in built_in {
+                                if ui
+                                    .selectable_label(m.file.as_deref() == Some(b.name), b.title)
+                                    .on_hover_text(b.about)
+                                    .clicked()
+                                {
+                                    m.file = Some(b.name.to_string());
+                                }
+                            }
+                            if ui
+                                .selectable_label(m.file.is_none(), "synthetic (Kanai-Tajimi)")
+                                .on_hover_text("A seeded synthetic record: PGA and seed below")
+                                .clicked()
+                            {
+                                m.file = None;
+                            }
+                        })
+                        .response
+                        .labelled_by(label);
+                });
                 ui.horizontal(|ui| {
                     let label = ui.label("file").id;
                     ui.add(
@@ -260,16 +293,8 @@ impl BuildingScene {
                             .desired_width(170.0),
                     )
                     .labelled_by(label);
-                    if ui.button("Load").clicked() {
-                        m.file = (!self.motion_path.trim().is_empty())
-                            .then(|| self.motion_path.trim().to_string());
-                    }
-                    if ui
-                        .button("Synthetic")
-                        .on_hover_text("The built-in Kanai-Tajimi record")
-                        .clicked()
-                    {
-                        m.file = None;
+                    if ui.button("Load").clicked() && !self.motion_path.trim().is_empty() {
+                        m.file = Some(self.motion_path.trim().to_string());
                     }
                 });
                 let mut scale = m.scale;

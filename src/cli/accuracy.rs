@@ -28,7 +28,7 @@ pub struct AccuracyArgs {
     /// Override a setting (see `pounding impact --list-keys` or `pounding buildings --list-keys`)
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub set: Vec<String>,
-    /// Ground motion file for the buildings [default: the synthetic record]
+    /// Ground motion for the buildings: a built-in record or a file [default: the preset's]
     #[arg(long, value_name = "FILE")]
     pub motion: Option<PathBuf>,
     /// Write the table as CSV

@@ -5,7 +5,6 @@ use crate::io::building_settings::{BUILDING_KEYS, BuildingSetup};
 use crate::io::preset;
 use crate::model::building::{BuildingScenario, ContactModel, solve};
 use crate::model::motion::GroundMotion;
-use anyhow::{Context, bail};
 use clap::Args;
 use std::io::Write;
 use std::path::PathBuf;
@@ -14,7 +13,8 @@ use std::path::PathBuf;
 pub struct BuildingArgs {
     #[command(flatten)]
     pub common: super::SceneArgs,
-    /// Ground motion file: PEER .AT2 or text [default: a seeded synthetic record]
+    /// Ground motion: a built-in record (elcentro-1940) or a file, PEER .AT2 or text [default:
+    /// the preset's]
     #[arg(long, value_name = "FILE")]
     pub motion: Option<PathBuf>,
     /// Contact model: sears|linear|kelvin|hertz|hertzdamp|jankowski|stereo|none [default: the preset's]
@@ -22,28 +22,9 @@ pub struct BuildingArgs {
     pub contact: Option<String>,
 }
 
-/// Reads or generates the ground motion a setup asks for.
+/// Reads or generates the ground motion a setup asks for; errors phrased for the command line.
 pub fn load_motion(setup: &BuildingSetup) -> anyhow::Result<GroundMotion> {
-    let m = &setup.motion;
-    let mut motion = match &m.file {
-        Some(path) => {
-            let text = std::fs::read_to_string(path)
-                .with_context(|| format!("--motion: cannot read {path}"))?;
-            crate::io::motion::parse(&text, path, m.units, m.dt_s)
-                .map_err(|e| anyhow::anyhow!("--motion {e}"))?
-        }
-        None => m.synthetic.generate(),
-    };
-    if let Some(d) = m.duration_s {
-        motion = motion.truncated(d);
-    }
-    if m.scale != 1.0 {
-        motion = motion.scaled(m.scale);
-    }
-    if motion.accel_m_s2.len() < 2 {
-        bail!("the ground motion has fewer than two samples");
-    }
-    Ok(motion)
+    crate::io::motion::load(&setup.motion).map_err(|e| anyhow::anyhow!("--motion {e}"))
 }
 
 /// The preset (or `paper-buildings`) with the --set overrides and --motion applied, and the

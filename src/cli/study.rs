@@ -25,8 +25,8 @@ pub struct StudyArgs {
     /// What to write per figure: png|svg|csv (repeatable) [default: all three]
     #[arg(long = "format", value_name = "FMT")]
     pub formats: Vec<String>,
-    /// Ground motion for the building studies: PEER .AT2 or text [default: the preset's seeded
-    /// synthetic record; the paper used El Centro]
+    /// Ground motion for the building studies: a built-in record (elcentro-1940), a PEER .AT2 or
+    /// text file, or synthetic [default: the preset's, 8 s of El Centro 1940 as in the paper]
     #[arg(long, value_name = "FILE")]
     pub motion: Option<PathBuf>,
     /// Override a building setting for the building studies (see `pounding buildings --list-keys`)
@@ -146,8 +146,10 @@ pub fn run(args: &StudyArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                     .as_ref()
                     .map(|m| format!("ground motion: {}", m.name)),
             );
-            if args.motion.is_none() {
-                notes.push("the paper used 8 s of El Centro 1940: give it with --motion".into());
+            if motion.as_ref().is_some_and(|m| !m.name.contains("El Centro 1940")) {
+                notes.push(
+                    "the paper used 8 s of El Centro 1940: --motion elcentro-1940 gives it".into(),
+                );
             }
         }
         notes.extend(output.notes);

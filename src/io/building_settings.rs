@@ -1,35 +1,13 @@
 //! `KEY = VALUE` settings of the building scene: presets and `--set` share them, as for impacts.
 
+pub use super::motion::MotionSpec;
+
+/// The `motion.file` value that asks for the seeded synthetic record.
+pub const SYNTHETIC: &str = "synthetic";
 use super::motion::Units;
 use super::settings::{SettingValue, choice, count, number, text};
 use crate::model::building::{BuildingScenario, ContactModel, SlabReading};
-use crate::model::motion::synthetic::SyntheticSpec;
 use crate::model::scenario::InputError;
-
-/// Where the ground motion comes from and how it is read.
-#[derive(Debug, Clone, PartialEq)]
-pub struct MotionSpec {
-    /// A record file; `None` uses the synthetic record.
-    pub file: Option<String>,
-    pub units: Units,
-    pub scale: f64,
-    pub duration_s: Option<f64>,
-    pub dt_s: Option<f64>,
-    pub synthetic: SyntheticSpec,
-}
-
-impl Default for MotionSpec {
-    fn default() -> Self {
-        MotionSpec {
-            file: None,
-            units: Units::G,
-            scale: 1.0,
-            duration_s: None,
-            dt_s: None,
-            synthetic: SyntheticSpec::default(),
-        }
-    }
-}
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct BuildingSetup {
@@ -100,7 +78,7 @@ pub const BUILDING_KEYS: &[(&str, &str)] = &[
     ),
     (
         "motion.file",
-        "a ground motion file (.AT2 or text); the --motion flag",
+        "the ground motion: a built-in record (elcentro-1940), a file (.AT2 or text), or synthetic; the --motion flag",
     ),
     (
         "motion.units",
@@ -208,7 +186,10 @@ impl BuildingSetup {
             }
             "slab.damping" => sc.slab_damping = number(key, value)?,
             "impact.merge_gap_s" => sc.merge_gap_s = number(key, value)?,
-            "motion.file" => m.file = Some(text(key, value)?.to_string()),
+            "motion.file" => {
+                let name = text(key, value)?;
+                m.file = (name != SYNTHETIC).then(|| name.to_string());
+            }
             "motion.units" => m.units = choice(key, value, Units::from_name, "g|m/s2|cm/s2")?,
             "motion.scale" => {
                 let x = number(key, value)?;

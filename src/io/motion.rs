@@ -1,8 +1,98 @@
 //! Ground motion files: PEER NGA `.AT2` and plain text (time and acceleration columns, or values
-//! only with a given step). A malformed file gives an error naming its line.
+//! only with a given step), the records built into the program, and the synthetic record. A
+//! malformed file gives an error naming its line.
 
+use crate::model::motion::synthetic::SyntheticSpec;
 use crate::model::motion::{G, GroundMotion};
 use std::fmt;
+
+/// A record shipped with the program: its name, what it is, and its text (our header, then
+/// time and acceleration in g).
+pub struct BuiltIn {
+    pub name: &'static str,
+    /// How a record is named in reports.
+    pub title: &'static str,
+    pub about: &'static str,
+    text: &'static str,
+}
+
+/// Records built into the program, usable by name wherever a motion file is asked for.
+pub const BUILT_IN: &[BuiltIn] = &[BuiltIn {
+    name: "elcentro-1940",
+    title: "El Centro 1940 N-S (Peknold version)",
+    about: "1940 El Centro (Imperial Valley) N-S, Peknold version: 1559 points at 0.02 s, PGA 0.319 g",
+    text: include_str!("../../assets/motions/elcentro-1940-ns.txt"),
+}];
+
+/// A built-in record by name.
+pub fn built_in(name: &str) -> Option<GroundMotion> {
+    let b = BUILT_IN.iter().find(|b| b.name == name)?;
+    let mut m = parse_text(b.text, b.name, Units::G, None).expect("the built-in records parse");
+    m.name = format!("{} [built in: {}]", b.title, b.name);
+    Some(m)
+}
+
+/// Where the ground motion comes from and how it is read.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MotionSpec {
+    /// A built-in record's name or a record file; `None` uses the synthetic record.
+    pub file: Option<String>,
+    pub units: Units,
+    pub scale: f64,
+    pub duration_s: Option<f64>,
+    pub dt_s: Option<f64>,
+    pub synthetic: SyntheticSpec,
+}
+
+impl Default for MotionSpec {
+    fn default() -> Self {
+        MotionSpec {
+            file: None,
+            units: Units::G,
+            scale: 1.0,
+            duration_s: None,
+            dt_s: None,
+            synthetic: SyntheticSpec::default(),
+        }
+    }
+}
+
+/// Reads (a built-in name or a file) or generates the record a spec asks for, truncated and
+/// scaled. Errors name the source and, for a malformed file, the line.
+pub fn load(spec: &MotionSpec) -> Result<GroundMotion, MotionError> {
+    let mut motion = match &spec.file {
+        Some(name) if built_in(name).is_some() => built_in(name).expect("just found"),
+        Some(path) => {
+            let text = std::fs::read_to_string(path).map_err(|e| {
+                let names: Vec<&str> = BUILT_IN.iter().map(|b| b.name).collect();
+                err(
+                    path,
+                    None,
+                    format!(
+                        "cannot read: {e} (built-in records: {}; or a .AT2 or text file)",
+                        names.join(", ")
+                    ),
+                )
+            })?;
+            parse(&text, path, spec.units, spec.dt_s)?
+        }
+        None => spec.synthetic.generate(),
+    };
+    if let Some(d) = spec.duration_s {
+        motion = motion.truncated(d);
+    }
+    if spec.scale != 1.0 {
+        motion = motion.scaled(spec.scale);
+    }
+    if motion.accel_m_s2.len() < 2 {
+        return Err(err(
+            &motion.name,
+            None,
+            "the record has fewer than two samples",
+        ));
+    }
+    Ok(motion)
+}
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Units {
@@ -18,6 +108,13 @@ impl Units {
             "m/s2" | "m/s^2" => Some(Units::MetresPerSecond2),
             "cm/s2" | "cm/s^2" | "gal" => Some(Units::CentimetresPerSecond2),
             _ => None,
+        }
+    }
+    pub fn name(self) -> &'static str {
+        match self {
+            Units::G => "g",
+            Units::MetresPerSecond2 => "m/s2",
+            Units::CentimetresPerSecond2 => "cm/s2",
         }
     }
     pub fn to_m_s2(self) -> f64 {

@@ -410,21 +410,18 @@ pub fn buildings_to_toml(setup: &super::building_settings::BuildingSetup) -> Str
         "[motion]\nscale = {:?}\npga = {:?}\nseed = {}\nlength = {:?}",
         m.scale, m.synthetic.pga_g, m.synthetic.seed, m.synthetic.duration_s
     );
-    if let Some(f) = &m.file {
-        let _ = writeln!(s, "file = {f:?}");
-    }
+    let file = m
+        .file
+        .as_deref()
+        .unwrap_or(super::building_settings::SYNTHETIC);
+    let _ = writeln!(s, "file = {file:?}");
     if let Some(d) = m.duration_s {
         let _ = writeln!(s, "duration = {d:?}");
     }
     if let Some(d) = m.dt_s {
         let _ = writeln!(s, "dt = {d:?}");
     }
-    let units = match m.units {
-        super::motion::Units::G => "g",
-        super::motion::Units::MetresPerSecond2 => "m/s2",
-        super::motion::Units::CentimetresPerSecond2 => "cm/s2",
-    };
-    let _ = writeln!(s, "units = \"{units}\"");
+    let _ = writeln!(s, "units = \"{}\"", m.units.name());
     s
 }
 
