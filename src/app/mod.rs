@@ -655,7 +655,7 @@ impl eframe::App for PoundingApp {
 }
 
 /// Opens the window.
-pub fn run(launch: Launch) -> anyhow::Result<()> {
+pub fn run(launch: Launch) -> Result<(), eframe::Error> {
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_inner_size([1320.0, 900.0])
@@ -667,5 +667,4 @@ pub fn run(launch: Launch) -> anyhow::Result<()> {
         options,
         Box::new(move |cc| Ok(Box::new(PoundingApp::new(cc, launch)))),
     )
-    .map_err(|e| anyhow::anyhow!("the window could not start: {e}"))
 }

@@ -15,7 +15,7 @@ struct Done {
 
 pub struct PaperFigures {
     pub choice: &'static str,
-    running: Option<Background<anyhow::Result<StudyOutput>>>,
+    running: Option<Background<Result<StudyOutput, study::StudyError>>>,
     done: Option<Done>,
     status: Option<(String, bool)>,
     ctx: egui::Context,
@@ -105,12 +105,12 @@ impl PaperFigures {
                 });
                 Some(elapsed)
             }
-            Err(e) if e.downcast_ref::<Cancelled>().is_some() => {
+            Err(study::StudyError::Cancelled(Cancelled)) => {
                 self.status = Some((format!("cancelled after {done} of {total} solves"), false));
                 None
             }
             Err(e) => {
-                self.status = Some((format!("{e:#}"), true));
+                self.status = Some((e.to_string(), true));
                 None
             }
         }

@@ -4,14 +4,14 @@
 //! the observed order. The same for the building run (impact count, peak displacements, max
 //! force against the steps per contact time scale).
 
-use crate::export::plot::{LinePlot, Series};
-use crate::io::building_settings::BuildingSetup;
-use crate::io::preset;
-use crate::io::settings::ImpactSetup;
-use crate::model::building::{BuildingScenario, ContactModel};
-use crate::model::impact::{ImpactResult, ModelKind, solve};
-use crate::model::scenario::{ImpactScenario, Reading};
 use clap::Args;
+use pounding::export::plot::{LinePlot, Series};
+use pounding::io::building_settings::BuildingSetup;
+use pounding::io::preset;
+use pounding::io::settings::ImpactSetup;
+use pounding::model::building::{BuildingScenario, ContactModel};
+use pounding::model::impact::{ImpactResult, ModelKind, solve};
+use pounding::model::scenario::{ImpactScenario, Reading};
 use serde::Serialize;
 use std::io::Write;
 use std::path::PathBuf;
@@ -181,7 +181,7 @@ pub fn impact_ladders(base: &ImpactScenario) -> anyhow::Result<Vec<Rung>> {
 /// The building run's ladders (Sears and linear spring) against 128 steps per time scale.
 pub fn building_ladders(
     setup: &BuildingSetup,
-    motion: &crate::model::motion::GroundMotion,
+    motion: &pounding::model::motion::GroundMotion,
 ) -> anyhow::Result<Vec<Rung>> {
     let mut rows = vec![];
     for model in [ContactModel::Sears, ContactModel::Linear] {
@@ -191,11 +191,11 @@ pub fn building_ladders(
             max_step_s: 0.005 * 8.0 / sps.max(8.0),
             ..setup.scenario
         };
-        let reference = crate::model::building::solve(&at(128.0), motion)?;
+        let reference = pounding::model::building::solve(&at(128.0), motion)?;
         let mut prev: Option<Rung> = None;
         for sps in [2.0, 4.0, 8.0, 16.0, 32.0] {
             let s = at(sps);
-            let (r, wall) = min_time(|| crate::model::building::solve(&s, motion));
+            let (r, wall) = min_time(|| pounding::model::building::solve(&s, motion));
             let r = r?;
             let force_err = rel(r.max_pounding_force_n, reference.max_pounding_force_n);
             let disp_err = rel(r.peak_displacement_m[0], reference.peak_displacement_m[0]).max(

@@ -1,8 +1,8 @@
 //! What `pounding buildings` prints: a readable summary and a JSON report.
 
-use crate::io::building_settings::BuildingSetup;
-use crate::model::building::{BuildingErrorEstimate, BuildingResult, ContactModel};
-use crate::model::motion::{G, GroundMotion};
+use pounding::io::building_settings::BuildingSetup;
+use pounding::model::building::{BuildingErrorEstimate, BuildingResult, ContactModel};
+use pounding::model::motion::{G, GroundMotion};
 use serde::Serialize;
 use std::fmt::Write;
 
@@ -237,7 +237,7 @@ pub fn summary(
         let _ = write!(
             contact,
             ", {} reading, zone d = {} m, slab damping {:.1}%",
-            if sc.reading == crate::model::building::SlabReading::Paper {
+            if sc.reading == pounding::model::building::SlabReading::Paper {
                 "paper"
             } else {
                 "end"

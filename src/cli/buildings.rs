@@ -1,11 +1,11 @@
 //! `pounding buildings`: two buildings under a ground motion, pounding.
 
 use super::building_report::{BuildingReport, summary};
-use crate::io::building_settings::{BUILDING_KEYS, BuildingSetup};
-use crate::io::preset;
-use crate::model::building::{BuildingScenario, ContactModel, solve};
-use crate::model::motion::GroundMotion;
 use clap::Args;
+use pounding::io::building_settings::{BUILDING_KEYS, BuildingSetup};
+use pounding::io::preset;
+use pounding::model::building::{BuildingScenario, ContactModel, solve};
+use pounding::model::motion::GroundMotion;
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -24,7 +24,7 @@ pub struct BuildingArgs {
 
 /// Reads or generates the ground motion a setup asks for; errors phrased for the command line.
 pub fn load_motion(setup: &BuildingSetup) -> anyhow::Result<GroundMotion> {
-    crate::io::motion::load(&setup.motion).map_err(|e| anyhow::anyhow!("--motion {e}"))
+    pounding::io::motion::load(&setup.motion).map_err(|e| anyhow::anyhow!("--motion {e}"))
 }
 
 /// The preset (or `paper-buildings`) with the --set overrides and --motion applied, and the
@@ -70,7 +70,8 @@ pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     let motion = load_motion(&setup)?;
     let result = solve(&setup.scenario, &motion)?;
-    let estimate = crate::model::building::estimate_error(&setup.scenario, &motion, &result).ok();
+    let estimate =
+        pounding::model::building::estimate_error(&setup.scenario, &motion, &result).ok();
     let baseline = solve(
         &BuildingScenario {
             contact: ContactModel::None,
@@ -85,7 +86,7 @@ pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             .zip(&result.force_n)
             .map(|(t, f)| (*t, f * 1e-6))
             .collect();
-        crate::export::plot::LinePlot::new(
+        pounding::export::plot::LinePlot::new(
             format!(
                 "Pounding force: {} contact, {}",
                 result.contact.name(),
@@ -93,7 +94,7 @@ pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             ),
             "time [s]",
             "pounding force [MN]",
-            vec![crate::export::plot::Series {
+            vec![pounding::export::plot::Series {
                 name: result.contact.name().into(),
                 points,
             }],
@@ -101,7 +102,7 @@ pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     })?;
     if let Some(path) = &args.common.csv {
         super::write_csv(out, path, |w| {
-            crate::io::csv::write_building_history(w, &result)
+            pounding::io::csv::write_building_history(w, &result)
         })?;
     }
     if args.common.json {

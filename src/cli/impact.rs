@@ -1,11 +1,11 @@
 //! `pounding impact`: one impact, summarised, as JSON, or as CSV histories.
 
 use super::report::{ImpactReport, summary};
-use crate::export::plot::{LinePlot, Series};
-use crate::io::preset::{self, DEFAULT_PRESET};
-use crate::io::settings::{IMPACT_KEYS, ImpactSetup};
-use crate::model::impact::{ModelKind, solve};
 use clap::Args;
+use pounding::export::plot::{LinePlot, Series};
+use pounding::io::preset::{self, DEFAULT_PRESET};
+use pounding::io::settings::{IMPACT_KEYS, ImpactSetup};
+use pounding::model::impact::{ModelKind, solve};
 use std::io::Write;
 
 #[derive(Args, Debug, Default)]
@@ -65,7 +65,8 @@ pub fn run(args: &ImpactArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     let result = solve(setup.model, &setup.scenario)?;
     let estimate =
-        crate::model::impact::estimate::estimate_error(setup.model, &setup.scenario, &result).ok();
+        pounding::model::impact::estimate::estimate_error(setup.model, &setup.scenario, &result)
+            .ok();
     args.common.write_plot((1000, 600), || {
         let points = result
             .time_s
@@ -85,7 +86,7 @@ pub fn run(args: &ImpactArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     })?;
     if let Some(path) = &args.common.csv {
         super::write_csv(out, path, |w| {
-            crate::io::csv::write_impact_history(w, &result)
+            pounding::io::csv::write_impact_history(w, &result)
         })?;
     }
     if args.common.json {

@@ -65,17 +65,18 @@ pub struct WindowArgs {
 fn window(args: &WindowArgs) -> anyhow::Result<()> {
     let scene = match args.scene.as_deref() {
         None => None,
-        Some(name) => Some(crate::app::SceneKind::from_name(name).ok_or_else(|| {
+        Some(name) => Some(pounding::app::SceneKind::from_name(name).ok_or_else(|| {
             anyhow::anyhow!("--scene: unknown scene '{name}': allowed bar|compare|buildings|study")
         })?),
     };
-    crate::app::run(crate::app::Launch {
+    pounding::app::run(pounding::app::Launch {
         scene,
         preset: args.preset.clone(),
         exit_after_frames: args.exit_after_frames,
         time_s: args.time,
         screenshot: args.screenshot.clone(),
     })
+    .map_err(|e| anyhow::anyhow!("the window could not start: {e}"))
 }
 
 /// Runs the command line, writing results to `out`; `Ok(())` means exit status 0.
@@ -141,12 +142,12 @@ impl SceneArgs {
     pub(crate) fn write_plot(
         &self,
         default_size: (u32, u32),
-        make: impl FnOnce() -> crate::export::plot::LinePlot,
+        make: impl FnOnce() -> pounding::export::plot::LinePlot,
     ) -> anyhow::Result<()> {
         let Some(path) = &self.plot else {
             return Ok(());
         };
-        let plot = crate::export::plot::LinePlot {
+        let plot = pounding::export::plot::LinePlot {
             size: self.plot_size.unwrap_or(default_size),
             scale: self.plot_scale.unwrap_or(1.0),
             ..make()
@@ -190,7 +191,7 @@ pub(crate) fn list<'a>(
 
 /// The shipped presets of one scene with their descriptions.
 pub(crate) fn list_presets(out: &mut dyn std::io::Write, scene: &str) -> anyhow::Result<()> {
-    use crate::io::preset::{EMBEDDED, description, scene as scene_of};
+    use pounding::io::preset::{EMBEDDED, description, scene as scene_of};
     list(
         out,
         16,

@@ -1,9 +1,9 @@
 //! What the command line prints about an impact: a readable summary and a JSON report.
 
-use crate::io::settings::ImpactSetup;
-use crate::model::bar::{Bar, EndShape};
-use crate::model::impact::estimate::ErrorEstimate;
-use crate::model::impact::{ImpactResult, ModelKind};
+use pounding::io::settings::ImpactSetup;
+use pounding::model::bar::{Bar, EndShape};
+use pounding::model::impact::estimate::ErrorEstimate;
+use pounding::model::impact::{ImpactResult, ModelKind};
 use serde::Serialize;
 use std::fmt::Write;
 
@@ -182,7 +182,7 @@ pub fn summary(
     s += &bar_line("bar 1", &sc.bar1);
     s += &bar_line("bar 2", &sc.bar2);
     if let Ok(law) = sc.contact_law() {
-        let unit = if law.kind == crate::model::contact::LawKind::Hertz {
+        let unit = if law.kind == pounding::model::contact::LawKind::Hertz {
             "N/m^1.5"
         } else {
             "N/m"

@@ -1,11 +1,11 @@
 //! `pounding study NAME`: one of the paper's figures (or `all`) rerun, written as PNG, SVG and CSV,
 //! with the numbers its claims are checked against.
 
-use crate::export::plot::LinePlot;
-use crate::study::{self, Context, Finding, Progress, Study};
 use anyhow::{Context as _, anyhow, bail};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use pounding::export::plot::LinePlot;
+use pounding::study::{self, Context, Finding, Progress, Study};
 use serde::Serialize;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -120,7 +120,7 @@ pub fn run(args: &StudyArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         let motion = super::buildings::load_motion(&setup)?;
         (setup.scenario, Some(motion))
     } else {
-        (crate::model::building::BuildingScenario::paper(), None)
+        (pounding::model::building::BuildingScenario::paper(), None)
     };
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("--out: cannot create {}", args.out.display()))?;
@@ -146,7 +146,10 @@ pub fn run(args: &StudyArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                     .as_ref()
                     .map(|m| format!("ground motion: {}", m.name)),
             );
-            if motion.as_ref().is_some_and(|m| !m.name.contains("El Centro 1940")) {
+            if motion
+                .as_ref()
+                .is_some_and(|m| !m.name.contains("El Centro 1940"))
+            {
                 notes.push(
                     "the paper used 8 s of El Centro 1940: --motion elcentro-1940 gives it".into(),
                 );
@@ -241,7 +244,7 @@ fn write_figure(
         scale: args.plot_scale.unwrap_or(1.0),
         ..plot.clone()
     };
-    sized.write(path)
+    Ok(sized.write(path)?)
 }
 
 fn summary(r: &Report, out: &mut dyn Write) -> anyhow::Result<()> {

@@ -1,12 +1,12 @@
 //! `pounding sweep`: one impact setting varied over a range, every point solved in parallel, with
 //! peak force, contact duration and e against it for each model asked for.
 
-use crate::export::plot::{LinePlot, Series};
-use crate::model::impact::ModelKind;
-use crate::study::Progress;
-use crate::study::sweep::{self, Point};
 use anyhow::{anyhow, bail};
 use clap::Args;
+use pounding::export::plot::{LinePlot, Series};
+use pounding::model::impact::ModelKind;
+use pounding::study::Progress;
+use pounding::study::sweep::{self, Point};
 use serde::Serialize;
 use std::io::Write;
 use std::time::Instant;

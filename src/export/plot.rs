@@ -31,6 +31,18 @@ pub struct LinePlot {
     pub y_range: Option<(f64, f64)>,
 }
 
+/// A plot that could not be written.
+#[derive(Debug, thiserror::Error)]
+pub enum PlotError {
+    #[error("{}: the plot's extension must be .svg or .png", .0.display())]
+    Extension(std::path::PathBuf),
+    #[error("{}: {message}", path.display())]
+    Write {
+        path: std::path::PathBuf,
+        message: String,
+    },
+}
+
 static FONT: Once = Once::new();
 
 fn register_font() {
@@ -79,7 +91,7 @@ impl LinePlot {
     }
 
     /// Writes the plot; the extension picks the format (`.svg` or `.png`).
-    pub fn write(&self, path: &Path) -> anyhow::Result<()> {
+    pub fn write(&self, path: &Path) -> Result<(), PlotError> {
         register_font();
         let ext = path
             .extension()
@@ -89,12 +101,12 @@ impl LinePlot {
         match ext.as_str() {
             "svg" => self.draw(SVGBackend::new(path, self.size).into_drawing_area()),
             "png" => self.write_png(path),
-            _ => anyhow::bail!(
-                "{}: the plot's extension must be .svg or .png",
-                path.display()
-            ),
+            _ => return Err(PlotError::Extension(path.to_path_buf())),
         }
-        .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))
+        .map_err(|e| PlotError::Write {
+            path: path.to_path_buf(),
+            message: e.to_string(),
+        })
     }
 
     /// PNG through a pixel buffer and the png crate (plotters' own encoder brings a second

@@ -1,10 +1,9 @@
 //! The paper's building example (Section 4, Figures 12 and 13): the two buildings of Table 1 under
 //! a ground motion, with Sears pounding and without contact.
 
-use super::{Context, Figure, Study, StudyOutput, finding, par_map};
+use super::{Context, Figure, Study, StudyError, StudyOutput, finding, par_map};
 use crate::export::plot::{LinePlot, Series};
 use crate::model::building::{BuildingResult, BuildingScenario, ContactModel, SlabReading, solve};
-use anyhow::anyhow;
 
 pub const STUDIES: &[Study] = &[
     Study {
@@ -24,18 +23,22 @@ pub const STUDIES: &[Study] = &[
 ];
 
 /// The scenario as given and its variants, solved side by side.
-fn solve_all(ctx: &Context, cases: &[BuildingScenario]) -> anyhow::Result<Vec<BuildingResult>> {
-    let motion = ctx
-        .motion
-        .ok_or_else(|| anyhow!("the building studies need a ground motion"))?;
+fn solve_all(ctx: &Context, cases: &[BuildingScenario]) -> Result<Vec<BuildingResult>, StudyError> {
+    let motion = ctx.motion.ok_or(StudyError::NoMotion)?;
     par_map(ctx.progress, cases, |sc| solve(sc, motion))?
         .into_iter()
-        .map(|r| r.map_err(|e| anyhow!("{e}")))
+        .zip(cases)
+        .map(|(r, sc)| {
+            r.map_err(|source| StudyError::Solve {
+                what: format!("the buildings with the {} contact", sc.contact.name()),
+                source,
+            })
+        })
         .collect()
 }
 
 /// The scenario as given (pounding) and without contact.
-fn with_and_without(ctx: &Context) -> anyhow::Result<(BuildingResult, BuildingResult)> {
+fn with_and_without(ctx: &Context) -> Result<(BuildingResult, BuildingResult), StudyError> {
     let free = BuildingScenario {
         contact: ContactModel::None,
         ..ctx.buildings
@@ -44,7 +47,7 @@ fn with_and_without(ctx: &Context) -> anyhow::Result<(BuildingResult, BuildingRe
     Ok((out.next().expect("two"), out.next().expect("two")))
 }
 
-fn displacements(ctx: &Context) -> anyhow::Result<StudyOutput> {
+fn displacements(ctx: &Context) -> Result<StudyOutput, StudyError> {
     let (pounding, free) = with_and_without(ctx)?;
     let mut figures = Vec::new();
     let mut findings = Vec::new();
@@ -94,7 +97,7 @@ fn displacements(ctx: &Context) -> anyhow::Result<StudyOutput> {
     })
 }
 
-fn forces(ctx: &Context) -> anyhow::Result<StudyOutput> {
+fn forces(ctx: &Context) -> Result<StudyOutput, StudyError> {
     // The end reading (no plane delay) alongside, where the scenario is Sears in the paper's
     // reading: it separates what the reading adds (the overshoot) from what the waves do.
     let end = BuildingScenario {

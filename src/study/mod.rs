@@ -54,6 +54,32 @@ impl Progress {
 #[error("cancelled")]
 pub struct Cancelled;
 
+/// Why a study produced nothing.
+#[derive(Debug, thiserror::Error)]
+pub enum StudyError {
+    #[error(transparent)]
+    Cancelled(#[from] Cancelled),
+    #[error("preset {0}")]
+    Preset(#[from] crate::io::preset::PresetError),
+    /// A setting the study makes was refused.
+    #[error("{assignment}: {source}")]
+    Setting {
+        assignment: String,
+        source: crate::model::scenario::InputError,
+    },
+    /// A solve the study cannot do without failed.
+    #[error("{what}: {source}")]
+    Solve {
+        what: String,
+        source: crate::model::impact::SolveError,
+    },
+    /// The run a study's other numbers are relative to has no result.
+    #[error("no reference: {0}")]
+    Reference(String),
+    #[error("the building studies need a ground motion")]
+    NoMotion,
+}
+
 /// `f` over `items` on every core, counted in `progress`; stops early when cancelled.
 pub fn par_map<I: Sync, T: Send>(
     progress: &Progress,
@@ -155,7 +181,7 @@ pub struct Study {
     pub about: &'static str,
     /// Runs on the buildings of Section 4 (needs a ground motion).
     pub buildings: bool,
-    pub run: fn(&Context) -> anyhow::Result<StudyOutput>,
+    pub run: fn(&Context) -> Result<StudyOutput, StudyError>,
 }
 
 /// Every built-in study, in the paper's order.
