@@ -137,7 +137,7 @@ impl ImpactReport {
                 restitution_abs: e.restitution,
                 estimate_time_s: e.wall_time_s,
             }),
-            warnings: r.warnings.clone(),
+            warnings: r.warnings.iter().map(|w| w.to_string()).collect(),
         }
     }
 }

@@ -10,7 +10,7 @@
 //! that the Sears model avoids.
 
 use super::timestep::contact_time_scale;
-use super::{Raw, SolveError};
+use super::{Raw, SolveError, Warning};
 use crate::model::bar::Bar;
 use crate::model::scenario::ImpactScenario;
 
@@ -111,9 +111,10 @@ pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
         if span / link_step <= sc.solver.max_steps as f64 {
             h = link_step;
         } else {
-            warnings.push(format!(
-                "the step {h:.3e} s does not resolve the contact link's oscillation with the end nodes ({link_step:.3e} s) and refining would exceed solver.max_steps: stable, but the link's energy is not accurate"
-            ));
+            warnings.push(Warning::FeLinkUnresolved {
+                dt_s: h,
+                link_step_s: link_step,
+            });
         }
     }
     let beta = h * h * (left.inv_m[n] + right.inv_m[0]);
@@ -177,10 +178,10 @@ pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
     let link = law.tangent_at_force(force_n.iter().cloned().fold(0.0, f64::max));
     let element = left.k.min(right.k);
     if link > FE_LINK_RATIO * element {
-        warnings.push(format!(
-            "the contact link ({link:.3e} N/m at the peak force) is {:.0} times stiffer than the end elements (E A / dx = {element:.3e} N/m): the end nodes chatter and the run is not converged in the mesh; raise fe.segments (Watanabe & Kawashima match the link to the element stiffness)",
-            link / element
-        ));
+        warnings.push(Warning::FeLinkChatter {
+            link_n_m: link,
+            element_n_m: element,
+        });
     }
     super::close_open_contact(
         &mut contacts,

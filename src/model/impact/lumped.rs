@@ -6,7 +6,7 @@
 //! check of them rather than a copy.
 
 use super::timestep::contact_time_scale;
-use super::{Raw, SolveError};
+use super::{Raw, SolveError, Warning};
 use crate::model::contact::ContactLaw;
 use crate::model::scenario::ImpactScenario;
 
@@ -232,10 +232,12 @@ pub(crate) fn solve_kelvin(sc: &ImpactScenario) -> Result<Raw, SolveError> {
             damping_n_s_m: c,
         },
     )?;
-    raw.warnings.push(format!(
-        "Kelvin-Voigt damping ratio {xi:.4} (c = {c:.4e} N s/m) gives e = {e} with a link that cannot pull; Anagnostopoulos' formula, which lets the link pull at the end of contact, would give {:.4}",
-        anagnostopoulos_damping_ratio(e)
-    ));
+    raw.warnings.push(Warning::KelvinCalibration {
+        xi,
+        damping_n_s_m: c,
+        restitution: e,
+        anagnostopoulos_xi: anagnostopoulos_damping_ratio(e),
+    });
     Ok(raw)
 }
 
@@ -253,7 +255,7 @@ pub(crate) fn solve_stereo(sc: &ImpactScenario) -> Raw {
         masses_kg: [sc.bar1.mass_kg(), sc.bar2.mass_kg()],
         dissipated_j: 0.5 * m * w * w * (1.0 - e * e),
         peak_override_n: Some(None),
-        warnings: vec!["stereomechanics exchanges the impulse instantaneously: no force history, no peak force, zero duration".into()],
+        warnings: vec![Warning::Instantaneous],
         dt_s: 0.0,
         ..Raw::default()
     }

@@ -8,7 +8,10 @@ pub mod fe;
 pub mod lumped;
 pub mod sears;
 pub(crate) mod timestep;
+pub mod warning;
 pub mod wave;
+
+pub use warning::{KeptBecause, Outside, VALIDATED, Warning};
 
 use super::field::BarWaves;
 use super::scenario::{ImpactScenario, InputError, Reading};
@@ -168,7 +171,7 @@ pub struct ImpactResult {
     /// Wave histories of both bars, for stress and velocity anywhere (d'Alembert models).
     pub waves: Option<[BarWaves; 2]>,
     pub end_s: f64,
-    pub warnings: Vec<String>,
+    pub warnings: Vec<Warning>,
     pub stats: SolveStats,
 }
 
@@ -211,47 +214,40 @@ pub(crate) struct Raw {
     pub waves: Option<[BarWaves; 2]>,
     pub peak_override_n: Option<Option<f64>>,
     pub sears: Option<SearsDiagnostics>,
-    pub warnings: Vec<String>,
+    pub warnings: Vec<Warning>,
     pub steps: usize,
     pub dt_s: f64,
     pub refined_from_s: Option<f64>,
 }
 
-/// The box the stability suite (tests/stability.rs) covers; a run outside it says so.
-pub const VALIDATED: &str = "contact stiffness 1e4 to 1e16, approach velocity 1e-6 to 1e3 m/s, length ratio up to 1e4, zone scale 1e-4 to 10, added mass up to 1000 times a bar's own";
-
 /// Warnings for each input outside the validated box.
-pub fn outside_validated_range(sc: &ImpactScenario) -> Vec<String> {
+pub fn outside_validated_range(sc: &ImpactScenario) -> Vec<Warning> {
     let mut out = vec![];
-    let mut flag = |what: String| {
-        out.push(format!(
-            "outside the validated range: {what} (validated: {VALIDATED})"
-        ))
-    };
+    let mut flag = |what: Outside| out.push(Warning::OutsideValidated(what));
     if let Ok(law) = sc.contact_law()
         && !(1e4..=1e16).contains(&law.stiffness)
     {
-        flag(format!("contact stiffness {:.3e}", law.stiffness));
+        flag(Outside::Stiffness(law.stiffness));
     }
     let w = sc.approach_velocity_m_s();
     if w > 0.0 && !(1e-6..=1e3).contains(&w) {
-        flag(format!("approach velocity {w:e} m/s"));
+        flag(Outside::ApproachVelocity(w));
     }
     let (l1, l2) = (sc.bar1.length_m, sc.bar2.length_m);
     if l1.max(l2) / l1.min(l2) > 1e4 {
-        flag(format!("length ratio {:.3e}", l1.max(l2) / l1.min(l2)));
+        flag(Outside::LengthRatio(l1.max(l2) / l1.min(l2)));
     }
     if !(1e-4..=10.0).contains(&sc.contact.zone_scale) {
-        flag(format!("zone scale {}", sc.contact.zone_scale));
+        flag(Outside::ZoneScale(sc.contact.zone_scale));
     }
-    for (name, b) in [("bar1", &sc.bar1), ("bar2", &sc.bar2)] {
+    for (i, b) in [&sc.bar1, &sc.bar2].into_iter().enumerate() {
         let own = b.material.density_kg_m3 * b.area_m2() * b.length_m;
         if b.added_mass_kg > 1000.0 * own {
-            flag(format!(
-                "{name} added mass {:.3e} kg, {:.0} times its own",
-                b.added_mass_kg,
-                b.added_mass_kg / own
-            ));
+            flag(Outside::AddedMass {
+                bar: i + 1,
+                kg: b.added_mass_kg,
+                times_own: b.added_mass_kg / own,
+            });
         }
     }
     out
@@ -263,15 +259,13 @@ pub(crate) fn close_open_contact(
     impulse_ns: f64,
     contact_start_impulse_ns: f64,
     end_s: f64,
-    warnings: &mut Vec<String>,
+    warnings: &mut Vec<Warning>,
 ) {
     if let Some(c) = contacts.last_mut()
         && c.1.is_none()
     {
         c.2 = impulse_ns - contact_start_impulse_ns;
-        warnings.push(format!(
-            "the contact was still on at the end of the simulated span (t = {end_s:.4e} s)"
-        ));
+        warnings.push(Warning::ContactOpenAtEnd { end_s });
     }
 }
 
@@ -296,25 +290,22 @@ pub fn solve(model: ModelKind, scenario: &ImpactScenario) -> Result<ImpactResult
     let wall = start.elapsed().as_secs_f64();
     raw.warnings.extend(outside_validated_range(scenario));
     if w <= 0.0 {
-        raw.warnings.push(format!(
-            "the bars are not approaching (v1 - v2 = {w} m/s <= 0): no impact; give bar1.velocity > bar2.velocity"
-        ));
+        raw.warnings
+            .push(Warning::NotApproaching { approach_m_s: w });
     }
     let mut result = finish(model, scenario, raw);
     result.stats.wall_time_s = wall;
     if let Some(d) = &mut result.sears {
         d.creates_energy = result.energy.balance_error > ENERGY_CREATION_TOL;
         if d.creates_energy {
-            result.warnings.push(format!(
-                "the paper reading created energy: the bars end with {:.3}% more energy than they started with (a tau = {:.3}; above pi/2 this reading oscillates and creates energy once separation clips the force); use sears.reading = collocated or end for an energy-consistent answer",
-                100.0 * result.energy.balance_error,
-                d.a_tau
-            ));
+            result.warnings.push(Warning::PaperCreatesEnergy {
+                percent: 100.0 * result.energy.balance_error,
+                a_tau: d.a_tau,
+            });
         } else if d.reading == Reading::Paper && d.a_tau > (-1f64).exp() {
-            result.warnings.push(format!(
-                "a tau = {:.3} > 1/e: the paper reading overshoots the wave-theory force in this regime",
-                d.a_tau
-            ));
+            result
+                .warnings
+                .push(Warning::PaperOvershoots { a_tau: d.a_tau });
         }
     }
     Ok(result)

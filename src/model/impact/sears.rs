@@ -24,7 +24,7 @@
 //! integrated up to (from) that instant, so durations are not quantised to the grid.
 
 use super::timestep::{choose_step, contact_time_scale};
-use super::{Raw, SearsDiagnostics, SolveError, peak_between};
+use super::{Raw, SearsDiagnostics, SolveError, Warning, peak_between};
 use crate::model::contact::ContactLaw;
 use crate::model::field::{BarWaves, History};
 use crate::model::history::{Series, Tap};
@@ -207,7 +207,7 @@ pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
     let t_long = lay.round_trip_s[0].max(lay.round_trip_s[1]);
     let choice = choose_step(sc, scale, 2.0 * scale.lumped_duration_s.max(t_long));
     let h = choice.dt_s;
-    let mut warnings: Vec<String> = choice.warning.into_iter().collect();
+    let mut warnings: Vec<Warning> = choice.warning.into_iter().collect();
 
     // Room for the whole run up front (twice the likely span): a vector that grows mid-run
     // copies all its history.
@@ -416,12 +416,11 @@ pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
     if sc.reading == Reading::Paper {
         for (i, bar) in bars.iter().enumerate() {
             if zones[i] > bar.length_m {
-                warnings.push(format!(
-                    "bar{}'s zone d = {:.4} m is longer than the bar ({:.4} m): its plane P lies past the far end's mirror image; the paper reading is still defined (d < 2L) but physically doubtful",
-                    i + 1,
-                    zones[i],
-                    bar.length_m
-                ));
+                warnings.push(Warning::ZoneLongerThanBar {
+                    bar: i + 1,
+                    zone_m: zones[i],
+                    length_m: bar.length_m,
+                });
             }
         }
     }

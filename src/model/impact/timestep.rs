@@ -1,5 +1,6 @@
 //! The contact's own time scale, and the step a run uses.
 
+use super::{KeptBecause, Warning};
 use crate::model::contact::{ContactLaw, LawKind};
 use crate::model::scenario::ImpactScenario;
 
@@ -39,7 +40,7 @@ pub(crate) fn contact_time_scale(law: &ContactLaw, w: f64, m_eff: f64, z_eff: f6
 pub(crate) struct StepChoice {
     pub dt_s: f64,
     pub refined_from_s: Option<f64>,
-    pub warning: Option<String>,
+    pub warning: Option<Warning>,
 }
 
 pub(crate) fn choose_step(
@@ -70,25 +71,30 @@ pub(crate) fn choose_step(
         StepChoice {
             dt_s: refined,
             refined_from_s: Some(dt),
-            warning: Some(format!(
-                "solver.dt = {dt:e} s is coarser than the contact's time scale {resolve:.3e} s: refined to {refined:.3e} s"
-            )),
+            warning: Some(Warning::StepRefined {
+                dt_s: dt,
+                scale_s: resolve,
+                refined_s: refined,
+            }),
         }
     } else {
-        let why = if sc.solver.refine {
-            format!(
-                "refining to {refined:.3e} s would need about {steps:.0} steps, over solver.max_steps = {}",
-                sc.solver.max_steps
-            )
+        let because = if sc.solver.refine {
+            KeptBecause::Budget {
+                refined_s: refined,
+                steps,
+                max_steps: sc.solver.max_steps,
+            }
         } else {
-            "solver.refine = false".to_string()
+            KeptBecause::RefineOff
         };
         StepChoice {
             dt_s: dt,
             refined_from_s: None,
-            warning: Some(format!(
-                "solver.dt = {dt:e} s is coarser than the contact's time scale {resolve:.3e} s and was kept ({why}): the run is stable but the force's rise is not resolved; use solver.dt <= {resolve:.1e} s for accurate peaks"
-            )),
+            warning: Some(Warning::StepKept {
+                dt_s: dt,
+                scale_s: resolve,
+                because,
+            }),
         }
     }
 }
