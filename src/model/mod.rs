@@ -8,4 +8,5 @@ pub mod history;
 pub mod impact;
 pub mod material;
 pub mod motion;
+pub mod root;
 pub mod scenario;

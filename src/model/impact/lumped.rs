@@ -8,6 +8,7 @@
 use super::timestep::contact_time_scale;
 use super::{Raw, SolveError, Warning};
 use crate::model::contact::ContactLaw;
+use crate::model::root::bracket;
 use crate::model::scenario::ImpactScenario;
 
 /// Restitution of a Kelvin-Voigt contact that cannot pull (the contact ends when the spring and
@@ -33,16 +34,9 @@ pub fn kelvin_damping_ratio(e: f64) -> f64 {
     if e >= 1.0 {
         return 0.0;
     }
-    let (mut lo, mut hi) = (1e-12f64.ln(), 1e4f64.ln());
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if kelvin_restitution(mid.exp()) > e {
-            lo = mid
-        } else {
-            hi = mid
-        }
-    }
-    (0.5 * (lo + hi)).exp()
+    // e falls from 1 as xi grows: a root in ln xi between 1e-12 and 1e4.
+    let f = |ln_xi: f64| kelvin_restitution(ln_xi.exp()) - e;
+    bracket(f, 1e-12f64.ln(), 1e4f64.ln(), 1e-14).mid().exp()
 }
 
 /// Anagnostopoulos' damping ratio for a Kelvin-Voigt link that may pull at the end of contact:
@@ -134,35 +128,9 @@ fn integrate(sc: &ImpactScenario, link: Link) -> Result<Raw, SolveError> {
                     link.push(ys[0], ys[1])
                 }
             };
-            // Illinois false position: halving the stalled end's value keeps the bracket
-            // shrinking on both sides, so the end of contact is found to round-off.
-            let (mut a, mut b) = (0.0, h);
-            let (mut ga, mut gb) = (g(a), g(b));
-            let mut side = 0i8;
-            for _ in 0..100 {
-                let s = b - gb * (b - a) / (gb - ga);
-                let s = if s > a && s < b { s } else { 0.5 * (a + b) };
-                let gs = g(s);
-                if (gs > 0.0) == (ga > 0.0) {
-                    a = s;
-                    ga = gs;
-                    if side == 1 {
-                        gb *= 0.5;
-                    }
-                    side = 1;
-                } else {
-                    b = s;
-                    gb = gs;
-                    if side == -1 {
-                        ga *= 0.5;
-                    }
-                    side = -1;
-                }
-                if b - a <= 1e-14 * h || gs == 0.0 {
-                    break;
-                }
-            }
-            let s = a;
+            // The end of contact to round-off; the bracket's pushing side is the last instant of
+            // contact.
+            let s = bracket(g, 0.0, h, 1e-14 * h).first_side;
             y = rk4(&link, m, y, s);
             t += s;
             time_s.push(t);

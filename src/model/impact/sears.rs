@@ -138,35 +138,7 @@ impl LocalPoly {
 
     /// The root in [0, 1] between y(0) and y(1), which have opposite signs (or y(0) = 0).
     fn root(&self) -> f64 {
-        let (y0, y1) = (self.y[2], self.y[3]);
-        if y0 == 0.0 {
-            return 0.0;
-        }
-        let (mut lo, mut hi) = (0.0, 1.0);
-        let mut x = (y0 / (y0 - y1)).clamp(0.0, 1.0);
-        for _ in 0..60 {
-            let v = self.eval(x);
-            if v == 0.0 {
-                return x;
-            }
-            if (v > 0.0) == (y0 > 0.0) {
-                lo = x
-            } else {
-                hi = x
-            }
-            let eps = 1e-7;
-            let slope = (self.eval(x + eps) - self.eval(x - eps)) / (2.0 * eps);
-            let newton = x - v / slope;
-            x = if slope != 0.0 && newton > lo && newton < hi {
-                newton
-            } else {
-                0.5 * (lo + hi)
-            };
-            if hi - lo < 1e-14 {
-                break;
-            }
-        }
-        x
+        crate::model::root::bracket(|x| self.eval(x), 0.0, 1.0, 1e-14).mid()
     }
 
     /// h times the integral of f(y(x)) over [a, b] (3-point Gauss).
