@@ -21,7 +21,7 @@ struct Bar {
     y_bottom: f32,          // world
     y_top: f32,
     world_per_metre: f32,
-    _pad: f32,
+    decay_per_s: f32,       // 1/s: material damping, arrivals attenuate as exp(-travel * decay)
 };
 
 struct Uniforms {
@@ -30,11 +30,11 @@ struct Uniforms {
     bar_count: u32,
     _pad0: f32,
     _pad1: f32,
-    bars: array<Bar, 2>,
 };
 
 @group(0) @binding(0) var<uniform> u: Uniforms;
 @group(0) @binding(1) var<storage, read> history: array<f32>;
+@group(0) @binding(2) var<storage, read> bars: array<Bar>;
 
 struct VertexOut {
     @builtin(position) position: vec4<f32>,
@@ -49,7 +49,7 @@ fn vs_main(@builtin(vertex_index) vi: u32, @builtin(instance_index) bar: u32) ->
         vec2<f32>(0.0, 0.0), vec2<f32>(1.0, 0.0), vec2<f32>(1.0, 1.0),
         vec2<f32>(0.0, 0.0), vec2<f32>(1.0, 1.0), vec2<f32>(0.0, 1.0),
     );
-    let b = u.bars[bar];
+    let b = bars[bar];
     let c = corners[vi];
     let length_m = b.zone_length + b.body_length;
     let x = b.origin_x + b.direction * c.x * length_m * b.world_per_metre;
@@ -61,14 +61,23 @@ fn vs_main(@builtin(vertex_index) vi: u32, @builtin(instance_index) bar: u32) ->
     return out;
 }
 
-// H(t): zero before the impact, periodic with the round trip after the simulated span.
+// exp(-travel / t_d): what damping leaves of a wave after `travel` seconds.
+fn attenuation(b: Bar, travel: f32) -> f32 {
+    return exp(-travel * b.decay_per_s);
+}
+
+// H(t): zero before the impact; after the simulated span each round trip repeats the last,
+// attenuated by the damping.
 fn history_at(b: Bar, t_in: f32) -> f32 {
     var t = t_in;
+    var weight = 1.0;
     if (t < 0.0) {
         return 0.0;
     }
     if (t > b.end_time && b.round_trip > 0.0) {
-        t = t - ceil((t - b.end_time) / b.round_trip) * b.round_trip;
+        let k = ceil((t - b.end_time) / b.round_trip);
+        t = t - k * b.round_trip;
+        weight = attenuation(b, k * b.round_trip);
         if (t < 0.0) {
             return 0.0;
         }
@@ -76,10 +85,10 @@ fn history_at(b: Bar, t_in: f32) -> f32 {
     let p = t / b.dt;
     let i = u32(floor(p));
     if (i + 1u >= b.count) {
-        return history[b.offset + b.count - 1u];
+        return weight * history[b.offset + b.count - 1u];
     }
     let f = p - floor(p);
-    return mix(history[b.offset + i], history[b.offset + i + 1u], f);
+    return weight * mix(history[b.offset + i], history[b.offset + i + 1u], f);
 }
 
 // Diverging map: compression blue, tension red, stress-free pale grey.
@@ -96,14 +105,16 @@ fn diverging(s: f32) -> vec3<f32> {
 
 @fragment
 fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
-    let b = u.bars[in.bar];
+    let b = bars[in.bar];
     let x = in.distance_m - b.zone_length;
     var force = 0.0;
     if (x < 0.0) {
-        force = history_at(b, u.time) - history_at(b, u.time - b.round_trip);
+        force = history_at(b, u.time) - attenuation(b, b.round_trip) * history_at(b, u.time - b.round_trip);
     } else {
         let xs = min(x, b.body_length);
-        force = history_at(b, u.time - xs / b.wave_speed) - history_at(b, u.time - (2.0 * b.body_length - xs) / b.wave_speed);
+        let near = xs / b.wave_speed;
+        let far = (2.0 * b.body_length - xs) / b.wave_speed;
+        force = attenuation(b, near) * history_at(b, u.time - near) - attenuation(b, far) * history_at(b, u.time - far);
     }
     // Tension positive.
     let stress = -force * b.inv_area;

@@ -40,7 +40,7 @@ fn render(t: f64) -> Option<(Vec<u8>, BarsLayout, ImpactSetup)> {
     let history = GpuHistory::from_waves(waves);
     let layout = BarsLayout::new(waves, setup.scenario.approach_velocity_m_s(), &history);
     let mut bars = BarsResources::new(&device, FORMAT);
-    bars.upload(&device, &queue, &layout.uniforms(t), &history, 1);
+    bars.upload(&device, &queue, &layout.uniforms(t), &layout.bars, &history);
 
     let texture = device.create_texture(&wgpu::TextureDescriptor {
         label: Some("offscreen"),

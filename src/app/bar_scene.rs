@@ -44,7 +44,6 @@ pub struct BarScene {
     pub solve_time: Duration,
     pub latency: Duration,
     pub error: Option<String>,
-    version: u64,
     /// The view's rectangle last frame (for a screenshot of the view alone).
     pub view_rect: Option<egui::Rect>,
     shown_force: ShownPlot,
@@ -85,7 +84,6 @@ impl BarScene {
             solve_time: Duration::ZERO,
             latency: Duration::ZERO,
             error: None,
-            version: 0,
             view_rect: None,
             shown_force: ShownPlot::default(),
             shown_approach: ShownPlot::default(),
@@ -118,8 +116,7 @@ impl BarScene {
                         true
                     };
                     if lead {
-                        self.version += 1;
-                        let solved = Solved::new(self.setup, r.clone(), self.version);
+                        let solved = Solved::new(self.setup, r.clone());
                         self.playback.t_max = solved.span_s();
                         self.playback.t = self.playback.t.min(self.playback.t_max);
                         self.solved = Some(solved);

@@ -13,13 +13,12 @@ pub struct Solved {
     pub setup: ImpactSetup,
     pub result: ImpactResult,
     pub gpu: Arc<GpuHistory>,
-    pub version: u64,
     /// Impulse so far at each of the result's times [N s].
     pub impulse_ns: Vec<f64>,
 }
 
 impl Solved {
-    pub fn new(setup: ImpactSetup, result: ImpactResult, version: u64) -> Self {
+    pub fn new(setup: ImpactSetup, result: ImpactResult) -> Self {
         let gpu = Arc::new(
             result
                 .waves
@@ -41,7 +40,6 @@ impl Solved {
             setup,
             result,
             gpu,
-            version,
             impulse_ns,
         }
     }
@@ -95,7 +93,12 @@ pub fn draw(ui: &mut egui::Ui, rect: Rect, solved: &Solved, t: f64) {
         bottom: layout.bottom,
         top: layout.top,
     };
-    vp.paint_bars(ui, layout.uniforms(t), solved.gpu.clone(), solved.version);
+    vp.paint_bars(
+        ui,
+        layout.uniforms(t),
+        layout.bars.to_vec(),
+        solved.gpu.clone(),
+    );
     let to_screen = |x: f64, y: f32| vp.to_screen(x, y as f64);
     let painter = ui.painter_at(rect);
     let text = ui.visuals().text_color();

@@ -1,23 +1,32 @@
-//! The Building pounding scene: two buildings swaying under a ground motion, pounding across
-//! the gap; the roof slabs coloured by their stress waves (the wgpu pipeline of the bar view),
-//! displacements with and without pounding, the pounding force, and a zoom on any impact.
+//! The Building pounding scene: two buildings of any number of storeys swaying under a ground
+//! motion and pounding across the gap at every level they share; displacements with and
+//! without pounding, the pounding force (all levels or one), the impact list with a zoom on any
+//! impact, and the gap that avoids pounding against the code rules. The state and the solves
+//! live here; the panel in `building_params`, the drawing in `building_view`.
 
+use super::building_view::{self, BuildingDrawing};
 use super::export::{Exporter, ShownPlot};
-use super::params::{Fields, Spec};
+use super::params::Fields;
 use super::playback::Playback;
 use super::series::decimate;
 use super::worker::Worker;
 use crate::io::building_settings::BuildingSetup;
+use crate::model::building::gaps::{GapAssessment, assess};
 use crate::model::building::{
-    BuildingErrorEstimate, BuildingResult, BuildingScenario, ContactModel, SlabReading,
-    estimate_error, solve,
+    BuildingErrorEstimate, BuildingResult, BuildingScenario, ContactModel, estimate_error, solve,
 };
 use crate::model::motion::{G, GroundMotion};
-use crate::render::bars::{GpuBar, GpuHistory, Viewport};
-use eframe::egui::{self, Color32, Pos2, Stroke};
+use eframe::egui::{self, Color32};
 use egui_plot::{Legend, Line, Plot, PlotBounds, VLine};
-use std::sync::Arc;
 use std::time::Duration;
+
+/// A landed solve: the drawing (setup, record, run), the run without contact, the estimate.
+struct Solved {
+    drawing: BuildingDrawing,
+    baseline: BuildingResult,
+    gaps: GapAssessment,
+    estimate: Option<BuildingErrorEstimate>,
+}
 
 type Output = Result<
     (
@@ -29,17 +38,6 @@ type Output = Result<
     String,
 >;
 
-struct Solved {
-    setup: BuildingSetup,
-    motion: GroundMotion,
-    result: BuildingResult,
-    baseline: BuildingResult,
-    ground_displacement: Vec<f64>,
-    estimate: Option<BuildingErrorEstimate>,
-    gpu: Arc<GpuHistory>,
-    version: u64,
-}
-
 pub struct BuildingScene {
     pub setup: BuildingSetup,
     fields: Fields,
@@ -48,11 +46,12 @@ pub struct BuildingScene {
     pub playback: Playback,
     exaggeration: f64,
     zoom: Option<(f64, f64)>,
+    /// The level the force plot and the impact list show (`None`: all).
+    level: Option<usize>,
     pub solve_time: Duration,
     pub latency: Duration,
     pub error: Option<String>,
     motion_path: String,
-    version: u64,
     /// The view's rectangle last frame (for a screenshot of the view alone).
     pub view_rect: Option<egui::Rect>,
     shown_displacements: ShownPlot,
@@ -66,71 +65,13 @@ fn run_job(setup: BuildingSetup) -> Output {
     let baseline = solve(
         &BuildingScenario {
             contact: ContactModel::None,
-            ..setup.scenario
+            ..setup.scenario.clone()
         },
         &motion,
     )
     .map_err(|e| e.to_string())?;
     let estimate = estimate_error(&setup.scenario, &motion, &result).ok();
     Ok((motion, result, baseline, estimate))
-}
-
-/// Ground displacement by integrating the record twice (trapezoid; no baseline correction).
-fn ground_displacement(m: &GroundMotion) -> Vec<f64> {
-    let (mut v, mut d) = (0.0, 0.0);
-    let mut out = vec![0.0];
-    for w in m.accel_m_s2.windows(2) {
-        let v1 = v + 0.5 * m.dt_s * (w[0] + w[1]);
-        d += 0.5 * m.dt_s * (v + v1);
-        v = v1;
-        out.push(d);
-    }
-    out
-}
-
-/// The slabs' wave histories from the pounding force: H = F + r H(t - T) on a uniform grid,
-/// r = exp(-2 pi zeta) the attenuation per round trip of the slab damping.
-fn slab_history(sc: &BuildingScenario, r: &BuildingResult) -> GpuHistory {
-    let dt = r.stats.fine_step_s.max(1e-6);
-    let end = *r.time_s.last().unwrap_or(&0.0);
-    let n = (end / dt).ceil() as usize + 1;
-    let mut force = Vec::with_capacity(n);
-    let mut k = 0;
-    for j in 0..n {
-        let t = j as f64 * dt;
-        while k + 1 < r.time_s.len() && r.time_s[k + 1] < t {
-            k += 1;
-        }
-        let f = if k + 1 < r.time_s.len() {
-            let (t0, t1) = (r.time_s[k], r.time_s[k + 1]);
-            let s = if t1 > t0 {
-                ((t - t0) / (t1 - t0)).clamp(0.0, 1.0)
-            } else {
-                0.0
-            };
-            r.force_n[k] + s * (r.force_n[k + 1] - r.force_n[k])
-        } else {
-            0.0
-        };
-        force.push(f);
-    }
-    let decay = (-2.0 * std::f64::consts::PI * sc.slab_damping).exp();
-    let mut samples = Vec::with_capacity(2 * n);
-    let mut layout = [(0, 0, 0.0, 0.0); 2];
-    for (i, b) in [sc.left, sc.right].iter().enumerate() {
-        let lag = (b.slab_round_trip_s() / dt).round().max(1.0) as usize;
-        let offset = samples.len();
-        for j in 0..n {
-            let echo = if j >= lag {
-                samples[offset + j - lag] as f64
-            } else {
-                0.0
-            };
-            samples.push((force[j] + decay * echo) as f32);
-        }
-        layout[i] = (offset as u32, n as u32, dt as f32, end as f32);
-    }
-    GpuHistory { samples, layout }
 }
 
 impl BuildingScene {
@@ -149,11 +90,11 @@ impl BuildingScene {
             },
             exaggeration: 20.0,
             zoom: None,
+            level: None,
             solve_time: Duration::ZERO,
             latency: Duration::ZERO,
             error: None,
             motion_path: String::new(),
-            version: 0,
             view_rect: None,
             shown_displacements: ShownPlot::default(),
             shown_force: ShownPlot::default(),
@@ -179,19 +120,16 @@ impl BuildingScene {
         match done.output {
             Ok((motion, result, baseline, estimate)) => {
                 self.error = None;
-                self.version += 1;
                 self.playback.t_max = motion.duration_s();
                 self.playback.t = self.playback.t.min(self.playback.t_max);
-                let gpu = Arc::new(slab_history(&self.setup.scenario, &result));
+                if self.level.is_some_and(|l| l >= result.levels.len()) {
+                    self.level = None;
+                }
                 self.solved = Some(Solved {
-                    setup: self.setup.clone(),
-                    ground_displacement: ground_displacement(&motion),
-                    estimate,
-                    motion,
-                    result,
+                    gaps: assess(&baseline),
+                    drawing: BuildingDrawing::new(self.setup.clone(), motion, result),
                     baseline,
-                    gpu,
-                    version: self.version,
+                    estimate,
                 });
             }
             // The last result stays; the error says why the new one failed.
@@ -210,158 +148,13 @@ impl BuildingScene {
                 .collect()
         });
         if let Some(path) = dropped.first() {
-            self.motion_path = path.display().to_string();
-            self.setup.motion.file = Some(self.motion_path.clone());
-            self.request();
+            self.load_motion(path.display().to_string());
         }
     }
 
     pub fn params_ui(&mut self, ui: &mut egui::Ui) {
         let before = self.setup.clone();
-        let sc = &mut self.setup.scenario;
-        let fields = &mut self.fields;
-        for (side, b) in [("left", &mut sc.left), ("right", &mut sc.right)] {
-            egui::CollapsingHeader::new(format!("{side} building")).default_open(true).show(ui, |ui| {
-                fields.row(ui, &format!("{side}.mass"), &Spec { label: "mass", unit: "kg", tooltip: "Seismic mass: with the stiffness it sets the period", min: 1e3, max: 1e7, log: true }, &mut b.mass_kg);
-                fields.row(ui, &format!("{side}.stiffness"), &Spec { label: "stiffness", unit: "N/m", tooltip: "Storey stiffness", min: 1e5, max: 1e10, log: true }, &mut b.stiffness_n_m);
-                ui.label(format!("period {:.3} s", b.period_s()));
-                fields.row(ui, &format!("{side}.damping"), &Spec { label: "damping", unit: "", tooltip: "Viscous damping ratio of the building (5% is the design-code value for concrete)", min: 0.0, max: 0.5, log: false }, &mut b.damping_ratio);
-            });
-        }
-        egui::CollapsingHeader::new("Contact").default_open(true).show(ui, |ui| {
-            ui.horizontal_wrapped(|ui| {
-                for m in ContactModel::ALL {
-                    ui.selectable_value(&mut sc.contact, m, m.name());
-                }
-            });
-            fields.row(ui, "gap", &Spec { label: "gap", unit: "m", tooltip: "At-rest separation of the roofs", min: 0.0, max: 0.2, log: false }, &mut sc.gap_m);
-            let mut k = sc.element_stiffness();
-            if fields.row(ui, "contact.stiffness", &Spec { label: "stiffness", unit: if sc.contact.is_hertzian() { "N/m^1.5" } else { "N/m" }, tooltip: "Contact element stiffness (the paper: 15 GN/m)", min: 1e6, max: 1e14, log: true }, &mut k) {
-                sc.stiffness = Some(k);
-            }
-            fields.row(ui, "contact.restitution", &Spec { label: "restitution", unit: "", tooltip: "Target restitution of kelvin, hertzdamp, jankowski and stereo", min: 0.05, max: 1.0, log: false }, &mut sc.restitution);
-            ui.horizontal(|ui| {
-                ui.label("Sears reading");
-                ui.selectable_value(&mut sc.reading, SlabReading::Paper, "paper");
-                ui.selectable_value(&mut sc.reading, SlabReading::End, "end");
-            });
-            fields.row(ui, "slab.damping", &Spec { label: "slab damping", unit: "", tooltip: "Damping ratio of the slabs' axial waves; 0 lets them ring through the record", min: 0.0, max: 0.5, log: false }, &mut sc.slab_damping);
-            fields.row(ui, "impact.merge_gap_s", &Spec { label: "merge gap", unit: "s", tooltip: "Contacts closer than this count as one impact", min: 0.0, max: 0.5, log: false }, &mut sc.merge_gap_s);
-        });
-        egui::CollapsingHeader::new("Ground motion")
-            .default_open(true)
-            .show(ui, |ui| {
-                let m = &mut self.setup.motion;
-                let built_in = crate::io::motion::BUILT_IN;
-                let shown = match &m.file {
-                    None => "synthetic (Kanai-Tajimi)".to_string(),
-                    Some(f) => built_in
-                        .iter()
-                        .find(|b| b.name == f)
-                        .map_or_else(|| "file".to_string(), |b| b.title.to_string()),
-                };
-                ui.horizontal(|ui| {
-                    let label = ui.label("record").id;
-                    egui::ComboBox::from_id_salt("motion-record")
-                        .selected_text(shown)
-                        .show_ui(ui, |ui| {
-                            for b in built_in {
-                                if ui
-                                    .selectable_label(m.file.as_deref() == Some(b.name), b.title)
-                                    .on_hover_text(b.about)
-                                    .clicked()
-                                {
-                                    m.file = Some(b.name.to_string());
-                                }
-                            }
-                            if ui
-                                .selectable_label(m.file.is_none(), "synthetic (Kanai-Tajimi)")
-                                .on_hover_text("A seeded synthetic record: PGA and seed below")
-                                .clicked()
-                            {
-                                m.file = None;
-                            }
-                        })
-                        .response
-                        .labelled_by(label);
-                });
-                ui.horizontal(|ui| {
-                    let label = ui.label("file").id;
-                    ui.add(
-                        egui::TextEdit::singleline(&mut self.motion_path)
-                            .hint_text(".AT2 or text file (or drop one here)")
-                            .desired_width(170.0),
-                    )
-                    .labelled_by(label);
-                    if ui.button("Load").clicked() && !self.motion_path.trim().is_empty() {
-                        m.file = Some(self.motion_path.trim().to_string());
-                    }
-                });
-                let mut scale = m.scale;
-                if fields.row(
-                    ui,
-                    "motion.scale",
-                    &Spec {
-                        label: "scale",
-                        unit: "x",
-                        tooltip: "Factor on the record; negative flips it",
-                        min: -5.0,
-                        max: 5.0,
-                        log: false,
-                    },
-                    &mut scale,
-                ) && scale != 0.0
-                {
-                    m.scale = scale;
-                }
-                let mut duration = m.duration_s.unwrap_or(0.0);
-                if fields.row(
-                    ui,
-                    "motion.duration",
-                    &Spec {
-                        label: "duration",
-                        unit: "s",
-                        tooltip: "Use only the first seconds of the record (0: all)",
-                        min: 0.0,
-                        max: 120.0,
-                        log: false,
-                    },
-                    &mut duration,
-                ) {
-                    m.duration_s = (duration > 0.0).then_some(duration);
-                }
-                if m.file.is_none() {
-                    fields.row(
-                        ui,
-                        "motion.pga",
-                        &Spec {
-                            label: "PGA",
-                            unit: "g",
-                            tooltip: "Peak ground acceleration of the synthetic record",
-                            min: 0.01,
-                            max: 2.0,
-                            log: false,
-                        },
-                        &mut m.synthetic.pga_g,
-                    );
-                    let mut seed = m.synthetic.seed as f64;
-                    if fields.row(
-                        ui,
-                        "motion.seed",
-                        &Spec {
-                            label: "seed",
-                            unit: "",
-                            tooltip: "Another seed, another record of the same kind",
-                            min: 0.0,
-                            max: 1e6,
-                            log: false,
-                        },
-                        &mut seed,
-                    ) {
-                        m.synthetic.seed = seed.round() as u64;
-                    }
-                }
-            });
+        super::building_params::ui(ui, &mut self.fields, &mut self.setup, &mut self.motion_path);
         if self.setup != before {
             self.request();
         }
@@ -392,22 +185,32 @@ impl BuildingScene {
             ui.label("solving...");
             return;
         };
-        let stats = s.motion.stats();
+        let d = &s.drawing;
+        let stats = d.motion.stats();
         ui.label(format!(
             "{}: {:.2} s at {} s, PGA {:.3} g, PGV {:.3} m/s, Arias {:.2} m/s, 5% spectrum peaks at {:.2} s",
-            s.motion.name,
+            d.motion.name,
             stats.duration_s,
-            s.motion.dt_s,
+            d.motion.dt_s,
             stats.pga_m_s2 / G,
             stats.pgv_m_s,
             stats.arias_m_s,
             stats.predominant_period_s
         ));
+        let tall = d
+            .setup
+            .scenario
+            .left
+            .storeys
+            .max(d.setup.scenario.right.storeys);
         let (rect, _) = ui.allocate_exact_size(
-            egui::vec2(ui.available_width(), 230.0),
+            egui::vec2(
+                ui.available_width(),
+                (200.0 + 25.0 * tall as f32).min(420.0),
+            ),
             egui::Sense::hover(),
         );
-        draw_buildings(ui, rect, s, self.playback.t, self.exaggeration);
+        building_view::draw(ui, rect, d, self.playback.t, self.exaggeration);
         self.view_rect = Some(rect);
         ui.horizontal(|ui| {
             let label = ui
@@ -418,9 +221,9 @@ impl BuildingScene {
                 .labelled_by(label);
         });
         self.playback.ui(ui);
-        let r = &s.result;
+        let r = &d.result;
         ui.label(format!(
-            "{} impacts ({} contacts), max force {:.4e} N, peak displacement left {:.2} mm (without pounding {:.2}), right {:.2} mm ({:.2}); solve {}",
+            "{} impacts ({} contacts), max force {:.4e} N, peak roof displacement left {:.2} mm (without pounding {:.2}), right {:.2} mm ({:.2}); solve {}",
             r.impacts.len(),
             r.contacts.len(),
             r.max_pounding_force_n,
@@ -432,37 +235,45 @@ impl BuildingScene {
         ));
         if let Some(e) = &s.estimate {
             ui.label(format!(
-                "error estimate (step doubling): max force {:.1e}, peak displacement {:.1e} (relative), impact count {:+} with twice the step",
-                e.max_force, e.peak_displacement, e.impact_count_change
-            ));
+                "error bound (against a twice finer run): max force {:.1e}, peak displacement {:.1e}, impact times {:.1e} (relative), impact count {:+}",
+                e.max_force, e.peak_displacement, e.impact_time, e.impact_count_change
+            )).on_hover_text("Twice the difference from the same run with every discretisation parameter halved: a bound on the error wherever the steps converge at order 1 or more");
         }
+        gap_ui(ui, &s.gaps, d.setup.scenario.gap_m, r.levels.len());
+        self.plots_ui(ui, exporter);
+        for w in &self.solved.as_ref().expect("shown").drawing.result.warnings {
+            ui.colored_label(Color32::from_rgb(220, 140, 40), format!("warning: {w}"));
+        }
+    }
+
+    fn plots_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
+        let Some(s) = &self.solved else { return };
+        let r = &s.drawing.result;
         let t = self.playback.t;
         let h = 170.0;
-        let pts =
-            |time: &[f64], y: &[f64], scale: f64| -> Vec<[f64; 2]> { decimate(time, y, scale) };
         let disp_lines = vec![
             (
                 "left".to_string(),
-                pts(&r.time_s, &r.displacement_m[0], 1e3),
+                decimate(&r.time_s, &r.displacement_m[0], 1e3),
             ),
             (
                 "right".to_string(),
-                pts(&r.time_s, &r.displacement_m[1], 1e3),
+                decimate(&r.time_s, &r.displacement_m[1], 1e3),
             ),
             (
                 "left, no pounding".to_string(),
-                pts(&s.baseline.time_s, &s.baseline.displacement_m[0], 1e3),
+                decimate(&s.baseline.time_s, &s.baseline.displacement_m[0], 1e3),
             ),
             (
                 "right, no pounding".to_string(),
-                pts(&s.baseline.time_s, &s.baseline.displacement_m[1], 1e3),
+                decimate(&s.baseline.time_s, &s.baseline.displacement_m[1], 1e3),
             ),
         ];
         let disp_plot = Plot::new("b-disp")
             .height(h)
             .legend(Legend::default())
             .x_axis_label("time [s]")
-            .y_axis_label("displacement [mm]")
+            .y_axis_label("roof displacement [mm]")
             .show(ui, |p| {
                 for (i, (name, line)) in disp_lines.iter().enumerate() {
                     let l = Line::new(name.as_str(), line.clone());
@@ -478,37 +289,75 @@ impl BuildingScene {
         self.shown_displacements = ShownPlot {
             title: "Roof displacements with and without pounding".into(),
             x_label: "time [s]".into(),
-            y_label: "displacement [mm]".into(),
+            y_label: "roof displacement [mm]".into(),
             series: disp_lines,
             bounds: Some((b.min(), b.max())),
         };
         exporter.buttons(ui, &self.shown_displacements, "displacements");
+        if r.levels.len() > 1 {
+            ui.horizontal(|ui| {
+                let label = ui
+                    .label("level")
+                    .on_hover_text("The level the force plot and the impact list show")
+                    .id;
+                let shown = self.level.map_or("all levels".to_string(), |l| {
+                    format!("{} ({:.2} m)", l + 1, r.levels[l].elevation_m)
+                });
+                egui::ComboBox::from_id_salt("b-level")
+                    .selected_text(shown)
+                    .show_ui(ui, |ui| {
+                        ui.selectable_value(&mut self.level, None, "all levels");
+                        for (i, l) in r.levels.iter().enumerate() {
+                            ui.selectable_value(
+                                &mut self.level,
+                                Some(i),
+                                format!("{} ({:.2} m, {})", i + 1, l.elevation_m, l.kind.name()),
+                            );
+                        }
+                    })
+                    .response
+                    .labelled_by(label);
+            });
+        }
         let zoom = self.zoom.take();
-        let force_pts = pts(&r.time_s, &r.force_n, 1e-6);
+        let (force, name) = match self.level {
+            Some(l) => (&r.level_force_n[l], format!("level {}", l + 1)),
+            None => (&r.force_n, "force".to_string()),
+        };
+        let force_pts = decimate(&r.time_s, force, 1e-6);
+        let top = force.iter().cloned().fold(0.0, f64::max).max(1.0);
         let force_plot = Plot::new("b-force")
             .height(h)
             .legend(Legend::default())
             .x_axis_label("time [s]")
             .y_axis_label("pounding force [MN]")
             .show(ui, |p| {
-                p.line(Line::new("force", force_pts.clone()).allow_band(false));
+                p.line(Line::new(name.as_str(), force_pts.clone()).allow_band(false));
                 p.vline(VLine::new("t", t));
                 if let Some((a, b)) = zoom {
                     p.set_plot_bounds(PlotBounds::from_min_max(
-                        [a, -0.05 * r.max_pounding_force_n * 1e-6],
-                        [b, 1.1 * r.max_pounding_force_n * 1e-6],
+                        [a, -0.05 * top * 1e-6],
+                        [b, 1.1 * top * 1e-6],
                     ));
                 }
             });
         let b = force_plot.transform.bounds();
         self.shown_force = ShownPlot {
-            title: format!("Pounding force: {} contact", r.contact.name()),
+            title: format!(
+                "Pounding force: {} contact{}",
+                r.contact.name(),
+                self.level
+                    .map_or(String::new(), |l| format!(", level {}", l + 1))
+            ),
             x_label: "time [s]".into(),
             y_label: "pounding force [MN]".into(),
-            series: vec![("force".into(), force_pts)],
+            series: vec![(name, force_pts)],
             bounds: Some((b.min(), b.max())),
         };
         exporter.buttons(ui, &self.shown_force, "force");
+        let shown: Vec<usize> = (0..r.impacts.len())
+            .filter(|&i| self.level.is_none_or(|l| r.impacts[i].level == l))
+            .collect();
         ui.label("impacts (click one here or in the force plot to zoom on it):");
         let mut clicked = None;
         // A click in the force plot picks the impact nearest in time.
@@ -516,20 +365,15 @@ impl BuildingScene {
             && let Some(pos) = force_plot.response.interact_pointer_pos()
         {
             let at = force_plot.transform.value_from_position(pos).x;
-            clicked = r
-                .impacts
-                .iter()
-                .enumerate()
-                .min_by(|a, b| {
-                    (a.1.start_s - at)
-                        .abs()
-                        .total_cmp(&(b.1.start_s - at).abs())
-                })
-                .map(|(i, _)| i);
+            clicked = shown.iter().copied().min_by(|&a, &b| {
+                (r.impacts[a].start_s - at)
+                    .abs()
+                    .total_cmp(&(r.impacts[b].start_s - at).abs())
+            });
         }
         egui::Grid::new("impacts")
             .striped(true)
-            .num_columns(6)
+            .num_columns(8)
             .show(ui, |ui| {
                 for h in [
                     "#",
@@ -539,11 +383,13 @@ impl BuildingScene {
                     "impulse [N s]",
                     "approach [m/s]",
                     "contacts",
+                    "level",
                 ] {
                     ui.strong(h);
                 }
                 ui.end_row();
-                for (i, e) in r.impacts.iter().enumerate() {
+                for &i in &shown {
+                    let e = &r.impacts[i];
                     if ui.button(format!("{}", i + 1)).clicked() {
                         clicked = Some(i);
                     }
@@ -553,6 +399,7 @@ impl BuildingScene {
                     ui.label(format!("{:.4e}", e.impulse_ns));
                     ui.label(format!("{:.4}", e.approach_velocity_m_s));
                     ui.label(format!("{}", e.contacts.len()));
+                    ui.label(format!("{}", e.level + 1));
                     ui.end_row();
                 }
             });
@@ -564,157 +411,35 @@ impl BuildingScene {
             self.playback.playing = false;
             self.playback.speed = 1e-3;
         }
-        for w in &r.warnings {
-            ui.colored_label(Color32::from_rgb(220, 140, 40), format!("warning: {w}"));
-        }
     }
 }
 
-fn sample(time: &[f64], y: &[f64], t: f64) -> f64 {
-    let k = time.partition_point(|&x| x <= t);
-    if k == 0 {
-        return y.first().copied().unwrap_or(0.0);
-    }
-    if k >= time.len() {
-        return y.last().copied().unwrap_or(0.0);
-    }
-    let (t0, t1) = (time[k - 1], time[k]);
-    let s = if t1 > t0 { (t - t0) / (t1 - t0) } else { 0.0 };
-    y[k - 1] + s * (y[k] - y[k - 1])
-}
-
-fn draw_buildings(ui: &mut egui::Ui, rect: egui::Rect, s: &Solved, t: f64, exaggeration: f64) {
-    let sc = &s.setup.scenario;
-    let r = &s.result;
-    let (l1, l2) = (sc.left.slab.length_m, sc.right.slab.length_m);
-    let height = sc.left.storey_height_m.max(sc.right.storey_height_m);
-    // World: metres, the at-rest gap centred at x = 0, the ground at y = 0.
-    let gap_world = (sc.gap_m * exaggeration).max(0.05);
-    let (left, right) = (-l1 - gap_world - 2.0, l2 + gap_world + 2.0);
-    let (bottom, top) = (-1.0f32, (height * 1.6) as f32);
-    let aspect = rect.width() / rect.height();
-    let span = (right - left) as f32;
-    let (bottom, top) = if span / (top - bottom) < aspect {
-        (bottom, top)
-    } else {
-        let h = span / aspect;
-        (bottom, bottom + h)
-    };
-    let xg = sample(
-        &(0..s.ground_displacement.len())
-            .map(|i| i as f64 * s.motion.dt_s)
-            .collect::<Vec<_>>(),
-        &s.ground_displacement,
-        t,
-    );
-    let u = [
-        sample(&r.time_s, &r.displacement_m[0], t),
-        sample(&r.time_s, &r.displacement_m[1], t),
-    ];
-    let roof = [
-        -0.5 * gap_world + u[0] * exaggeration,
-        0.5 * gap_world + u[1] * exaggeration,
-    ];
-    let base = [-0.5 * gap_world, 0.5 * gap_world];
-    let slab_t = 0.4f32;
-    let mut bars = [GpuBar::default(); 2];
-    let force_scale = r.max_pounding_force_n.max(1.0);
-    for (i, b) in [sc.left, sc.right].iter().enumerate() {
-        let (offset, count, dt, end) = s.gpu.layout[i];
-        bars[i] = GpuBar {
-            origin_x: (roof[i] + xg) as f32,
-            direction: if i == 0 { -1.0 } else { 1.0 },
-            body_length: b.slab.length_m as f32,
-            zone_length: 0.0,
-            wave_speed: b.slab_wave_speed_m_s() as f32,
-            round_trip: b.slab_round_trip_s() as f32,
-            dt,
-            end_time: end,
-            offset,
-            count,
-            inv_area: (1.0 / b.slab.area_m2()) as f32,
-            inv_stress_scale: (b.slab.area_m2() / force_scale) as f32,
-            y_bottom: height as f32 - slab_t,
-            y_top: height as f32,
-            world_per_metre: 1.0,
-            _pad: 0.0,
-        };
-    }
-    let vp = Viewport {
-        rect,
-        left,
-        right,
-        bottom: bottom as f64,
-        top: top as f64,
-    };
-    let world = [vp.left, vp.right, vp.bottom, vp.top];
-    vp.paint_bars(
-        ui,
-        crate::render::bars::uniforms(world, t, bars),
-        s.gpu.clone(),
-        s.version,
-    );
-    let to_screen = |x: f64, y: f64| vp.to_screen(x, y);
-    let painter = ui.painter_at(rect);
-    let text = ui.visuals().text_color();
-    let column = Stroke::new(
-        3.0,
-        if ui.visuals().dark_mode {
-            Color32::from_gray(170)
+/// The gap that avoids pounding for this record, against the code rules.
+fn gap_ui(ui: &mut egui::Ui, g: &GapAssessment, gap_m: f64, levels: usize) {
+    ui.horizontal_wrapped(|ui| {
+        ui.strong("gap that avoids pounding:")
+            .on_hover_text("From the run without contact: the largest closing motion at any level over the record. ABS and SRSS combine the two buildings' peak displacements at each level, as design codes do");
+        if g.min_gap_m > 0.0 {
+            ui.label(format!(
+                "{:.2} mm{} (now {:.2} mm: {}); ABS {:.2} mm ({:.2}x), SRSS {:.2} mm ({:.2}x)",
+                g.min_gap_m * 1e3,
+                match (g.level, levels > 1) {
+                    (Some(l), true) => format!(" at level {}", l + 1),
+                    _ => String::new(),
+                },
+                gap_m * 1e3,
+                if gap_m >= g.min_gap_m {
+                    "no pounding"
+                } else {
+                    "they pound"
+                },
+                g.abs_m * 1e3,
+                g.abs_ratio,
+                g.srss_m * 1e3,
+                g.srss_ratio
+            ));
         } else {
-            Color32::from_gray(80)
-        },
-    );
-    // Ground, moving with the record (drawn to scale).
-    painter.line_segment(
-        [to_screen(left, 0.0), to_screen(right, 0.0)],
-        Stroke::new(2.0, Color32::from_rgb(140, 110, 70)),
-    );
-    for k in 0..24 {
-        let x = left + (right - left) * k as f64 / 24.0 + xg;
-        painter.line_segment(
-            [to_screen(x, 0.0), to_screen(x - 0.4, -0.4)],
-            Stroke::new(1.0, Color32::from_rgb(140, 110, 70)),
-        );
-    }
-    for i in 0..2 {
-        let dir = if i == 0 { -1.0 } else { 1.0 };
-        let len = if i == 0 { l1 } else { l2 };
-        for frac in [0.05, 0.95] {
-            let x0 = base[i] + dir * frac * len + xg;
-            let x1 = roof[i] + dir * frac * len + xg;
-            painter.line_segment(
-                [to_screen(x0, 0.0), to_screen(x1, height - slab_t as f64)],
-                column,
-            );
+            ui.label("the buildings never close on each other in this record");
         }
-        painter.text(
-            to_screen(base[i] + dir * 0.5 * len + xg, height + 0.6),
-            egui::Align2::CENTER_BOTTOM,
-            format!(
-                "{} building: {:+.2} mm",
-                if i == 0 { "left" } else { "right" },
-                u[i] * 1e3
-            ),
-            egui::FontId::proportional(13.0),
-            text,
-        );
-    }
-    let f = sample(&r.time_s, &r.force_n, t);
-    if f > 0.0 {
-        painter.text(
-            to_screen(0.0, height + 1.6),
-            egui::Align2::CENTER_BOTTOM,
-            format!("pounding: {:.3e} N", f),
-            egui::FontId::proportional(14.0),
-            Color32::from_rgb(220, 60, 50),
-        );
-    }
-    painter.text(
-        Pos2::new(rect.right() - 8.0, rect.top() + 6.0),
-        egui::Align2::RIGHT_TOP,
-        format!("t = {t:.4} s, drift x{exaggeration:.0}, ground to scale"),
-        egui::FontId::proportional(12.0),
-        text,
-    );
+    });
 }

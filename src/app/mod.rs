@@ -4,7 +4,9 @@
 mod background;
 mod bar_scene;
 mod bar_view;
+mod building_params;
 mod building_scene;
+mod building_view;
 mod dialog;
 mod export;
 mod impact_params;

@@ -24,6 +24,18 @@ pub struct Fields {
 impl Fields {
     /// Shows one row; returns whether the value changed.
     pub fn row(&mut self, ui: &mut egui::Ui, id: &str, spec: &Spec, value: &mut f64) -> bool {
+        self.row_typed(ui, id, spec, (spec.min, spec.max), value)
+    }
+
+    /// A row whose typed values may go beyond the slider's range, to `typed`.
+    pub fn row_typed(
+        &mut self,
+        ui: &mut egui::Ui,
+        id: &str,
+        spec: &Spec,
+        typed: (f64, f64),
+        value: &mut f64,
+    ) -> bool {
         let mut changed = false;
         ui.horizontal(|ui| {
             // The label names the slider and the field for screen readers too.
@@ -65,7 +77,7 @@ impl Fields {
                 || (response.has_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)));
             if commit {
                 match shown.trim().parse::<f64>() {
-                    Ok(x) if x.is_finite() && x >= spec.min && x <= spec.max => {
+                    Ok(x) if x.is_finite() && x >= typed.0 && x <= typed.1 => {
                         if x != *value {
                             *value = x;
                             changed = true;
@@ -78,8 +90,8 @@ impl Fields {
                             format!(
                                 "'{}' refused: allowed {} to {} {}",
                                 shown.trim(),
-                                format_value(spec.min),
-                                format_value(spec.max),
+                                format_value(typed.0),
+                                format_value(typed.1),
                                 spec.unit
                             ),
                         );

@@ -185,11 +185,13 @@ pub fn building_ladders(
 ) -> anyhow::Result<Vec<Rung>> {
     let mut rows = vec![];
     for model in [ContactModel::Sears, ContactModel::Linear] {
+        // Every discretisation parameter with the steps per contact time scale: the grid on
+        // which onsets are sought and peaks sampled follows the tolerance.
         let at = |sps: f64| BuildingScenario {
             contact: model,
-            steps_per_scale: sps,
-            max_step_s: 0.005 * 8.0 / sps.max(8.0),
-            ..setup.scenario
+            steps_per_scale: Some(sps),
+            tolerance: (1e-3 * (8.0 / sps).powi(2)).min(0.1),
+            ..setup.scenario.clone()
         };
         let reference = pounding::model::building::solve(&at(128.0), motion)?;
         let mut prev: Option<Rung> = None;

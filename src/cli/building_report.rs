@@ -1,13 +1,17 @@
 //! What `pounding buildings` prints: a readable summary and a JSON report.
 
 use pounding::io::building_settings::BuildingSetup;
-use pounding::model::building::{BuildingErrorEstimate, BuildingResult, ContactModel};
+use pounding::model::building::{
+    Building, BuildingErrorEstimate, BuildingResult, ContactModel, Level, SlabReading,
+};
 use pounding::model::motion::{G, GroundMotion};
 use serde::Serialize;
 use std::fmt::Write;
 
 #[derive(Serialize)]
 pub struct ImpactJson {
+    /// The level it happened at (an index into `levels`).
+    pub level: usize,
     pub start_s: f64,
     pub end_s: f64,
     pub duration_s: f64,
@@ -21,11 +25,27 @@ pub struct ImpactJson {
 
 #[derive(Serialize)]
 pub struct ContactJson {
+    pub level: usize,
     pub start_s: f64,
     pub end_s: f64,
     pub peak_force_n: f64,
     pub impulse_ns: f64,
     pub approach_velocity_m_s: f64,
+}
+
+#[derive(Serialize)]
+pub struct LevelJson {
+    pub elevation_m: f64,
+    /// floor-floor or floor-column.
+    pub kind: &'static str,
+    /// Floors involved on each side, counted from 1 (0 is the ground): one floor, or the two
+    /// floors a column point lies between.
+    pub left_floors: Vec<usize>,
+    pub right_floors: Vec<usize>,
+    /// Where a column point lies between its floors (0 at the lower), if it is one.
+    pub left_column_fraction: Option<f64>,
+    pub right_column_fraction: Option<f64>,
+    pub stiffness: f64,
 }
 
 #[derive(Serialize)]
@@ -43,13 +63,20 @@ pub struct MotionJson {
     pub peak_spectral_accel_m_s2: f64,
 }
 
-/// The `--json` object of `pounding buildings`; names carry SI units and are an interface.
+/// The `--json` object of `pounding buildings`; names carry SI units and are an interface. The
+/// single-valued displacement fields are the roofs'; impacts and contacts carry their level.
 #[derive(Serialize)]
 pub struct BuildingReport {
     pub preset: String,
     pub contact_model: &'static str,
     pub motion: MotionJson,
-    /// Impact events (raw contacts merged when closer than `merge_gap_s`).
+    pub storeys_left: usize,
+    pub storeys_right: usize,
+    /// Every mode's period, longest first.
+    pub periods_left_s: Vec<f64>,
+    pub periods_right_s: Vec<f64>,
+    pub levels: Vec<LevelJson>,
+    /// Impact events (raw contacts at one level merged when closer than `merge_gap_s`).
     pub impacts: Vec<ImpactJson>,
     /// Raw contact intervals.
     pub contacts: Vec<ContactJson>,
@@ -57,11 +84,21 @@ pub struct BuildingReport {
     pub contact_count: usize,
     pub merge_gap_s: f64,
     pub max_pounding_force_n: f64,
+    pub max_force_by_level_n: Vec<f64>,
     pub strongest_impact: Option<usize>,
     pub peak_displacement_left_m: f64,
     pub peak_displacement_right_m: f64,
     pub peak_displacement_left_no_pounding_m: f64,
     pub peak_displacement_right_no_pounding_m: f64,
+    pub peak_floor_displacements_left_m: Vec<f64>,
+    pub peak_floor_displacements_right_m: Vec<f64>,
+    pub peak_floor_displacements_left_no_pounding_m: Vec<f64>,
+    pub peak_floor_displacements_right_no_pounding_m: Vec<f64>,
+    pub peak_drift_ratios_left: Vec<f64>,
+    pub peak_drift_ratios_right: Vec<f64>,
+    pub peak_drift_ratios_left_no_pounding: Vec<f64>,
+    pub peak_drift_ratios_right_no_pounding: Vec<f64>,
+    pub energy_initial_j: f64,
     pub energy_input_j: f64,
     pub energy_building_damping_j: f64,
     pub energy_to_contact_j: f64,
@@ -70,9 +107,11 @@ pub struct BuildingReport {
     pub contact_steps: usize,
     pub fine_step_s: f64,
     pub coarse_step_s: f64,
+    pub steps_per_scale: f64,
+    pub tolerance: f64,
     pub solve_time_s: f64,
-    /// Step-doubling estimate: relative errors of the max force and the peak displacements, and
-    /// the change of the impact count with twice the step.
+    /// Bounds on the relative errors, from the same run with every discretisation parameter
+    /// refined twofold (twice the difference); the change in the impact count.
     pub error_estimate: Option<BuildingErrorJson>,
     pub warnings: Vec<String>,
 }
@@ -81,18 +120,32 @@ pub struct BuildingReport {
 pub struct BuildingErrorJson {
     pub max_force_rel: f64,
     pub peak_displacement_rel: f64,
+    pub impact_time_rel: f64,
     pub impact_count_change: i64,
     pub estimate_time_s: f64,
 }
 
-fn balance_error(r: &BuildingResult) -> f64 {
-    let e = &r.energy;
-    let residual = e.input_j - e.building_damping_j - e.contact_j - e.final_j - e.stored_contact_j;
-    if e.input_j.abs() > 0.0 {
-        residual / e.input_j.abs()
-    } else {
-        0.0
+fn level_json(setup: &BuildingSetup, l: &Level) -> LevelJson {
+    let fraction = |a: &pounding::model::building::Attachment| match a {
+        pounding::model::building::Attachment::Column { s, .. } => Some(*s),
+        _ => None,
+    };
+    LevelJson {
+        elevation_m: l.elevation_m,
+        kind: l.kind.name(),
+        left_floors: l.left.floors_1_based(),
+        right_floors: l.right.floors_1_based(),
+        left_column_fraction: fraction(&l.left),
+        right_column_fraction: fraction(&l.right),
+        stiffness: setup.scenario.level_stiffness(l),
     }
+}
+
+fn strongest(r: &BuildingResult) -> Option<(usize, &pounding::model::building::ImpactEvent)> {
+    r.impacts
+        .iter()
+        .enumerate()
+        .max_by(|a, b| a.1.peak_force_n.total_cmp(&b.1.peak_force_n))
 }
 
 impl BuildingReport {
@@ -105,12 +158,7 @@ impl BuildingReport {
         est: Option<&BuildingErrorEstimate>,
     ) -> Self {
         let s = motion.stats();
-        let strongest = r
-            .impacts
-            .iter()
-            .enumerate()
-            .max_by(|a, b| a.1.peak_force_n.total_cmp(&b.1.peak_force_n))
-            .map(|(i, _)| i + 1);
+        let sc = &setup.scenario;
         BuildingReport {
             preset: preset.to_string(),
             contact_model: r.contact.name(),
@@ -127,10 +175,16 @@ impl BuildingReport {
                 predominant_period_s: s.predominant_period_s,
                 peak_spectral_accel_m_s2: s.peak_spectral_accel_m_s2,
             },
+            storeys_left: sc.left.storeys,
+            storeys_right: sc.right.storeys,
+            periods_left_s: r.modes[0].periods_s(),
+            periods_right_s: r.modes[1].periods_s(),
+            levels: r.levels.iter().map(|l| level_json(setup, l)).collect(),
             impacts: r
                 .impacts
                 .iter()
                 .map(|e| ImpactJson {
+                    level: e.level,
                     start_s: e.start_s,
                     end_s: e.end_s,
                     duration_s: e.duration_s(),
@@ -138,13 +192,14 @@ impl BuildingReport {
                     impulse_ns: e.impulse_ns,
                     approach_velocity_m_s: e.approach_velocity_m_s,
                     contacts: e.contacts.len(),
-                    first_contact: e.contacts.start,
+                    first_contact: e.contacts[0],
                 })
                 .collect(),
             contacts: r
                 .contacts
                 .iter()
                 .map(|c| ContactJson {
+                    level: c.level,
                     start_s: c.start_s,
                     end_s: c.end_s,
                     peak_force_n: c.peak_force_n,
@@ -154,31 +209,81 @@ impl BuildingReport {
                 .collect(),
             impact_count: r.impacts.len(),
             contact_count: r.contacts.len(),
-            merge_gap_s: setup.scenario.merge_gap_s,
+            merge_gap_s: sc.merge_gap_s,
             max_pounding_force_n: r.max_pounding_force_n,
-            strongest_impact: strongest,
+            max_force_by_level_n: r.max_force_by_level_n.clone(),
+            strongest_impact: strongest(r).map(|(i, _)| i + 1),
             peak_displacement_left_m: r.peak_displacement_m[0],
             peak_displacement_right_m: r.peak_displacement_m[1],
             peak_displacement_left_no_pounding_m: baseline.peak_displacement_m[0],
             peak_displacement_right_no_pounding_m: baseline.peak_displacement_m[1],
+            peak_floor_displacements_left_m: r.peak_floor_displacement_m[0].clone(),
+            peak_floor_displacements_right_m: r.peak_floor_displacement_m[1].clone(),
+            peak_floor_displacements_left_no_pounding_m: baseline.peak_floor_displacement_m[0]
+                .clone(),
+            peak_floor_displacements_right_no_pounding_m: baseline.peak_floor_displacement_m[1]
+                .clone(),
+            peak_drift_ratios_left: r.peak_drift_ratio[0].clone(),
+            peak_drift_ratios_right: r.peak_drift_ratio[1].clone(),
+            peak_drift_ratios_left_no_pounding: baseline.peak_drift_ratio[0].clone(),
+            peak_drift_ratios_right_no_pounding: baseline.peak_drift_ratio[1].clone(),
+            energy_initial_j: r.energy.initial_j,
             energy_input_j: r.energy.input_j,
             energy_building_damping_j: r.energy.building_damping_j,
             energy_to_contact_j: r.energy.contact_j,
-            energy_balance_error: balance_error(r),
+            energy_balance_error: r.energy.balance_error(),
             steps: r.stats.steps,
             contact_steps: r.stats.contact_steps,
             fine_step_s: r.stats.fine_step_s,
             coarse_step_s: r.stats.coarse_step_s,
+            steps_per_scale: r.stats.steps_per_scale,
+            tolerance: sc.tolerance,
             solve_time_s: r.stats.wall_time_s,
             error_estimate: est.map(|e| BuildingErrorJson {
                 max_force_rel: e.max_force,
                 peak_displacement_rel: e.peak_displacement,
+                impact_time_rel: e.impact_time,
                 impact_count_change: e.impact_count_change,
                 estimate_time_s: e.wall_time_s,
             }),
-            warnings: r.warnings.clone(),
+            warnings: r.warnings.iter().map(|w| w.to_string()).collect(),
         }
     }
+}
+
+/// A list of values for a summary line: one value once, several joined.
+fn values(v: &[f64], scale: f64, decimals: usize) -> String {
+    let shown: Vec<String> = v
+        .iter()
+        .map(|x| format!("{:.*}", decimals, x * scale))
+        .collect();
+    if shown.iter().all(|s| *s == shown[0]) && shown.len() > 1 {
+        format!("{} x {}", shown.len(), shown[0])
+    } else {
+        shown.join(", ")
+    }
+}
+
+fn building_line(name: &str, b: &Building, r: &BuildingResult, side: usize) -> String {
+    let roof = b.storeys - 1;
+    let slab = b.slab(roof);
+    let periods = r.modes[side].periods_s();
+    format!(
+        "  {name}: {} storey{}, m = {} kg, k = {} N/m, h = {} m, T = {} s, damping {:.1}%, roof slab {} x {} x {} m (E = {:.3e} Pa, c = {:.0} m/s, round trip {:.2} ms)",
+        b.storeys,
+        if b.storeys == 1 { "" } else { "s" },
+        values(&b.masses_kg, 1.0, 0),
+        values(&b.stiffnesses_n_m, 1.0, 0),
+        values(&b.heights_m, 1.0, 2),
+        values(&periods, 1.0, 3),
+        100.0 * b.damping_ratio,
+        slab.length_m,
+        slab.width_m,
+        slab.thickness_m,
+        slab.youngs_modulus_pa,
+        slab.wave_speed_m_s(b.mass(roof)),
+        1e3 * slab.round_trip_s(b.mass(roof))
+    )
 }
 
 pub fn summary(
@@ -212,22 +317,8 @@ pub fn summary(
         s.predominant_period_s,
         s.peak_spectral_accel_m_s2 / G
     );
-    for (name, b) in [("left ", &sc.left), ("right", &sc.right)] {
-        let _ = writeln!(
-            o,
-            "  {name}: m = {} kg, k = {:.4e} N/m, T = {:.3} s, damping {:.1}%, slab {} x {} x {} m (E = {:.3e} Pa, c = {:.0} m/s, round trip {:.2} ms)",
-            b.mass_kg,
-            b.stiffness_n_m,
-            b.period_s(),
-            100.0 * b.damping_ratio,
-            b.slab.length_m,
-            b.slab.width_m,
-            b.slab.thickness_m,
-            b.slab.youngs_modulus_pa,
-            b.slab_wave_speed_m_s(),
-            1e3 * b.slab_round_trip_s()
-        );
-    }
+    let _ = writeln!(o, "{}", building_line("left ", &sc.left, r, 0));
+    let _ = writeln!(o, "{}", building_line("right", &sc.right, r, 1));
     let mut contact = format!(
         "  contact: gap {} m, stiffness {:.4e}",
         sc.gap_m,
@@ -237,7 +328,7 @@ pub fn summary(
         let _ = write!(
             contact,
             ", {} reading, zone d = {} m, slab damping {:.1}%",
-            if sc.reading == pounding::model::building::SlabReading::Paper {
+            if sc.reading == SlabReading::Paper {
                 "paper"
             } else {
                 "end"
@@ -256,6 +347,20 @@ pub fn summary(
         let _ = write!(contact, ", restitution {}", sc.restitution);
     }
     let _ = writeln!(o, "{contact}");
+    if r.levels.len() > 1 {
+        let _ = writeln!(o, "  levels");
+        for (i, l) in r.levels.iter().enumerate() {
+            let _ = writeln!(
+                o,
+                "    {:2}  {:7.3} m  {:12}  left floors {:?}, right floors {:?}",
+                i + 1,
+                l.elevation_m,
+                l.kind.name(),
+                l.left.floors_1_based(),
+                l.right.floors_1_based()
+            );
+        }
+    }
     let _ = writeln!(o, "results");
     let _ = writeln!(
         o,
@@ -264,74 +369,106 @@ pub fn summary(
         r.contacts.len(),
         sc.merge_gap_s
     );
-    let strongest = r
-        .impacts
-        .iter()
-        .enumerate()
-        .max_by(|a, b| a.1.peak_force_n.total_cmp(&b.1.peak_force_n));
-    if let Some((i, e)) = strongest {
+    if let Some((i, e)) = strongest(r) {
         let _ = writeln!(
             o,
-            "  max pounding force  {:.4e} N (impact {} of {}, at {:.3} s)",
+            "  max pounding force  {:.4e} N (impact {} of {}, at {:.3} s{})",
             r.max_pounding_force_n,
             i + 1,
             r.impacts.len(),
-            e.start_s
+            e.start_s,
+            if r.levels.len() > 1 {
+                format!(", level {}", e.level + 1)
+            } else {
+                String::new()
+            }
         );
     }
     let _ = writeln!(
         o,
-        "  peak displacement   left {:.5} m (without pounding {:.5} m), right {:.5} m (without pounding {:.5} m)",
+        "  peak displacement   left {:.5} m (without pounding {:.5} m), right {:.5} m (without pounding {:.5} m){}",
         r.peak_displacement_m[0],
         baseline.peak_displacement_m[0],
         r.peak_displacement_m[1],
-        baseline.peak_displacement_m[1]
+        baseline.peak_displacement_m[1],
+        if sc.left.storeys > 1 || sc.right.storeys > 1 {
+            " (roofs)"
+        } else {
+            ""
+        }
     );
+    if sc.left.storeys > 1 || sc.right.storeys > 1 {
+        for (side, name) in [(0, "left "), (1, "right")] {
+            let _ = writeln!(
+                o,
+                "  {name} floors        peak {} mm (without pounding {}); drift ratio {} (without {})",
+                values(&r.peak_floor_displacement_m[side], 1e3, 2),
+                values(&baseline.peak_floor_displacement_m[side], 1e3, 2),
+                values(&r.peak_drift_ratio[side], 1.0, 5),
+                values(&baseline.peak_drift_ratio[side], 1.0, 5),
+            );
+        }
+    }
     let e = &r.energy;
+    let initial = if e.initial_j > 0.0 {
+        format!("initial {:.4e} J + ", e.initial_j)
+    } else {
+        String::new()
+    };
     let _ = writeln!(
         o,
-        "  energy              input {:.4e} J = building damping {:.4e} + to the contact {:.4e} + left in the buildings {:.4e}; balance error {:+.2e}",
+        "  energy              {initial}input {:.4e} J = building damping {:.4e} + to the contact {:.4e} + left in the buildings {:.4e}; balance error {:+.2e}",
         e.input_j,
         e.building_damping_j,
         e.contact_j,
         e.final_j + e.stored_contact_j,
-        balance_error(r)
+        e.balance_error()
     );
     let _ = writeln!(
         o,
-        "  solve               {} steps ({} in contact, fine step {:.3e} s, coarse {:.3e} s), {:.2} ms",
+        "  solve               {} steps ({} in contact, fine step {:.3e} s, free steps up to {:.3e} s, {:.1} steps per contact time scale for a tolerance of {:e}), {:.2} ms",
         r.stats.steps,
         r.stats.contact_steps,
         r.stats.fine_step_s,
         r.stats.coarse_step_s,
+        r.stats.steps_per_scale,
+        sc.tolerance,
         1e3 * r.stats.wall_time_s
     );
     if let Some(e) = est {
         let _ = writeln!(
             o,
-            "  error estimate      max force {:.1e}, peak displacement {:.1e} (relative); impact count {:+} with twice the step ({:.2} ms)",
+            "  error estimate      max force {:.1e}, peak displacement {:.1e}, impact times {:.1e} (relative bounds); impact count {:+} against a twice finer run ({:.2} ms)",
             e.max_force,
             e.peak_displacement,
+            e.impact_time,
             e.impact_count_change,
             1e3 * e.wall_time_s
         );
     }
     if !r.impacts.is_empty() {
+        let many = r.levels.len() > 1;
         let _ = writeln!(
             o,
-            "impacts\n    #   start [s]  duration [ms]  peak force [N]  impulse [N s]  approach [m/s]  contacts"
+            "impacts\n    #   start [s]  duration [ms]  peak force [N]  impulse [N s]  approach [m/s]  contacts{}",
+            if many { "  level" } else { "" }
         );
         for (i, ev) in r.impacts.iter().enumerate() {
             let _ = writeln!(
                 o,
-                "  {:3}  {:9.4}  {:13.3}  {:14.4e}  {:13.4e}  {:14.4}  {:8}",
+                "  {:3}  {:9.4}  {:13.3}  {:14.4e}  {:13.4e}  {:14.4}  {:8}{}",
                 i + 1,
                 ev.start_s,
                 1e3 * ev.duration_s(),
                 ev.peak_force_n,
                 ev.impulse_ns,
                 ev.approach_velocity_m_s,
-                ev.contacts.len()
+                ev.contacts.len(),
+                if many {
+                    format!("  {:5}", ev.level + 1)
+                } else {
+                    String::new()
+                }
             );
         }
     }

@@ -75,7 +75,7 @@ pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let baseline = solve(
         &BuildingScenario {
             contact: ContactModel::None,
-            ..setup.scenario
+            ..setup.scenario.clone()
         },
         &motion,
     )?;

@@ -132,7 +132,7 @@ pub fn run(args: &StudyArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         let ctx = Context {
             progress: &progress,
             motion: motion.as_ref(),
-            buildings,
+            buildings: buildings.clone(),
         };
         let (output, wall_time_s) = with_bar(s.name, &progress, args.quiet, || {
             let t = Instant::now();

@@ -5,8 +5,8 @@ pub use super::motion::MotionSpec;
 /// The `motion.file` value that asks for the seeded synthetic record.
 pub const SYNTHETIC: &str = "synthetic";
 use super::motion::Units;
-use super::settings::{SettingValue, choice, count, number, text};
-use crate::model::building::{BuildingScenario, ContactModel, SlabReading};
+use super::settings::{SettingValue, choice, count, number, numbers, text};
+use crate::model::building::{BuildingScenario, ContactModel, DampingModel, SlabReading};
 use crate::model::scenario::InputError;
 
 #[derive(Debug, Clone, PartialEq)]
@@ -30,31 +30,61 @@ pub const BUILDING_KEYS: &[(&str, &str)] = &[
         "sears|linear|kelvin|hertz|hertzdamp|jankowski|stereo|none (the --contact flag)",
     ),
     (
-        "SIDE.stiffness",
-        "storey stiffness k [N/m], > 0 (SIDE is left or right)",
+        "SIDE.storeys",
+        "number of storeys N, in [1, 100] (SIDE is left or right)",
     ),
-    ("SIDE.mass", "seismic mass m [kg], > 0"),
+    (
+        "SIDE.masses",
+        "floor masses [kg], > 0: one value for every floor, or N separated by commas",
+    ),
+    (
+        "SIDE.stiffnesses",
+        "storey shear stiffnesses [N/m], > 0: one value, or N",
+    ),
+    ("SIDE.heights", "storey heights [m], > 0: one value, or N"),
+    ("SIDE.mass", "every floor's mass [kg], > 0"),
+    ("SIDE.stiffness", "every storey's stiffness [N/m], > 0"),
+    ("SIDE.height", "every storey's height [m], > 0"),
     (
         "SIDE.period",
-        "natural period [s], > 0: sets the stiffness from the mass",
+        "fundamental period [s], > 0: scales every storey's stiffness to it",
     ),
     (
         "SIDE.damping_ratio",
         "viscous damping ratio, in [0, 1); default 0.05",
     ),
     (
-        "SIDE.velocity",
-        "velocity relative to the ground at t = 0 [m/s] (isolated-impact studies)",
+        "SIDE.damping",
+        "modal|rayleigh: the ratio in every mode, or Rayleigh damping on two modes",
     ),
-    ("SIDE.height", "storey height [m], > 0"),
+    (
+        "SIDE.rayleigh_modes",
+        "the two modes (1-based) Rayleigh damping gets the ratio in; default 1,2",
+    ),
+    (
+        "SIDE.velocity",
+        "velocity of every floor relative to the ground at t = 0 [m/s] (isolated-impact studies)",
+    ),
     (
         "SIDE.slab_length",
-        "roof slab length along the pounding direction [m], > 0",
+        "floor slab length along the pounding direction [m], > 0: one value, or N",
     ),
-    ("SIDE.slab_width", "roof slab width [m], > 0"),
-    ("SIDE.slab_thickness", "roof slab thickness [m], > 0"),
-    ("SIDE.youngs_modulus", "roof slab Young's modulus [Pa], > 0"),
-    ("gap", "at-rest separation [m], >= 0"),
+    (
+        "SIDE.slab_width",
+        "floor slab width [m], > 0: one value, or N",
+    ),
+    (
+        "SIDE.slab_thickness",
+        "floor slab thickness [m], > 0: one value, or N",
+    ),
+    (
+        "SIDE.youngs_modulus",
+        "floor slab Young's modulus [Pa], > 0: one value, or N",
+    ),
+    (
+        "gap",
+        "at-rest separation, the same at every level [m], >= 0",
+    ),
     (
         "contact.stiffness",
         "element stiffness (N/m; N/m^1.5 for hertz, hertzdamp, jankowski), or auto",
@@ -66,7 +96,7 @@ pub const BUILDING_KEYS: &[(&str, &str)] = &[
     ("contact.reading", "paper|end: the Sears reading"),
     (
         "contact.zone_length",
-        "Sears zone length d [m], or auto (a tenth of the stiffer slab)",
+        "Sears zone length d [m], or auto (a tenth of the stiffer building's slab)",
     ),
     (
         "slab.damping",
@@ -100,8 +130,12 @@ pub const BUILDING_KEYS: &[(&str, &str)] = &[
     ),
     ("motion.length", "synthetic record: length [s], > 0"),
     (
+        "solver.tolerance",
+        "accuracy target of the contact steps (relative), in (0, 0.1]; default 1e-4",
+    ),
+    (
         "solver.steps_per_scale",
-        "steps per contact time scale inside contacts, >= 1",
+        "steps per contact time scale inside contacts, >= 1, or auto (from the tolerance)",
     ),
     ("solver.max_step", "longest step outside contacts [s], > 0"),
     ("solver.max_steps", "step budget, >= 1"),
@@ -119,8 +153,10 @@ impl BuildingSetup {
                 &mut sc.right
             };
             match field {
-                "stiffness" => b.stiffness_n_m = number(key, value)?,
-                "mass" => b.mass_kg = number(key, value)?,
+                "storeys" => b.storeys = count(key, value)?,
+                "masses" | "mass" => b.masses_kg = numbers(key, value)?,
+                "stiffnesses" | "stiffness" => b.stiffnesses_n_m = numbers(key, value)?,
+                "heights" | "height" => b.heights_m = numbers(key, value)?,
                 "period" => {
                     let t = number(key, value)?;
                     if !(t.is_finite() && t > 0.0) {
@@ -129,18 +165,59 @@ impl BuildingSetup {
                             format!("{t} is not allowed: must be a finite number > 0 s"),
                         ));
                     }
-                    b.stiffness_n_m = b.mass_kg * (2.0 * std::f64::consts::PI / t).powi(2);
+                    let mut check = sc.clone();
+                    check.contact = crate::model::building::ContactModel::None;
+                    check.validate().map_err(|e| {
+                        InputError::new(key, format!("needs valid storeys first: {e}"))
+                    })?;
+                    let b = if side == "left" {
+                        &mut sc.left
+                    } else {
+                        &mut sc.right
+                    };
+                    b.set_period(t);
                 }
                 "damping_ratio" => b.damping_ratio = number(key, value)?,
+                "damping" => {
+                    let modes = match b.damping {
+                        DampingModel::Rayleigh { modes } => modes,
+                        DampingModel::Modal => [1, 2],
+                    };
+                    b.damping = choice(
+                        key,
+                        value,
+                        |s| match s {
+                            "modal" => Some(DampingModel::Modal),
+                            "rayleigh" => Some(DampingModel::Rayleigh { modes }),
+                            _ => None,
+                        },
+                        "modal|rayleigh",
+                    )?
+                }
+                "rayleigh_modes" => {
+                    let m = numbers(key, value)?;
+                    let whole = |x: f64| x.fract() == 0.0 && (1.0..=100.0).contains(&x);
+                    if m.len() != 2 || !whole(m[0]) || !whole(m[1]) {
+                        return Err(InputError::new(
+                            key,
+                            format!(
+                                "{} is not allowed: two mode numbers from 1, as i,j",
+                                value.describe()
+                            ),
+                        ));
+                    }
+                    b.damping = DampingModel::Rayleigh {
+                        modes: [m[0] as usize, m[1] as usize],
+                    };
+                }
                 "velocity" => {
                     sc.initial_velocity_m_s[if side == "left" { 0 } else { 1 }] =
                         number(key, value)?
                 }
-                "height" => b.storey_height_m = number(key, value)?,
-                "slab_length" => b.slab.length_m = number(key, value)?,
-                "slab_width" => b.slab.width_m = number(key, value)?,
-                "slab_thickness" => b.slab.thickness_m = number(key, value)?,
-                "youngs_modulus" => b.slab.youngs_modulus_pa = number(key, value)?,
+                "slab_length" => b.slab_lengths_m = numbers(key, value)?,
+                "slab_width" => b.slab_widths_m = numbers(key, value)?,
+                "slab_thickness" => b.slab_thicknesses_m = numbers(key, value)?,
+                "youngs_modulus" => b.slab_youngs_pa = numbers(key, value)?,
                 _ => return Err(unknown(key)),
             }
             return Ok(());
@@ -206,7 +283,14 @@ impl BuildingSetup {
             "motion.pga" => m.synthetic.pga_g = positive(key, value)?,
             "motion.seed" => m.synthetic.seed = count(key, value)? as u64,
             "motion.length" => m.synthetic.duration_s = positive(key, value)?,
-            "solver.steps_per_scale" => sc.steps_per_scale = number(key, value)?,
+            "solver.tolerance" => sc.tolerance = number(key, value)?,
+            "solver.steps_per_scale" => {
+                sc.steps_per_scale = if auto(value) {
+                    None
+                } else {
+                    Some(number(key, value)?)
+                }
+            }
             "solver.max_step" => sc.max_step_s = number(key, value)?,
             "solver.max_steps" => sc.max_steps = count(key, value)?,
             _ => return Err(unknown(key)),

@@ -150,10 +150,28 @@ pub fn parse(text: &str, source: &str) -> Result<Vec<(String, SettingValue, usiz
                     )
                 })
             }
+            DeValue::Array(items) => items
+                .iter()
+                .map(|item| match item.get_ref() {
+                    DeValue::Integer(i) => {
+                        i64::from_str_radix(&i.as_str().replace('_', ""), i.radix())
+                            .map(|x| x as f64)
+                            .map_err(|e| e.to_string())
+                    }
+                    DeValue::Float(x) => x
+                        .as_str()
+                        .replace('_', "")
+                        .parse::<f64>()
+                        .map_err(|e| e.to_string()),
+                    _ => Err("expected numbers".into()),
+                })
+                .collect::<Result<Vec<f64>, String>>()
+                .map(SettingValue::List)
+                .map_err(|e| err(Some(line), Some(key.to_string()), format!("bad list: {e}"))),
             _ => Err(err(
                 Some(line),
                 Some(key.to_string()),
-                "expected a number, a word or true/false".into(),
+                "expected a number, a word, true/false or a list of numbers".into(),
             )),
         }
     };
@@ -360,6 +378,20 @@ pub fn buildings_to_toml(setup: &super::building_settings::BuildingSetup) -> Str
         "name = \"saved building scene\"\nscene = \"buildings\"\ngap = {:?}\n\n",
         sc.gap_m
     );
+    // A list as TOML: one value as a number, several as an array.
+    let list = |v: &[f64]| {
+        if v.len() == 1 {
+            format!("{:?}", v[0])
+        } else {
+            format!(
+                "[{}]",
+                v.iter()
+                    .map(|x| format!("{x:?}"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            )
+        }
+    };
     for (i, (name, b)) in [("left", &sc.left), ("right", &sc.right)]
         .into_iter()
         .enumerate()
@@ -367,15 +399,28 @@ pub fn buildings_to_toml(setup: &super::building_settings::BuildingSetup) -> Str
         let _ = writeln!(s, "[{name}]\nvelocity = {:?}", sc.initial_velocity_m_s[i]);
         let _ = writeln!(
             s,
-            "mass = {:?}\nstiffness = {:?}\ndamping_ratio = {:?}\nheight = {:?}\nslab_length = {:?}\nslab_width = {:?}\nslab_thickness = {:?}\nyoungs_modulus = {:e}\n",
-            b.mass_kg,
-            b.stiffness_n_m,
+            "storeys = {}\nmasses = {}\nstiffnesses = {}\nheights = {}\ndamping_ratio = {:?}",
+            b.storeys,
+            list(&b.masses_kg),
+            list(&b.stiffnesses_n_m),
+            list(&b.heights_m),
             b.damping_ratio,
-            b.storey_height_m,
-            b.slab.length_m,
-            b.slab.width_m,
-            b.slab.thickness_m,
-            b.slab.youngs_modulus_pa
+        );
+        match b.damping {
+            crate::model::building::DampingModel::Modal => {
+                let _ = writeln!(s, "damping = \"modal\"");
+            }
+            crate::model::building::DampingModel::Rayleigh { modes: [i, j] } => {
+                let _ = writeln!(s, "damping = \"rayleigh\"\nrayleigh_modes = [{i}, {j}]");
+            }
+        }
+        let _ = writeln!(
+            s,
+            "slab_length = {}\nslab_width = {}\nslab_thickness = {}\nyoungs_modulus = {}\n",
+            list(&b.slab_lengths_m),
+            list(&b.slab_widths_m),
+            list(&b.slab_thicknesses_m),
+            list(&b.slab_youngs_pa),
         );
     }
     let _ = writeln!(s, "[contact]\nmodel = \"{}\"", sc.contact.name());
@@ -403,6 +448,14 @@ pub fn buildings_to_toml(setup: &super::building_settings::BuildingSetup) -> Str
         s,
         "[slab]\ndamping = {:?}\n\n[impact]\nmerge_gap_s = {:?}\n",
         sc.slab_damping, sc.merge_gap_s
+    );
+    let _ = writeln!(
+        s,
+        "[solver]\ntolerance = {:e}\nsteps_per_scale = {}\nmax_step = {:?}\nmax_steps = {}\n",
+        sc.tolerance,
+        or_auto(sc.steps_per_scale.map(|x| format!("{x:?}"))),
+        sc.max_step_s,
+        sc.max_steps
     );
     let m = &setup.motion;
     let _ = writeln!(

@@ -14,6 +14,8 @@ pub enum SettingValue {
     Number(f64),
     Text(String),
     Bool(bool),
+    /// Numbers separated by commas on the command line, a TOML array in a preset.
+    List(Vec<f64>),
 }
 
 impl SettingValue {
@@ -23,18 +25,28 @@ impl SettingValue {
         match t {
             "true" => SettingValue::Bool(true),
             "false" => SettingValue::Bool(false),
-            _ => t
-                .parse::<f64>()
-                .map(SettingValue::Number)
-                .unwrap_or_else(|_| SettingValue::Text(t.to_string())),
+            _ => match t.parse::<f64>() {
+                Ok(x) => SettingValue::Number(x),
+                Err(_) if t.contains(',') => {
+                    let parts: Result<Vec<f64>, _> =
+                        t.split(',').map(|p| p.trim().parse::<f64>()).collect();
+                    parts.map_or_else(|_| SettingValue::Text(t.to_string()), SettingValue::List)
+                }
+                Err(_) => SettingValue::Text(t.to_string()),
+            },
         }
     }
 
-    fn describe(&self) -> String {
+    pub(crate) fn describe(&self) -> String {
         match self {
             SettingValue::Number(x) => x.to_string(),
             SettingValue::Text(s) => format!("'{s}'"),
             SettingValue::Bool(b) => b.to_string(),
+            SettingValue::List(v) => v
+                .iter()
+                .map(|x| x.to_string())
+                .collect::<Vec<_>>()
+                .join(","),
         }
     }
 }
@@ -131,6 +143,21 @@ pub(crate) fn number(key: &str, v: &SettingValue) -> Result<f64, InputError> {
         other => Err(InputError::new(
             key,
             format!("expected a number, got {}", other.describe()),
+        )),
+    }
+}
+
+/// One number or a list of them.
+pub(crate) fn numbers(key: &str, v: &SettingValue) -> Result<Vec<f64>, InputError> {
+    match v {
+        SettingValue::Number(x) => Ok(vec![*x]),
+        SettingValue::List(xs) if !xs.is_empty() => Ok(xs.clone()),
+        other => Err(InputError::new(
+            key,
+            format!(
+                "expected a number or numbers separated by commas, got {}",
+                other.describe()
+            ),
         )),
     }
 }

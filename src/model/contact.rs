@@ -6,6 +6,14 @@
 
 use super::bar::Bar;
 
+/// The paper's n in its linear contact stiffness E A / (L / n): each slab contributes the
+/// stiffness of a tenth of its length, and the Sears zone of a slab is that tenth, d = L / n.
+pub const PAPER_DIVISIONS: f64 = 10.0;
+
+/// The overlap at which a Hertzian element's default stiffness gives the same force as the
+/// linear default [m]: a millimetre, the scale of the paper's gap.
+pub const REFERENCE_OVERLAP_M: f64 = 1e-3;
+
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum LawKind {
     /// F = k delta^(3/2), rounded ends.

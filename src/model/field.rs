@@ -5,6 +5,10 @@
 //!   axial force N(x, t) = H(t - x/c) - H(t - (2l - x)/c)   (compression positive),
 //!   velocity change  dv = (H(t - x/c) + H(t - (2l - x)/c)) / Z, directed away from the contact.
 //! Beyond the simulated span the force is taken as zero, so H repeats with period T.
+//!
+//! A damped bar (the building slabs' material damping, see `building::slab`) attenuates every
+//! arrival by exp(-tau / t_d), tau its travel time: then H(t) = F(t) + r H(t - T) with
+//! r = exp(-T / t_d), and each term above carries exp(-x / (c t_d)) or exp(-(2l - x) / (c t_d)).
 
 use super::history::sample_at;
 
@@ -35,6 +39,9 @@ pub struct BarWaves {
     pub history: History,
     /// End of the simulated span [s].
     pub end_s: f64,
+    /// Material damping 1 / t_d [1/s]: every arrival is attenuated by exp(-travel time / t_d);
+    /// 0 for elastic bars.
+    pub decay_per_s: f64,
 }
 
 impl BarWaves {
@@ -47,12 +54,14 @@ impl BarWaves {
         self.body_length_m + self.zone_length_m
     }
 
-    /// H(t): zero before the impact, periodic after the simulated span.
+    /// H(t): zero before the impact; after the simulated span (no force) each round trip
+    /// repeats the last, attenuated by r.
     pub fn history_at(&self, t_s: f64) -> f64 {
         if t_s < 0.0 {
             return 0.0;
         }
         let mut t = t_s;
+        let mut weight = 1.0;
         let period = self.round_trip_s();
         if t > self.end_s && period > 0.0 {
             let k = ((t - self.end_s) / period).ceil();
@@ -60,19 +69,31 @@ impl BarWaves {
             if t < 0.0 {
                 return 0.0;
             }
+            weight = self.attenuation(k * period);
         }
-        match &self.history {
-            History::Uniform { dt_s, values } => sample_at(values, *dt_s, t),
-            History::Steps { times, values } => {
-                let k = times.partition_point(|&x| x <= t);
-                if k == 0 { 0.0 } else { values[k - 1] }
+        weight
+            * match &self.history {
+                History::Uniform { dt_s, values } => sample_at(values, *dt_s, t),
+                History::Steps { times, values } => {
+                    let k = times.partition_point(|&x| x <= t);
+                    if k == 0 { 0.0 } else { values[k - 1] }
+                }
             }
+    }
+
+    /// exp(-travel / t_d): what damping leaves of a wave after `travel_s` [s].
+    pub fn attenuation(&self, travel_s: f64) -> f64 {
+        if self.decay_per_s == 0.0 {
+            1.0
+        } else {
+            (-travel_s * self.decay_per_s).exp()
         }
     }
 
-    /// Force on the impacting end of the body at time t [N]: F(t) = H(t) - H(t - T).
+    /// Force on the impacting end of the body at time t [N]: F(t) = H(t) - r H(t - T).
     pub fn end_force_n(&self, t_s: f64) -> f64 {
-        self.history_at(t_s) - self.history_at(t_s - self.round_trip_s())
+        let t = self.round_trip_s();
+        self.history_at(t_s) - self.attenuation(t) * self.history_at(t_s - t)
     }
 
     /// Axial stress at distance x from the impacting end [Pa], tension positive.
@@ -83,17 +104,21 @@ impl BarWaves {
         }
         let x = x.min(self.body_length_m);
         let c = self.wave_speed_m_s;
-        let n = self.history_at(t_s - x / c)
-            - self.history_at(t_s - (2.0 * self.body_length_m - x) / c);
+        let (near, far) = (x / c, (2.0 * self.body_length_m - x) / c);
+        let n = self.attenuation(near) * self.history_at(t_s - near)
+            - self.attenuation(far) * self.history_at(t_s - far);
         -n / self.area_m2
     }
 
-    /// Particle velocity at distance x from the impacting end [m/s], in the lab frame.
+    /// Particle velocity at distance x from the impacting end [m/s], in the lab frame. For a
+    /// damped bar (a building's slab) this is the waves' part on top of the starting velocity,
+    /// each arrival attenuated like the stress; the slab's rigid motion is its floor's.
     pub fn velocity_m_s(&self, x_m: f64, t_s: f64) -> f64 {
         let x = (x_m - self.zone_length_m).clamp(0.0, self.body_length_m);
         let c = self.wave_speed_m_s;
-        let g = self.history_at(t_s - x / c)
-            + self.history_at(t_s - (2.0 * self.body_length_m - x) / c);
+        let (near, far) = (x / c, (2.0 * self.body_length_m - x) / c);
+        let g = self.attenuation(near) * self.history_at(t_s - near)
+            + self.attenuation(far) * self.history_at(t_s - far);
         self.initial_velocity_m_s + self.push_direction * g / self.impedance_n_s_m
     }
 

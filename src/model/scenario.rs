@@ -2,7 +2,9 @@
 //! names the field and its allowed range.
 
 use super::bar::{Bar, EndShape, Section};
-use super::contact::{ContactLaw, LawKind, hertz_stiffness, paper_linear_stiffness};
+use super::contact::{
+    ContactLaw, LawKind, PAPER_DIVISIONS, hertz_stiffness, paper_linear_stiffness,
+};
 use super::material::MaterialPreset;
 use std::fmt;
 
@@ -103,7 +105,7 @@ impl Default for ImpactScenario {
                 stiffness: None,
                 zone_scale: 1.0,
                 zone_length_m: None,
-                divisions: 10.0,
+                divisions: PAPER_DIVISIONS,
                 restitution: 0.65,
             },
             reading: Reading::Paper,

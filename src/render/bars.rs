@@ -8,7 +8,7 @@ use bytemuck::{Pod, Zeroable};
 use eframe::egui_wgpu::{self, wgpu};
 use std::sync::Arc;
 
-/// One bar as the shader sees it (WGSL `Bar`, 64 bytes).
+/// One bar as the shader sees it (WGSL `Bar`, 64 bytes, in a storage buffer: any number).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
 pub struct GpuBar {
@@ -27,10 +27,11 @@ pub struct GpuBar {
     pub y_bottom: f32,
     pub y_top: f32,
     pub world_per_metre: f32,
-    pub _pad: f32,
+    /// Material damping 1 / t_d [1/s] (0: elastic): arrivals attenuate as exp(-travel / t_d).
+    pub decay_per_s: f32,
 }
 
-/// WGSL `Uniforms` (208 bytes).
+/// WGSL `Uniforms` (80 bytes).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
 pub struct GpuUniforms {
@@ -38,15 +39,29 @@ pub struct GpuUniforms {
     pub time: f32,
     pub bar_count: u32,
     pub _pad: [f32; 2],
-    pub bars: [GpuBar; 2],
 }
 
-/// The wave histories of both bars on uniform grids, ready to upload.
-#[derive(Debug, Clone, Default)]
+/// The wave histories of a set of bars on uniform grids, ready to upload.
+#[derive(Debug, Clone)]
 pub struct GpuHistory {
+    /// Unique to this history in the process: the GPU copy is keyed by it, so views that share
+    /// the pipeline never draw each other's waves.
+    pub id: u64,
     pub samples: Vec<f32>,
     /// (offset, count, dt, end time) per bar.
-    pub layout: [(u32, u32, f32, f32); 2],
+    pub layout: Vec<(u32, u32, f32, f32)>,
+}
+
+static NEXT_HISTORY: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(1);
+
+impl Default for GpuHistory {
+    fn default() -> Self {
+        GpuHistory {
+            id: NEXT_HISTORY.fetch_add(1, std::sync::atomic::Ordering::Relaxed),
+            samples: Vec::new(),
+            layout: Vec::new(),
+        }
+    }
 }
 
 /// Samples per round trip when a step-function history (wave theory) is put on a grid.
@@ -54,9 +69,14 @@ const STEP_SAMPLES_PER_ROUND_TRIP: f64 = 400.0;
 
 impl GpuHistory {
     pub fn from_waves(waves: &[BarWaves; 2]) -> Self {
+        Self::from_bars(waves.iter())
+    }
+
+    /// Any number of bars, in the order their [`GpuBar`]s will be drawn.
+    pub fn from_bars<'a>(waves: impl IntoIterator<Item = &'a BarWaves>) -> Self {
         let mut samples = Vec::new();
-        let mut layout = [(0, 0, 0.0, 0.0); 2];
-        for (i, w) in waves.iter().enumerate() {
+        let mut layout = Vec::new();
+        for w in waves {
             let offset = samples.len() as u32;
             let dt = match &w.history {
                 History::Uniform { dt_s, values } => {
@@ -74,9 +94,13 @@ impl GpuHistory {
             if count == 0 {
                 samples.push(0.0);
             }
-            layout[i] = (offset, count.max(1), dt as f32, w.end_s as f32);
+            layout.push((offset, count.max(1), dt as f32, w.end_s as f32));
         }
-        GpuHistory { samples, layout }
+        GpuHistory {
+            samples,
+            layout,
+            ..GpuHistory::default()
+        }
     }
 }
 
@@ -85,9 +109,11 @@ pub struct BarsResources {
     pipeline: wgpu::RenderPipeline,
     layout: wgpu::BindGroupLayout,
     uniforms: wgpu::Buffer,
+    bars: wgpu::Buffer,
     history: wgpu::Buffer,
     bind_group: wgpu::BindGroup,
-    history_version: u64,
+    /// The [`GpuHistory::id`] now on the GPU.
+    history_id: u64,
 }
 
 /// Builds the pipeline once, at start-up, and stores it with the renderer.
@@ -120,16 +146,8 @@ impl BarsResources {
                     },
                     count: None,
                 },
-                wgpu::BindGroupLayoutEntry {
-                    binding: 1,
-                    visibility: wgpu::ShaderStages::FRAGMENT,
-                    ty: wgpu::BindingType::Buffer {
-                        ty: wgpu::BufferBindingType::Storage { read_only: true },
-                        has_dynamic_offset: false,
-                        min_binding_size: None,
-                    },
-                    count: None,
-                },
+                storage_entry(1, wgpu::ShaderStages::FRAGMENT),
+                storage_entry(2, wgpu::ShaderStages::VERTEX_FRAGMENT),
             ],
         });
         let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
@@ -164,37 +182,57 @@ impl BarsResources {
             usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
-        let history = history_buffer(device, 1024);
-        let bind_group = bind(device, &layout, &uniforms, &history);
+        let history = storage_buffer(device, "bars history", 4096);
+        let bars = storage_buffer(device, "bars", 16 * std::mem::size_of::<GpuBar>());
+        let bind_group = bind(device, &layout, &uniforms, &history, &bars);
         BarsResources {
             pipeline,
             layout,
             uniforms,
+            bars,
             history,
             bind_group,
-            history_version: u64::MAX,
+            history_id: 0,
         }
     }
 
-    /// Uploads a frame's uniforms, and the history when its version changed.
+    /// Uploads a frame's uniforms and bars, and the history when it is another one.
     pub fn upload(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         uniforms: &GpuUniforms,
+        bars: &[GpuBar],
         history: &GpuHistory,
-        version: u64,
     ) {
-        if self.history_version != version {
-            let bytes = (history.samples.len() * 4) as u64;
-            if bytes > self.history.size() {
-                self.history = history_buffer(device, history.samples.len().next_power_of_two());
-                self.bind_group = bind(device, &self.layout, &self.uniforms, &self.history);
+        let mut rebind = false;
+        if self.history_id != history.id {
+            let bytes = history.samples.len() * 4;
+            if bytes as u64 > self.history.size() {
+                self.history = storage_buffer(device, "bars history", bytes.next_power_of_two());
+                rebind = true;
             }
             if !history.samples.is_empty() {
                 queue.write_buffer(&self.history, 0, bytemuck::cast_slice(&history.samples));
             }
-            self.history_version = version;
+            self.history_id = history.id;
+        }
+        let bytes = std::mem::size_of_val(bars);
+        if bytes as u64 > self.bars.size() {
+            self.bars = storage_buffer(device, "bars", bytes.next_power_of_two());
+            rebind = true;
+        }
+        if rebind {
+            self.bind_group = bind(
+                device,
+                &self.layout,
+                &self.uniforms,
+                &self.history,
+                &self.bars,
+            );
+        }
+        if !bars.is_empty() {
+            queue.write_buffer(&self.bars, 0, bytemuck::cast_slice(bars));
         }
         queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(uniforms));
     }
@@ -207,10 +245,23 @@ impl BarsResources {
     }
 }
 
-fn history_buffer(device: &wgpu::Device, samples: usize) -> wgpu::Buffer {
+fn storage_entry(binding: u32, visibility: wgpu::ShaderStages) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility,
+        ty: wgpu::BindingType::Buffer {
+            ty: wgpu::BufferBindingType::Storage { read_only: true },
+            has_dynamic_offset: false,
+            min_binding_size: None,
+        },
+        count: None,
+    }
+}
+
+fn storage_buffer(device: &wgpu::Device, label: &str, bytes: usize) -> wgpu::Buffer {
     device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("bars history"),
-        size: (samples.max(1) * 4) as u64,
+        label: Some(label),
+        size: bytes.max(64) as u64,
         usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
         mapped_at_creation: false,
     })
@@ -221,6 +272,7 @@ fn bind(
     layout: &wgpu::BindGroupLayout,
     uniforms: &wgpu::Buffer,
     history: &wgpu::Buffer,
+    bars: &wgpu::Buffer,
 ) -> wgpu::BindGroup {
     device.create_bind_group(&wgpu::BindGroupDescriptor {
         label: Some("bars"),
@@ -234,15 +286,19 @@ fn bind(
                 binding: 1,
                 resource: history.as_entire_binding(),
             },
+            wgpu::BindGroupEntry {
+                binding: 2,
+                resource: bars.as_entire_binding(),
+            },
         ],
     })
 }
 
-/// One frame's draw: the uniforms, and the history with its version (uploaded when it changes).
+/// One frame's draw: the uniforms and bars, and the history (uploaded when it is another one).
 pub struct BarsCallback {
     pub uniforms: GpuUniforms,
+    pub bars: Vec<GpuBar>,
     pub history: Arc<GpuHistory>,
-    pub version: u64,
 }
 
 impl egui_wgpu::CallbackTrait for BarsCallback {
@@ -255,7 +311,7 @@ impl egui_wgpu::CallbackTrait for BarsCallback {
         resources: &mut egui_wgpu::CallbackResources,
     ) -> Vec<wgpu::CommandBuffer> {
         if let Some(r) = resources.get_mut::<BarsResources>() {
-            r.upload(device, queue, &self.uniforms, &self.history, self.version);
+            r.upload(device, queue, &self.uniforms, &self.bars, &self.history);
         }
         Vec::new()
     }
@@ -278,6 +334,7 @@ impl egui_wgpu::CallbackTrait for BarsCallback {
 #[derive(Clone, Copy, Debug)]
 pub struct BarsLayout {
     pub bars: [GpuBar; 2],
+
     /// World x of each bar's impacting end.
     pub gap: f64,
     /// World units per metre of each bar.
@@ -327,7 +384,7 @@ impl BarsLayout {
                 y_bottom: BAR_Y.0,
                 y_top: BAR_Y.1,
                 world_per_metre: wpm[i] as f32,
-                _pad: 0.0,
+                decay_per_s: wv.decay_per_s as f32,
             };
         }
         BarsLayout {
@@ -345,19 +402,18 @@ impl BarsLayout {
 
     /// The shader's uniforms at animation time `t`.
     pub fn uniforms(&self, t: f64) -> GpuUniforms {
-        uniforms([self.left, self.right, self.bottom, self.top], t, self.bars)
+        uniforms([self.left, self.right, self.bottom, self.top], t, 2)
     }
 }
 
-/// Uniforms for two bars at time `t` in the world rectangle [left, right, bottom, top].
-pub fn uniforms(world: [f64; 4], t: f64, bars: [GpuBar; 2]) -> GpuUniforms {
+/// Uniforms for `bar_count` bars at time `t` in the world rectangle [left, right, bottom, top].
+pub fn uniforms(world: [f64; 4], t: f64, bar_count: u32) -> GpuUniforms {
     let [left, right, bottom, top] = world.map(|v| v as f32);
     GpuUniforms {
         view: view(left, right, bottom, top),
         time: t as f32,
-        bar_count: 2,
+        bar_count,
         _pad: [0.0; 2],
-        bars,
     }
 }
 
@@ -398,20 +454,20 @@ impl Viewport {
         )
     }
 
-    /// Queues the two bars for the GPU.
+    /// Queues the bars for the GPU.
     pub fn paint_bars(
         &self,
         ui: &eframe::egui::Ui,
         uniforms: GpuUniforms,
+        bars: Vec<GpuBar>,
         history: Arc<GpuHistory>,
-        version: u64,
     ) {
         ui.painter().add(egui_wgpu::Callback::new_paint_callback(
             self.rect,
             BarsCallback {
                 uniforms,
+                bars,
                 history,
-                version,
             },
         ));
     }

@@ -41,9 +41,9 @@ fn solve_all(ctx: &Context, cases: &[BuildingScenario]) -> Result<Vec<BuildingRe
 fn with_and_without(ctx: &Context) -> Result<(BuildingResult, BuildingResult), StudyError> {
     let free = BuildingScenario {
         contact: ContactModel::None,
-        ..ctx.buildings
+        ..ctx.buildings.clone()
     };
-    let mut out = solve_all(ctx, &[ctx.buildings, free])?.into_iter();
+    let mut out = solve_all(ctx, &[ctx.buildings.clone(), free])?.into_iter();
     Ok((out.next().expect("two"), out.next().expect("two")))
 }
 
@@ -93,7 +93,7 @@ fn displacements(ctx: &Context) -> Result<StudyOutput, StudyError> {
     Ok(StudyOutput {
         figures,
         findings,
-        notes: pounding.warnings,
+        notes: pounding.warnings.iter().map(|w| w.to_string()).collect(),
     })
 }
 
@@ -102,14 +102,14 @@ fn forces(ctx: &Context) -> Result<StudyOutput, StudyError> {
     // reading: it separates what the reading adds (the overshoot) from what the waves do.
     let end = BuildingScenario {
         reading: SlabReading::End,
-        ..ctx.buildings
+        ..ctx.buildings.clone()
     };
     let with_end =
         ctx.buildings.contact == ContactModel::Sears && ctx.buildings.reading == SlabReading::Paper;
     let cases: Vec<_> = if with_end {
-        vec![ctx.buildings, end]
+        vec![ctx.buildings.clone(), end]
     } else {
-        vec![ctx.buildings]
+        vec![ctx.buildings.clone()]
     };
     let mut out = solve_all(ctx, &cases)?.into_iter();
     let r = out.next().expect("one");
@@ -197,9 +197,10 @@ fn forces(ctx: &Context) -> Result<StudyOutput, StudyError> {
             finding("strongest impact: wave-theory force", wave, "N"),
             finding(
                 "strongest impact: slab round trip 2L/c",
-                sc.left
-                    .slab_round_trip_s()
-                    .max(sc.right.slab_round_trip_s()),
+                [&sc.left, &sc.right]
+                    .iter()
+                    .map(|b| b.slab(b.storeys - 1).round_trip_s(b.mass(b.storeys - 1)))
+                    .fold(0.0, f64::max),
                 "s",
             ),
         ]);
@@ -217,6 +218,6 @@ fn forces(ctx: &Context) -> Result<StudyOutput, StudyError> {
     Ok(StudyOutput {
         figures,
         findings,
-        notes: r.warnings,
+        notes: r.warnings.iter().map(|w| w.to_string()).collect(),
     })
 }

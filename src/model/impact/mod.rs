@@ -7,7 +7,7 @@ pub mod estimate;
 pub mod fe;
 pub mod lumped;
 pub mod sears;
-pub(crate) mod timestep;
+pub mod timestep;
 pub mod warning;
 pub mod wave;
 

@@ -454,6 +454,7 @@ fn build_waves(
                 values: hs.into_samples(),
             },
             end_s,
+            decay_per_s: 0.0,
         }
     })
 }

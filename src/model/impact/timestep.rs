@@ -7,14 +7,14 @@ use crate::model::scenario::ImpactScenario;
 /// Time scales of a contact between bodies of effective mass `m_eff` and (for elastic bars)
 /// effective impedance `z_eff` (infinite for rigid bodies), at approach velocity `w`.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct TimeScale {
+pub struct TimeScale {
     /// The shortest time over which the force changes appreciably [s].
     pub resolve_s: f64,
     /// Contact duration of the lumped-mass limit [s].
     pub lumped_duration_s: f64,
 }
 
-pub(crate) fn contact_time_scale(law: &ContactLaw, w: f64, m_eff: f64, z_eff: f64) -> TimeScale {
+pub fn contact_time_scale(law: &ContactLaw, w: f64, m_eff: f64, z_eff: f64) -> TimeScale {
     let k = law.stiffness;
     let (f_lumped, lumped_duration_s) = match law.kind {
         LawKind::Hertz => {

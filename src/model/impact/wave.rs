@@ -174,6 +174,7 @@ pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
             values: h[i].values.clone(),
         },
         end_s,
+        decay_per_s: 0.0,
     });
     let vibration_j = (0..2)
         .map(|i| waves[i].wave_energy_j(end_s) - impulse * impulse / (2.0 * masses[i]))

@@ -1,0 +1,279 @@
+//! The view of two buildings: N-storey frames swaying with the record (drift exaggerated, the
+//! ground to scale), every floor slab drawn, the slabs that meet at a level coloured by their
+//! stress waves on the GPU (the bar view's pipeline, from the model's slab histories), and the
+//! contact points marked.
+
+use crate::io::building_settings::BuildingSetup;
+use crate::model::building::{Attachment, BuildingResult, Level};
+use crate::model::field::BarWaves;
+use crate::model::motion::GroundMotion;
+use crate::render::bars::{GpuBar, GpuHistory, Viewport, uniforms};
+use eframe::egui::{self, Color32, Pos2, Stroke};
+use std::sync::Arc;
+
+/// A solve ready to draw: the run, its record's ground displacement and the slabs' waves on the
+/// GPU grid (one bar per slab that meets another at a level).
+pub struct BuildingDrawing {
+    pub setup: BuildingSetup,
+    pub motion: GroundMotion,
+    pub result: BuildingResult,
+    ground_displacement: Vec<f64>,
+    /// (level, side) of each bar in `gpu`.
+    bars: Vec<(usize, usize)>,
+    gpu: Arc<GpuHistory>,
+}
+
+/// Ground displacement by integrating the record twice (trapezoid; no baseline correction).
+fn ground_displacement(m: &GroundMotion) -> Vec<f64> {
+    let (mut v, mut d) = (0.0, 0.0);
+    let mut out = vec![0.0];
+    for w in m.accel_m_s2.windows(2) {
+        let v1 = v + 0.5 * m.dt_s * (w[0] + w[1]);
+        d += 0.5 * m.dt_s * (v + v1);
+        v = v1;
+        out.push(d);
+    }
+    out
+}
+
+impl BuildingDrawing {
+    pub fn new(setup: BuildingSetup, motion: GroundMotion, result: BuildingResult) -> Self {
+        let mut bars = vec![];
+        let mut waves: Vec<&BarWaves> = vec![];
+        for (l, level) in result.slab_waves.iter().enumerate() {
+            for (s, w) in level.iter().enumerate() {
+                if let Some(w) = w {
+                    bars.push((l, s));
+                    waves.push(w);
+                }
+            }
+        }
+        let gpu = Arc::new(GpuHistory::from_bars(waves));
+        BuildingDrawing {
+            ground_displacement: ground_displacement(&motion),
+            setup,
+            motion,
+            result,
+            bars,
+            gpu,
+        }
+    }
+}
+
+/// Linear interpolation of a sampled history at t.
+pub fn sample(time: &[f64], y: &[f64], t: f64) -> f64 {
+    let k = time.partition_point(|&x| x <= t);
+    if k == 0 {
+        return y.first().copied().unwrap_or(0.0);
+    }
+    if k >= time.len() {
+        return y.last().copied().unwrap_or(0.0);
+    }
+    let (t0, t1) = (time[k - 1], time[k]);
+    let s = if t1 > t0 { (t - t0) / (t1 - t0) } else { 0.0 };
+    y[k - 1] + s * (y[k] - y[k - 1])
+}
+
+/// A point of a building at floor weights: its displacement at t.
+fn attached(floors: &[Vec<f64>], time: &[f64], a: &Attachment, t: f64) -> f64 {
+    a.weights()
+        .iter()
+        .map(|(f, w)| w * sample(time, &floors[*f], t))
+        .sum()
+}
+
+pub fn draw(ui: &mut egui::Ui, rect: egui::Rect, d: &BuildingDrawing, t: f64, exaggeration: f64) {
+    let sc = &d.setup.scenario;
+    let r = &d.result;
+    let buildings = [&sc.left, &sc.right];
+    let lengths = buildings.map(|b| {
+        (0..b.storeys)
+            .map(|j| b.slab(j).length_m)
+            .fold(0.0, f64::max)
+    });
+    let height = buildings
+        .iter()
+        .map(|b| b.total_height_m())
+        .fold(0.0, f64::max);
+    // World: metres, the at-rest gap centred at x = 0, the ground at y = 0.
+    let gap_world = (sc.gap_m * exaggeration).max(0.05);
+    let (left, right) = (-lengths[0] - gap_world - 2.0, lengths[1] + gap_world + 2.0);
+    let (bottom, top) = (-1.0f64, height * 1.25 + 1.0);
+    let aspect = (rect.width() / rect.height()) as f64;
+    let (left, right, top) = if (right - left) / (top - bottom) < aspect {
+        // Widen to fill the view.
+        let w = (top - bottom) * aspect;
+        let mid = 0.5 * (left + right);
+        (mid - 0.5 * w, mid + 0.5 * w, top)
+    } else {
+        (left, right, bottom + (right - left) / aspect)
+    };
+    let xg = sample(
+        &(0..d.ground_displacement.len())
+            .map(|i| i as f64 * d.motion.dt_s)
+            .collect::<Vec<_>>(),
+        &d.ground_displacement,
+        t,
+    );
+    let inner = [-0.5 * gap_world, 0.5 * gap_world];
+    let dir = [-1.0, 1.0];
+    let floor_u = |s: usize, f: usize| sample(&r.time_s, &r.floor_displacement_m[s][f], t);
+    let slab_t = (height * 0.02).clamp(0.15, 0.5);
+    let vp = Viewport {
+        rect,
+        left,
+        right,
+        bottom,
+        top,
+    };
+    let to_screen = |x: f64, y: f64| vp.to_screen(x, y);
+    // Slabs that meet at a level, coloured by their waves.
+    let force_scale = r.max_pounding_force_n.max(1.0);
+    let gpu_bars: Vec<GpuBar> = d
+        .bars
+        .iter()
+        .enumerate()
+        .map(|(i, &(level, s))| {
+            let lv: &Level = &r.levels[level];
+            let a = if s == 0 { lv.left } else { lv.right };
+            let f = a.floor().expect("a slab is a floor's");
+            let b = buildings[s];
+            let slab = b.slab(f);
+            let w = r.slab_waves[level][s].as_ref().expect("drawn");
+            let (offset, count, dt, end) = d.gpu.layout[i];
+            let z = b.elevations_m()[f];
+            GpuBar {
+                origin_x: (inner[s] + floor_u(s, f) * exaggeration + xg) as f32,
+                direction: dir[s] as f32,
+                body_length: slab.length_m as f32,
+                zone_length: 0.0,
+                wave_speed: w.wave_speed_m_s as f32,
+                round_trip: w.round_trip_s() as f32,
+                dt,
+                end_time: end,
+                offset,
+                count,
+                inv_area: (1.0 / slab.area_m2()) as f32,
+                inv_stress_scale: (slab.area_m2() / force_scale) as f32,
+                y_bottom: (z - slab_t) as f32,
+                y_top: z as f32,
+                world_per_metre: 1.0,
+                decay_per_s: w.decay_per_s as f32,
+            }
+        })
+        .collect();
+    let painter = ui.painter_at(rect);
+    let text = ui.visuals().text_color();
+    let column = Stroke::new(
+        2.5,
+        if ui.visuals().dark_mode {
+            Color32::from_gray(170)
+        } else {
+            Color32::from_gray(80)
+        },
+    );
+    let plain = if ui.visuals().dark_mode {
+        Color32::from_gray(150)
+    } else {
+        Color32::from_gray(110)
+    };
+    // Ground, moving with the record (drawn to scale).
+    painter.line_segment(
+        [to_screen(left, 0.0), to_screen(right, 0.0)],
+        Stroke::new(2.0, Color32::from_rgb(140, 110, 70)),
+    );
+    for k in 0..24 {
+        let x = left + (right - left) * k as f64 / 24.0 + xg;
+        painter.line_segment(
+            [to_screen(x, 0.0), to_screen(x - 0.4, -0.4)],
+            Stroke::new(1.0, Color32::from_rgb(140, 110, 70)),
+        );
+    }
+    for s in 0..2 {
+        let b = buildings[s];
+        let zs = b.elevations_m();
+        let mut below_u = 0.0;
+        let mut below_z = 0.0;
+        for (f, &z) in zs.iter().enumerate() {
+            let u = floor_u(s, f) * exaggeration + xg;
+            let len = b.slab(f).length_m;
+            // Columns from the floor below (the ground, moving with the record, for the first).
+            let (base_u, base_z) = if f == 0 {
+                (xg, 0.0)
+            } else {
+                (below_u, below_z)
+            };
+            for frac in [0.05, 0.95] {
+                let x = inner[s] + dir[s] * frac * len;
+                painter.line_segment(
+                    [to_screen(x + base_u, base_z), to_screen(x + u, z - slab_t)],
+                    column,
+                );
+            }
+            let coloured = d.bars.iter().any(|&(level, side)| {
+                side == s && [r.levels[level].left, r.levels[level].right][s].floor() == Some(f)
+            });
+            if !coloured {
+                let (a, c) = (
+                    to_screen(inner[s] + u, z - slab_t),
+                    to_screen(inner[s] + dir[s] * len + u, z),
+                );
+                painter.rect_filled(egui::Rect::from_two_pos(a, c), 1.0, plain);
+            }
+            below_u = u;
+            below_z = z;
+        }
+        painter.text(
+            to_screen(
+                inner[s] + dir[s] * 0.5 * lengths[s] + xg,
+                b.total_height_m() + 0.4,
+            ),
+            egui::Align2::CENTER_BOTTOM,
+            format!(
+                "{} building, {} storey{}: roof {:+.2} mm",
+                if s == 0 { "left" } else { "right" },
+                b.storeys,
+                if b.storeys == 1 { "" } else { "s" },
+                floor_u(s, b.storeys - 1) * 1e3
+            ),
+            egui::FontId::proportional(13.0),
+            text,
+        );
+    }
+    if !gpu_bars.is_empty() {
+        let world = [vp.left, vp.right, vp.bottom, vp.top];
+        let count = gpu_bars.len() as u32;
+        vp.paint_bars(ui, uniforms(world, t, count), gpu_bars, d.gpu.clone());
+    }
+    // Contact points: a mark at each level on each side, red while it carries force.
+    for (l, level) in r.levels.iter().enumerate() {
+        let force = sample(&r.time_s, &r.level_force_n[l], t);
+        let colour = if force > 0.0 {
+            Color32::from_rgb(220, 60, 50)
+        } else {
+            Color32::from_rgb(240, 180, 60)
+        };
+        for (s, a) in [(0, &level.left), (1, &level.right)] {
+            let u = attached(&r.floor_displacement_m[s], &r.time_s, a, t) * exaggeration + xg;
+            let p = to_screen(inner[s] + u, level.elevation_m - 0.5 * slab_t);
+            painter.circle_filled(p, 4.0, colour);
+        }
+    }
+    let f = sample(&r.time_s, &r.force_n, t);
+    if f > 0.0 {
+        painter.text(
+            to_screen(0.0, height + 1.2),
+            egui::Align2::CENTER_BOTTOM,
+            format!("pounding: {:.3e} N", f),
+            egui::FontId::proportional(14.0),
+            Color32::from_rgb(220, 60, 50),
+        );
+    }
+    painter.text(
+        Pos2::new(rect.right() - 8.0, rect.top() + 6.0),
+        egui::Align2::RIGHT_TOP,
+        format!("t = {t:.4} s, drift x{exaggeration:.0}, ground to scale"),
+        egui::FontId::proportional(12.0),
+        text,
+    );
+}

@@ -1,0 +1,443 @@
+//! A shear building's modes, and each mode's exact response over a step.
+//!
+//! Floor j (1..N) carries the mass m_j; storey j, between floors j-1 and j (floor 0 is the
+//! ground), has the shear stiffness k_j. With u relative to the ground,
+//! M u'' + C u' + K u = -M 1 a_g + f, K tridiagonal. Its modes (K phi = w^2 M phi,
+//! phi^T M phi = 1) decouple the equations for any classical damping (modal, or Rayleigh
+//! C = a M + b K): q_k'' + 2 zeta_k w_k q_k' + w_k^2 q_k = g_k(t) with g_k = phi_k^T (f - M 1 a_g).
+//!
+//! Between samples of a piecewise-linear forcing each mode's response is exact: the augmented
+//! state y = [q, q', g, g'] obeys y' = A y with A constant, so y(s) = exp(A s) y(0). The same
+//! exponential, through Van Loan's block matrices, gives the integrals an energy ledger needs
+//! (the integral of q and of q'^2 over the step) exactly, so the ledger balances to round-off.
+
+/// The modes of one building.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Modes {
+    /// Circular frequencies w_k [rad/s], ascending.
+    pub omega_rad_s: Vec<f64>,
+    /// Damping ratio of each mode.
+    pub damping: Vec<f64>,
+    /// Mass-normalised shapes: `shapes[k][j]` is mode k at floor j (0-based).
+    pub shapes: Vec<Vec<f64>>,
+    /// Participation factors Gamma_k = phi_k^T M 1 [sqrt(kg)].
+    pub participation: Vec<f64>,
+}
+
+/// How a building's damping is built from its ratio zeta.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DampingModel {
+    /// zeta in every mode: C = M Phi diag(2 zeta w) Phi^T M.
+    Modal,
+    /// C = a M + b K with zeta in modes i and j (1-based); the other modes get
+    /// a / (2 w) + b w / 2.
+    Rayleigh { modes: [usize; 2] },
+}
+
+impl Modes {
+    /// The modes of floors with `masses` [kg] over storeys of `stiffnesses` [N/m], damped by
+    /// `zeta` as `model` says.
+    pub fn of_shear_building(
+        masses: &[f64],
+        stiffnesses: &[f64],
+        zeta: f64,
+        model: DampingModel,
+    ) -> Self {
+        let n = masses.len();
+        debug_assert_eq!(n, stiffnesses.len());
+        // A = M^-1/2 K M^-1/2 is symmetric; its eigenvectors v give phi = M^-1/2 v.
+        let inv_sqrt_m: Vec<f64> = masses.iter().map(|m| 1.0 / m.sqrt()).collect();
+        let mut a = vec![vec![0.0; n]; n];
+        for j in 0..n {
+            let above = if j + 1 < n { stiffnesses[j + 1] } else { 0.0 };
+            a[j][j] = (stiffnesses[j] + above) * inv_sqrt_m[j] * inv_sqrt_m[j];
+            if j + 1 < n {
+                let off = -stiffnesses[j + 1] * inv_sqrt_m[j] * inv_sqrt_m[j + 1];
+                a[j][j + 1] = off;
+                a[j + 1][j] = off;
+            }
+        }
+        let (values, vectors) = symmetric_eigen(a);
+        let mut order: Vec<usize> = (0..n).collect();
+        order.sort_by(|&x, &y| values[x].total_cmp(&values[y]));
+        let mut omega = Vec::with_capacity(n);
+        let mut shapes = Vec::with_capacity(n);
+        for &k in &order {
+            omega.push(values[k].max(0.0).sqrt());
+            let mut phi: Vec<f64> = (0..n).map(|j| vectors[j][k] * inv_sqrt_m[j]).collect();
+            // The sign of a mode is arbitrary; pick the roof's positive so output is stable.
+            if phi[n - 1] < 0.0 {
+                phi.iter_mut().for_each(|x| *x = -*x);
+            }
+            shapes.push(phi);
+        }
+        let participation = shapes
+            .iter()
+            .map(|phi| phi.iter().zip(masses).map(|(p, m)| p * m).sum())
+            .collect();
+        let damping = match model {
+            DampingModel::Modal => vec![zeta; n],
+            DampingModel::Rayleigh { modes: [i, j] } => {
+                let (wi, wj) = (omega[i.min(n) - 1], omega[j.min(n) - 1]);
+                if n == 1 || wi == wj {
+                    vec![zeta; n]
+                } else {
+                    let a = 2.0 * zeta * wi * wj / (wi + wj);
+                    let b = 2.0 * zeta / (wi + wj);
+                    omega.iter().map(|w| a / (2.0 * w) + b * w / 2.0).collect()
+                }
+            }
+        };
+        Modes {
+            omega_rad_s: omega,
+            damping,
+            shapes,
+            participation,
+        }
+    }
+
+    pub fn count(&self) -> usize {
+        self.omega_rad_s.len()
+    }
+
+    /// Periods [s], longest first.
+    pub fn periods_s(&self) -> Vec<f64> {
+        self.omega_rad_s
+            .iter()
+            .map(|w| 2.0 * std::f64::consts::PI / w)
+            .collect()
+    }
+}
+
+/// Eigenvalues and eigenvectors (columns) of a symmetric matrix, by cyclic Jacobi rotations:
+/// slow for large matrices, exact to round-off for the few storeys of a building.
+fn symmetric_eigen(mut a: Vec<Vec<f64>>) -> (Vec<f64>, Vec<Vec<f64>>) {
+    let n = a.len();
+    let mut v = vec![vec![0.0; n]; n];
+    for (i, row) in v.iter_mut().enumerate() {
+        row[i] = 1.0;
+    }
+    for _sweep in 0..100 {
+        let off: f64 = (0..n)
+            .flat_map(|i| (0..n).filter(move |&j| j != i).map(move |j| (i, j)))
+            .map(|(i, j)| a[i][j] * a[i][j])
+            .sum();
+        let diag: f64 = (0..n).map(|i| a[i][i] * a[i][i]).sum();
+        if off <= 1e-32 * diag || off == 0.0 {
+            break;
+        }
+        for p in 0..n {
+            for q in p + 1..n {
+                if a[p][q] == 0.0 {
+                    continue;
+                }
+                let theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
+                let t = theta.signum() / (theta.abs() + (theta * theta + 1.0).sqrt());
+                let t = if theta == 0.0 { 1.0 } else { t };
+                let c = 1.0 / (t * t + 1.0).sqrt();
+                let s = t * c;
+                for row in a.iter_mut() {
+                    let (akp, akq) = (row[p], row[q]);
+                    row[p] = c * akp - s * akq;
+                    row[q] = s * akp + c * akq;
+                }
+                let (row_p, row_q) = (a[p].clone(), a[q].clone());
+                for (k, (apk, aqk)) in row_p.iter().zip(&row_q).enumerate() {
+                    a[p][k] = c * apk - s * aqk;
+                    a[q][k] = s * apk + c * aqk;
+                }
+                for row in v.iter_mut() {
+                    let (vp, vq) = (row[p], row[q]);
+                    row[p] = c * vp - s * vq;
+                    row[q] = s * vp + c * vq;
+                }
+            }
+        }
+    }
+    ((0..n).map(|i| a[i][i]).collect(), v)
+}
+
+/// One mode's exact response over a step of length s with its forcing linear in time:
+/// `q(s) = q . y0`, `q'(s) = v . y0` with y0 = [q(0), q'(0), g(0), g'].
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Propagator {
+    pub q: [f64; 4],
+    pub v: [f64; 4],
+}
+
+/// Integrals over the same step: the integral of q is `int_q . y0`, of q'^2 is `y0^T w y0`.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct StepIntegrals {
+    pub int_q: [f64; 4],
+    pub w: [[f64; 4]; 4],
+}
+
+impl Propagator {
+    #[inline]
+    pub fn apply(&self, y: &[f64; 4]) -> (f64, f64) {
+        (dot(&self.q, y), dot(&self.v, y))
+    }
+}
+
+impl StepIntegrals {
+    /// The integral of q'^2 over the step.
+    #[inline]
+    pub fn velocity_squared(&self, y: &[f64; 4]) -> f64 {
+        let mut s = 0.0;
+        for i in 0..4 {
+            s += y[i] * dot(&self.w[i], y);
+        }
+        s
+    }
+}
+
+#[inline]
+fn dot(a: &[f64; 4], b: &[f64; 4]) -> f64 {
+    (a[0] * b[0] + a[1] * b[1]) + (a[2] * b[2] + a[3] * b[3])
+}
+
+/// The augmented generator in balanced coordinates z = D y, D = diag(nu, 1, 1/nu, 1/nu^2) with
+/// nu = max(w, 1/s): every entry is of the order of nu, so exp(A s) is well conditioned for any
+/// frequency and step. Returns (A_z s, D).
+fn balanced(omega: f64, zeta: f64, s: f64) -> ([[f64; 4]; 4], [f64; 4]) {
+    let nu = omega.max(1.0 / s);
+    let d = [nu, 1.0, 1.0 / nu, 1.0 / (nu * nu)];
+    let mut a = [[0.0; 4]; 4];
+    a[0][1] = nu * s;
+    a[1][0] = -omega * omega / nu * s;
+    a[1][1] = -2.0 * zeta * omega * s;
+    a[1][2] = nu * s;
+    a[2][3] = nu * s;
+    (a, d)
+}
+
+/// The exact step of one mode (see [`Propagator`]).
+pub fn propagator(omega: f64, zeta: f64, s: f64) -> Propagator {
+    let (a, d) = balanced(omega, zeta, s);
+    let e = expm(&a);
+    // y(s) = D^-1 E D y(0): row i of the map is E[i][j] d_j / d_i.
+    let row = |i: usize| std::array::from_fn(|j| e[i][j] * d[j] / d[i]);
+    Propagator {
+        q: row(0),
+        v: row(1),
+    }
+}
+
+/// The integrals of q and q'^2 over the step (see [`StepIntegrals`]), by Van Loan's block
+/// exponentials.
+pub fn step_integrals(omega: f64, zeta: f64, s: f64) -> StepIntegrals {
+    let (a, d) = balanced(omega, zeta, s);
+    // exp([[A, I], [0, 0]] s): its upper-right block is the integral of exp(A t) over [0, s].
+    let mut c = [[0.0; 8]; 8];
+    for i in 0..4 {
+        for j in 0..4 {
+            c[i][j] = a[i][j];
+        }
+        c[i][4 + i] = s;
+    }
+    let ec = expm(&c);
+    // int q = (1/d_0) row 0 of the integral, times D.
+    let int_q = std::array::from_fn(|j| ec[0][4 + j] * d[j] / d[0]);
+    // Van Loan: exp([[-A^T, Q], [0, A]] s) = [[F11, F12], [0, F22]] and the integral of
+    // exp(A^T t) Q exp(A t) over [0, s] is F22^T F12; Q picks z_1 = q'.
+    let mut v = [[0.0; 8]; 8];
+    for i in 0..4 {
+        for j in 0..4 {
+            v[i][j] = -a[j][i];
+            v[4 + i][4 + j] = a[i][j];
+        }
+    }
+    v[1][5] = s;
+    let ev = expm(&v);
+    let mut wz = [[0.0; 4]; 4];
+    for i in 0..4 {
+        for j in 0..4 {
+            wz[i][j] = (0..4).map(|k| ev[4 + k][4 + i] * ev[k][4 + j]).sum();
+        }
+    }
+    // In y: W_y = D W_z D, symmetrised against round-off.
+    let w =
+        std::array::from_fn(|i| std::array::from_fn(|j| 0.5 * (wz[i][j] + wz[j][i]) * d[i] * d[j]));
+    StepIntegrals { int_q, w }
+}
+
+/// exp(a) by scaling and squaring with a Taylor polynomial: the scaled matrix has a norm of at
+/// most 1/4, where 20 terms are exact to round-off.
+fn expm<const N: usize>(a: &[[f64; N]; N]) -> [[f64; N]; N] {
+    let norm = (0..N)
+        .map(|j| (0..N).map(|i| a[i][j].abs()).sum::<f64>())
+        .fold(0.0, f64::max);
+    let squarings = if norm > 0.25 {
+        (norm / 0.25).log2().ceil() as i32
+    } else {
+        0
+    };
+    let scale = 0.5f64.powi(squarings);
+    let x: [[f64; N]; N] = std::array::from_fn(|i| std::array::from_fn(|j| a[i][j] * scale));
+    let mut sum = identity::<N>();
+    let mut term = identity::<N>();
+    for k in 1..=20 {
+        term = matmul(&term, &x);
+        let inv = 1.0 / k as f64;
+        for row in term.iter_mut() {
+            for v in row.iter_mut() {
+                *v *= inv;
+            }
+        }
+        for i in 0..N {
+            for j in 0..N {
+                sum[i][j] += term[i][j];
+            }
+        }
+    }
+    for _ in 0..squarings {
+        sum = matmul(&sum, &sum);
+    }
+    sum
+}
+
+fn identity<const N: usize>() -> [[f64; N]; N] {
+    std::array::from_fn(|i| std::array::from_fn(|j| if i == j { 1.0 } else { 0.0 }))
+}
+
+fn matmul<const N: usize>(a: &[[f64; N]; N], b: &[[f64; N]; N]) -> [[f64; N]; N] {
+    std::array::from_fn(|i| std::array::from_fn(|j| (0..N).map(|k| a[i][k] * b[k][j]).sum()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn one_storey_is_the_oscillator_and_modal_damping_its_ratio() {
+        let m = Modes::of_shear_building(&[36_000.0], &[1.16e7], 0.05, DampingModel::Modal);
+        assert!((m.omega_rad_s[0] - (1.16e7f64 / 36_000.0).sqrt()).abs() < 1e-12);
+        assert!((m.shapes[0][0] - 1.0 / 36_000f64.sqrt()).abs() < 1e-18);
+        assert!((m.participation[0] - 36_000f64.sqrt()).abs() < 1e-9);
+        assert_eq!(m.damping, vec![0.05]);
+    }
+
+    #[test]
+    fn two_storey_modes_are_mass_orthonormal_and_solve_the_eigenproblem() {
+        let (ms, ks) = ([2.0e5, 1.5e5], [4.0e8, 3.0e8]);
+        let m = Modes::of_shear_building(&ms, &ks, 0.05, DampingModel::Modal);
+        let k = [[ks[0] + ks[1], -ks[1]], [-ks[1], ks[1]]];
+        for a in 0..2 {
+            for b in 0..2 {
+                let mass: f64 = (0..2)
+                    .map(|j| m.shapes[a][j] * ms[j] * m.shapes[b][j])
+                    .sum();
+                assert!((mass - if a == b { 1.0 } else { 0.0 }).abs() < 1e-12);
+            }
+            let w2 = m.omega_rad_s[a].powi(2);
+            for j in 0..2 {
+                let ku: f64 = (0..2).map(|i| k[j][i] * m.shapes[a][i]).sum();
+                assert!((ku - w2 * ms[j] * m.shapes[a][j]).abs() < 1e-9 * ku.abs().max(1.0));
+            }
+        }
+        // The participation factors' squares add up to the total mass.
+        let total: f64 = m.participation.iter().map(|g| g * g).sum();
+        assert!((total - 3.5e5).abs() < 1e-6);
+    }
+
+    #[test]
+    fn rayleigh_damping_gives_the_ratio_in_its_two_modes() {
+        let ms = [1.0e5; 4];
+        let ks = [2.0e8; 4];
+        let m = Modes::of_shear_building(&ms, &ks, 0.05, DampingModel::Rayleigh { modes: [1, 3] });
+        assert!((m.damping[0] - 0.05).abs() < 1e-12 && (m.damping[2] - 0.05).abs() < 1e-12);
+        assert!(m.damping[1] < 0.05 && m.damping[3] > 0.05);
+    }
+
+    /// The response of q'' + 2 z w q' + w^2 q = g0 + g1 t: the closed form, or for a very low
+    /// frequency (where the closed form cancels catastrophically) RK4 on fine steps.
+    fn closed(w: f64, z: f64, y: [f64; 4], t: f64) -> (f64, f64) {
+        if w < 1.0 {
+            let f = |tt: f64, q: f64, v: f64| y[2] + y[3] * tt - 2.0 * z * w * v - w * w * q;
+            let n = 20_000;
+            let h = t / n as f64;
+            let (mut q, mut v) = (y[0], y[1]);
+            for i in 0..n {
+                let tt = i as f64 * h;
+                let (k1q, k1v) = (v, f(tt, q, v));
+                let (k2q, k2v) = (
+                    v + 0.5 * h * k1v,
+                    f(tt + 0.5 * h, q + 0.5 * h * k1q, v + 0.5 * h * k1v),
+                );
+                let (k3q, k3v) = (
+                    v + 0.5 * h * k2v,
+                    f(tt + 0.5 * h, q + 0.5 * h * k2q, v + 0.5 * h * k2v),
+                );
+                let (k4q, k4v) = (v + h * k3v, f(tt + h, q + h * k3q, v + h * k3v));
+                q += h / 6.0 * (k1q + 2.0 * k2q + 2.0 * k3q + k4q);
+                v += h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+            }
+            return (q, v);
+        }
+        let wd = w * (1.0 - z * z).sqrt();
+        // Particular solution of q'' + 2 z w q' + w^2 q = g0 + g1 t: q_p = a + b t.
+        let b = y[3] / (w * w);
+        let a = (y[2] - 2.0 * z * w * b) / (w * w);
+        let (c0, v0) = (y[0] - a, y[1] - b);
+        let e = (-z * w * t).exp();
+        let (s, c) = (wd * t).sin_cos();
+        let h = e * (c0 * c + (v0 + z * w * c0) / wd * s);
+        let hd = e * (v0 * c - (z * w * v0 + w * w * c0) / wd * s);
+        (h + a + b * t, hd + b)
+    }
+
+    #[test]
+    fn the_propagator_is_the_closed_form_for_short_and_long_steps_and_any_damping() {
+        let y = [0.01, -0.3, 2.0, -15.0];
+        for (w, z) in [(17.95, 0.05), (300.0, 0.0), (3.0, 0.9), (1e-3, 0.2)] {
+            for s in [1e-6, 4.6e-5, 0.02, 0.35] {
+                let p = propagator(w, z, s);
+                let (q, v) = p.apply(&y);
+                let (qc, vc) = closed(w, z, y, s);
+                let tol = 1e-12 * (1.0 + qc.abs() + y[0].abs() + y[1].abs() * s);
+                assert!((q - qc).abs() < tol, "w {w} z {z} s {s}: {q} vs {qc}");
+                assert!(
+                    (v - vc).abs() < 1e-10 * (1.0 + vc.abs()),
+                    "w {w} s {s}: {v} vs {vc}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn step_integrals_match_quadrature_of_the_closed_form() {
+        let y = [0.01, -0.3, 2.0, -15.0];
+        for (w, z, s) in [(17.95, 0.05, 0.02), (300.0, 0.02, 0.02), (5.0, 0.5, 1e-4)] {
+            let i = step_integrals(w, z, s);
+            // Gauss-Legendre, 400 panels of 3 points: exact to round-off for these.
+            let (gx, gw) = (
+                [-(0.6f64).sqrt(), 0.0, (0.6f64).sqrt()],
+                [5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0],
+            );
+            let (mut int_q, mut int_v2) = (0.0, 0.0);
+            let panels = 400;
+            for p in 0..panels {
+                let (a, b) = (
+                    s * p as f64 / panels as f64,
+                    s * (p + 1) as f64 / panels as f64,
+                );
+                for k in 0..3 {
+                    let t = 0.5 * (a + b) + 0.5 * (b - a) * gx[k];
+                    let (q, v) = closed(w, z, y, t);
+                    int_q += 0.5 * (b - a) * gw[k] * q;
+                    int_v2 += 0.5 * (b - a) * gw[k] * v * v;
+                }
+            }
+            let got_q: f64 = (0..4).map(|j| i.int_q[j] * y[j]).sum();
+            assert!(
+                (got_q - int_q).abs() < 1e-11 * int_q.abs().max(1e-12),
+                "{got_q} vs {int_q}"
+            );
+            let got_v2 = i.velocity_squared(&y);
+            assert!(
+                (got_v2 - int_v2).abs() < 1e-10 * int_v2,
+                "{got_v2} vs {int_v2}"
+            );
+        }
+    }
+}

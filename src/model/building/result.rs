@@ -1,0 +1,167 @@
+//! What a pounding run returns: histories, contacts grouped into impacts, peaks, the energy
+//! ledger, statistics and warnings.
+
+use super::levels::Level;
+use super::modal::Modes;
+use super::{ContactModel, Warning};
+use crate::model::field::BarWaves;
+
+/// One interval of contact at one level.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RawContact {
+    /// Index into [`BuildingResult::levels`].
+    pub level: usize,
+    pub start_s: f64,
+    pub end_s: f64,
+    pub peak_force_n: f64,
+    pub impulse_ns: f64,
+    /// Relative approach velocity at onset [m/s].
+    pub approach_velocity_m_s: f64,
+}
+
+/// Contacts at one level merged into one impact (closer than `merge_gap_s`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ImpactEvent {
+    pub level: usize,
+    pub start_s: f64,
+    pub end_s: f64,
+    pub peak_force_n: f64,
+    pub impulse_ns: f64,
+    pub approach_velocity_m_s: f64,
+    /// Indices into the raw contact list.
+    pub contacts: Vec<usize>,
+}
+
+impl ImpactEvent {
+    pub fn duration_s(&self) -> f64 {
+        self.end_s - self.start_s
+    }
+}
+
+/// Where the energy went [J]. The ledger balances:
+/// initial + input = damping + contact + final + stored.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct BuildingEnergy {
+    /// Kinetic and strain energy of the buildings at t = 0 (an initial velocity).
+    pub initial_j: f64,
+    /// Work of the ground's inertial forces on the buildings.
+    pub input_j: f64,
+    pub building_damping_j: f64,
+    /// Energy the contact took from the buildings and did not give back (dissipated by a damped
+    /// element or by the restitution of stereomechanics, or carried into the slabs' waves).
+    pub contact_j: f64,
+    /// Kinetic and strain energy of the buildings at the end.
+    pub final_j: f64,
+    /// Energy still stored in the contact elements at the end.
+    pub stored_contact_j: f64,
+}
+
+impl BuildingEnergy {
+    /// What the ledger fails to account for [J]: positive where energy appeared from nowhere.
+    pub fn residual_j(&self) -> f64 {
+        self.building_damping_j + self.contact_j + self.final_j + self.stored_contact_j
+            - self.initial_j
+            - self.input_j
+    }
+
+    /// The residual relative to the energy that entered (initial plus input).
+    pub fn balance_error(&self) -> f64 {
+        let scale = (self.initial_j + self.input_j.abs()).max(f64::MIN_POSITIVE);
+        self.residual_j() / scale
+    }
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct BuildingStats {
+    /// Steps of every kind: free steps between samples of the record, contact steps.
+    pub steps: usize,
+    pub contact_steps: usize,
+    /// The step inside contacts, and the spacing at which the free motion is checked [s].
+    pub fine_step_s: f64,
+    /// The longest free step [s].
+    pub coarse_step_s: f64,
+    pub steps_per_scale: f64,
+    pub wall_time_s: f64,
+}
+
+/// A level's slabs' waves (Sears): left and right, `None` where a column meets the floor.
+pub type LevelWaves = [Option<BarWaves>; 2];
+
+#[derive(Debug, Clone)]
+pub struct BuildingResult {
+    pub contact: ContactModel,
+    /// The contact points, lowest first.
+    pub levels: Vec<Level>,
+    /// Both buildings' modes.
+    pub modes: [Modes; 2],
+    pub time_s: Vec<f64>,
+    pub ground_m_s2: Vec<f64>,
+    /// Roof displacement relative to the ground [m].
+    pub displacement_m: [Vec<f64>; 2],
+    /// Roof velocity relative to the ground [m/s].
+    pub velocity_m_s: [Vec<f64>; 2],
+    /// Roof absolute acceleration [m/s^2].
+    pub acceleration_m_s2: [Vec<f64>; 2],
+    /// Every floor's displacement: `floor_displacement_m[side][floor][sample]` [m].
+    pub floor_displacement_m: [Vec<Vec<f64>>; 2],
+    /// The pounding force summed over the levels [N].
+    pub force_n: Vec<f64>,
+    /// Each level's force: `level_force_n[level][sample]` [N].
+    pub level_force_n: Vec<Vec<f64>>,
+    pub contacts: Vec<RawContact>,
+    pub impacts: Vec<ImpactEvent>,
+    /// Roof peaks |u| over the whole motion (located between samples too) [m].
+    pub peak_displacement_m: [f64; 2],
+    /// Every floor's peak |u| [m].
+    pub peak_floor_displacement_m: [Vec<f64>; 2],
+    /// Every storey's peak |u_j - u_{j-1}| / h_j.
+    pub peak_drift_ratio: [Vec<f64>; 2],
+    pub max_pounding_force_n: f64,
+    pub max_force_by_level_n: Vec<f64>,
+    /// The largest |u| of each level's contact point on each side [m]: a floor's, or a column
+    /// point's between two floors.
+    pub peak_level_displacement_m: Vec<[f64; 2]>,
+    /// The largest closing motion at each level, u_left - u_right at the point, over the run
+    /// [m]: the smallest gap that avoids contact there (for a run without contact).
+    pub max_closing_m: Vec<f64>,
+    /// The Sears slabs' waves at each level (empty for the other elements).
+    pub slab_waves: Vec<LevelWaves>,
+    pub energy: BuildingEnergy,
+    pub stats: BuildingStats,
+    pub warnings: Vec<Warning>,
+}
+
+/// Groups raw contacts into impact events, level by level: a contact starting within
+/// `merge_gap_s` of the previous one's end at the same level joins its event. Events are listed
+/// by start time.
+pub fn group_impacts(contacts: &[RawContact], merge_gap_s: f64) -> Vec<ImpactEvent> {
+    let mut out: Vec<ImpactEvent> = Vec::new();
+    let mut open: Vec<Option<usize>> = Vec::new();
+    for (i, c) in contacts.iter().enumerate() {
+        if open.len() <= c.level {
+            open.resize(c.level + 1, None);
+        }
+        match open[c.level] {
+            Some(e) if c.start_s - out[e].end_s < merge_gap_s => {
+                let ev = &mut out[e];
+                ev.end_s = ev.end_s.max(c.end_s);
+                ev.peak_force_n = ev.peak_force_n.max(c.peak_force_n);
+                ev.impulse_ns += c.impulse_ns;
+                ev.contacts.push(i);
+            }
+            _ => {
+                open[c.level] = Some(out.len());
+                out.push(ImpactEvent {
+                    level: c.level,
+                    start_s: c.start_s,
+                    end_s: c.end_s,
+                    peak_force_n: c.peak_force_n,
+                    impulse_ns: c.impulse_ns,
+                    approach_velocity_m_s: c.approach_velocity_m_s,
+                    contacts: vec![i],
+                })
+            }
+        }
+    }
+    out
+}

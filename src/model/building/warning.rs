@@ -1,0 +1,52 @@
+//! What a reader of a building run must know besides its numbers, as variants (tests match the
+//! kind, never a phrase); the message is the `Display`.
+
+use std::fmt;
+
+#[derive(Debug, Clone, PartialEq)]
+pub enum Warning {
+    /// The contact's time scale needs a finer grid than the step or memory budget allows; a
+    /// coarser grid is used (stable: the contact force is implicit) and the force's rise is not
+    /// resolved.
+    GridOverBudget {
+        scale_s: f64,
+        wanted_s: f64,
+        used_s: f64,
+        max_steps: usize,
+    },
+    /// The Sears paper reading's validity number exceeds pi/2 at a level.
+    PaperReadingUnstable { level: usize, a_tau: f64 },
+    /// Still in contact when the record ended.
+    InContactAtEnd { end_s: f64 },
+    /// The energy ledger does not balance (a defect: it balances to round-off by construction).
+    CreatedEnergy { joules: f64, relative: f64 },
+}
+
+impl fmt::Display for Warning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Warning::GridOverBudget {
+                scale_s,
+                wanted_s,
+                used_s,
+                max_steps,
+            } => write!(
+                f,
+                "the contact's time scale ({scale_s:.3e} s) needs a step of {wanted_s:.3e} s, over the step or memory budget (solver.max_steps = {max_steps}) for this record: using {used_s:.3e} s, which does not resolve the force's rise; raise solver.max_steps or shorten the record for accurate forces"
+            ),
+            Warning::PaperReadingUnstable { level, a_tau } => write!(
+                f,
+                "at level {}, the Sears paper reading's validity number a tau = {a_tau:.3} exceeds pi/2: this reading oscillates and creates energy once separation clips the force (docs/model.md); use contact.reading = end or a softer contact",
+                level + 1
+            ),
+            Warning::InContactAtEnd { end_s } => write!(
+                f,
+                "the buildings were still in contact at the end of the record (t = {end_s} s)"
+            ),
+            Warning::CreatedEnergy { joules, relative } => write!(
+                f,
+                "the energy ledger does not balance: {joules:.3e} J ({relative:.2e} of the energy that entered) unaccounted for"
+            ),
+        }
+    }
+}
