@@ -160,6 +160,12 @@ impl BuildingScene {
         }
     }
 
+    /// Forgets typed text (after a preset replaces the values).
+    pub fn reset_fields(&mut self) {
+        self.fields.clear();
+        self.level = None;
+    }
+
     /// Loads a ground-motion file (a path typed, dropped or chosen in a dialog).
     pub fn load_motion(&mut self, path: String) {
         self.motion_path = path;

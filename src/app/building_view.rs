@@ -262,8 +262,8 @@ pub fn draw(ui: &mut egui::Ui, rect: egui::Rect, d: &BuildingDrawing, t: f64, ex
     let f = sample(&r.time_s, &r.force_n, t);
     if f > 0.0 {
         painter.text(
-            to_screen(0.0, height + 1.2),
-            egui::Align2::CENTER_BOTTOM,
+            Pos2::new(rect.left() + 8.0, rect.top() + 6.0),
+            egui::Align2::LEFT_TOP,
             format!("pounding: {:.3e} N", f),
             egui::FontId::proportional(14.0),
             Color32::from_rgb(220, 60, 50),

@@ -97,6 +97,7 @@ pub struct PoundingApp {
     dark: bool,
     help: bool,
     preset_choice: String,
+    building_preset: String,
     path: String,
     message: Option<(String, bool)>,
     exporter: export::Exporter,
@@ -156,7 +157,16 @@ impl PoundingApp {
         if let Some(s) = launch.scene {
             scene = s;
         }
-        if let Some(p) = &launch.preset {
+        // A launch preset goes to the scene it is written for.
+        let building_launch = launch
+            .preset
+            .as_deref()
+            .filter(|p| preset::find(p).is_ok_and(|(text, _)| preset::scene(&text) == "buildings"));
+        if let Some(p) = launch
+            .preset
+            .as_deref()
+            .filter(|_| building_launch.is_none())
+        {
             match preset::load_for::<ImpactSetup>(p, "impact") {
                 Ok(s) => bar_setup = s,
                 Err(e) => errors.push(e.to_string()),
@@ -164,7 +174,15 @@ impl PoundingApp {
         }
         let mut building_setup: crate::io::building_settings::BuildingSetup =
             preset::load_for("paper-buildings", "buildings").unwrap_or_default();
-        if let Some(text) = storage.and_then(|s| s.get_string(BUILDINGS_KEY)) {
+        if let Some(p) = building_launch {
+            match preset::load_for(p, "buildings") {
+                Ok(s) => building_setup = s,
+                Err(e) => errors.push(e.to_string()),
+            }
+            if launch.scene.is_none() {
+                scene = SceneKind::Buildings;
+            }
+        } else if let Some(text) = storage.and_then(|s| s.get_string(BUILDINGS_KEY)) {
             let mut restored = building_setup.clone();
             match preset::apply_text(&mut restored, &text, "the last session's building scene") {
                 Ok(()) => building_setup = restored,
@@ -219,6 +237,10 @@ impl PoundingApp {
                 .clone()
                 .filter(|p| EMBEDDED.iter().any(|(n, _)| n == p))
                 .unwrap_or_else(|| preset::DEFAULT_PRESET.into()),
+            building_preset: building_launch
+                .filter(|p| EMBEDDED.iter().any(|(n, _)| n == p))
+                .unwrap_or("paper-buildings")
+                .to_string(),
             path: "scene.toml".into(),
             message: (!errors.is_empty()).then(|| (errors.join("; "), true)),
             exporter: export::Exporter::default(),
@@ -288,17 +310,45 @@ impl PoundingApp {
                 );
             ui.separator();
             if self.scene == SceneKind::Buildings {
+                let mut load = None;
                 if ui
                     .button("Paper's buildings")
-                    .on_hover_text("Reset to the paper's Table 1 case")
+                    .on_hover_text(
+                        "The paper's Section 4 as published: Table 1 on 8 s of El Centro 1940",
+                    )
                     .clicked()
                 {
+                    load = Some("paper-buildings".to_string());
+                }
+                let label = ui.label("preset").id;
+                egui::ComboBox::from_id_salt("building-preset")
+                    .selected_text(&self.building_preset)
+                    .show_ui(ui, |ui| {
+                        for (name, text) in EMBEDDED
+                            .iter()
+                            .filter(|(_, t)| preset::scene(t) == "buildings")
+                        {
+                            ui.selectable_value(&mut self.building_preset, name.to_string(), *name)
+                                .on_hover_text(preset::description(text).unwrap_or_default());
+                        }
+                    })
+                    .response
+                    .labelled_by(label);
+                if ui
+                    .button("Load preset")
+                    .on_hover_text("Replace the buildings by the preset's")
+                    .clicked()
+                {
+                    load = Some(self.building_preset.clone());
+                }
+                if let Some(name) = load {
                     match preset::load_for::<crate::io::building_settings::BuildingSetup>(
-                        "paper-buildings",
+                        &name,
                         "buildings",
                     ) {
                         Ok(s) => {
                             self.buildings.setup = s;
+                            self.buildings.reset_fields();
                             self.buildings.request();
                         }
                         Err(e) => self.message = Some((e.to_string(), true)),

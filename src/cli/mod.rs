@@ -3,6 +3,7 @@
 pub mod accuracy;
 pub mod building_report;
 pub mod buildings;
+pub mod gaps;
 pub mod impact;
 pub mod report;
 pub mod study;
@@ -36,6 +37,9 @@ pub enum Command {
     /// Rerun one of the paper's figures (or `all`): PNG, SVG and CSV per figure, and the numbers
     /// its claims are checked against (see `pounding study --list`).
     Study(study::StudyArgs),
+    /// The gap that avoids pounding for a building pair, record by record (in parallel), against
+    /// the ABS and SRSS code rules; a table, CSV, JSON and a plot.
+    Gaps(gaps::GapsArgs),
     /// Open the explorer window (what `pounding` with no command does).
     #[cfg(feature = "gui")]
     Window(WindowArgs),
@@ -87,6 +91,7 @@ pub fn run(cli: Cli, out: &mut dyn std::io::Write) -> anyhow::Result<()> {
         Some(Command::Accuracy(args)) => accuracy::run(&args, out),
         Some(Command::Sweep(args)) => sweep::run(&args, out),
         Some(Command::Study(args)) => study::run(&args, out),
+        Some(Command::Gaps(args)) => gaps::run(&args, out),
         #[cfg(feature = "gui")]
         Some(Command::Window(args)) => window(&args),
         #[cfg(feature = "gui")]
@@ -232,4 +237,42 @@ pub fn is_broken_pipe(e: &anyhow::Error) -> bool {
         c.downcast_ref::<std::io::Error>()
             .is_some_and(|io| io.kind() == std::io::ErrorKind::BrokenPipe)
     })
+}
+
+/// Runs `work` while a progress bar on standard error shows what `progress` counts (hidden
+/// with `quiet`, and until the work has planned its solves, so it never shows an empty 0/0 bar).
+pub(crate) fn with_bar<T: Send>(
+    name: &str,
+    progress: &pounding::study::Progress,
+    quiet: bool,
+    work: impl FnOnce() -> T + Send,
+) -> T {
+    let bar = indicatif::ProgressBar::hidden();
+    bar.set_style(
+        indicatif::ProgressStyle::with_template(
+            "{prefix:>20} [{bar:40}] {pos}/{len} solves, {elapsed}",
+        )
+        .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar())
+        .progress_chars("=> "),
+    );
+    bar.set_prefix(name.to_string());
+    let out = std::thread::scope(|scope| {
+        let job = scope.spawn(work);
+        let mut drawn = quiet;
+        while !job.is_finished() {
+            if !drawn && progress.total() > 0 {
+                bar.set_draw_target(indicatif::ProgressDrawTarget::stderr());
+                drawn = true;
+            }
+            bar.set_length(progress.total() as u64);
+            bar.set_position(progress.done() as u64);
+            std::thread::sleep(std::time::Duration::from_millis(20));
+        }
+        job.join()
+    });
+    bar.finish_and_clear();
+    match out {
+        Ok(v) => v,
+        Err(panic) => std::panic::resume_unwind(panic),
+    }
 }

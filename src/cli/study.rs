@@ -3,13 +3,12 @@
 
 use anyhow::{Context as _, anyhow, bail};
 use clap::Args;
-use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use pounding::export::plot::LinePlot;
 use pounding::study::{self, Context, Finding, Progress, Study};
 use serde::Serialize;
 use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
 #[derive(Args, Debug, Default)]
 pub struct StudyArgs {
@@ -134,7 +133,7 @@ pub fn run(args: &StudyArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             motion: motion.as_ref(),
             buildings: buildings.clone(),
         };
-        let (output, wall_time_s) = with_bar(s.name, &progress, args.quiet, || {
+        let (output, wall_time_s) = super::with_bar(s.name, &progress, args.quiet, || {
             let t = Instant::now();
             ((s.run)(&ctx), t.elapsed().as_secs_f64())
         });
@@ -193,41 +192,6 @@ pub fn run(args: &StudyArgs, out: &mut dyn Write) -> anyhow::Result<()> {
 
 /// Runs `work` while a progress bar on standard error follows `progress` (drawn only on a
 /// terminal).
-fn with_bar<T: Send>(
-    name: &str,
-    progress: &Progress,
-    quiet: bool,
-    work: impl FnOnce() -> T + Send,
-) -> T {
-    // Hidden until the study has planned its solves, so it never shows an empty 0/0 bar.
-    let bar = ProgressBar::hidden();
-    bar.set_style(
-        ProgressStyle::with_template("{prefix:>20} [{bar:40}] {pos}/{len} solves, {elapsed}")
-            .unwrap_or_else(|_| ProgressStyle::default_bar())
-            .progress_chars("=> "),
-    );
-    bar.set_prefix(name.to_string());
-    let out = std::thread::scope(|scope| {
-        let job = scope.spawn(work);
-        let mut drawn = quiet;
-        while !job.is_finished() {
-            if !drawn && progress.total() > 0 {
-                bar.set_draw_target(ProgressDrawTarget::stderr());
-                drawn = true;
-            }
-            bar.set_length(progress.total() as u64);
-            bar.set_position(progress.done() as u64);
-            std::thread::sleep(Duration::from_millis(20));
-        }
-        job.join()
-    });
-    bar.finish_and_clear();
-    match out {
-        Ok(v) => v,
-        Err(panic) => std::panic::resume_unwind(panic),
-    }
-}
-
 fn write_figure(
     plot: &LinePlot,
     csv: &str,

@@ -35,6 +35,14 @@ pub const EMBEDDED: &[(&str, &str)] = &[
         "paper-buildings",
         include_str!("../../assets/presets/paper-buildings.toml"),
     ),
+    (
+        "mdof-3-5",
+        include_str!("../../assets/presets/mdof-3-5.toml"),
+    ),
+    (
+        "mdof-unequal",
+        include_str!("../../assets/presets/mdof-unequal.toml"),
+    ),
 ];
 
 /// The default scene.

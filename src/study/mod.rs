@@ -5,6 +5,7 @@
 //! it, the window a progress bar and a cancel button.
 
 pub mod buildings;
+pub mod gaps;
 pub mod paper;
 pub mod sweep;
 

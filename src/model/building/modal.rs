@@ -211,8 +211,14 @@ fn balanced(omega: f64, zeta: f64, s: f64) -> ([[f64; 4]; 4], [f64; 4]) {
     (a, d)
 }
 
-/// The exact step of one mode (see [`Propagator`]).
+/// The exact step of one mode (see [`Propagator`]); the identity for a step of zero.
 pub fn propagator(omega: f64, zeta: f64, s: f64) -> Propagator {
+    if s <= 0.0 {
+        return Propagator {
+            q: [1.0, 0.0, 0.0, 0.0],
+            v: [0.0, 1.0, 0.0, 0.0],
+        };
+    }
     let (a, d) = balanced(omega, zeta, s);
     let e = expm(&a);
     // y(s) = D^-1 E D y(0): row i of the map is E[i][j] d_j / d_i.
@@ -226,6 +232,9 @@ pub fn propagator(omega: f64, zeta: f64, s: f64) -> Propagator {
 /// The integrals of q and q'^2 over the step (see [`StepIntegrals`]), by Van Loan's block
 /// exponentials.
 pub fn step_integrals(omega: f64, zeta: f64, s: f64) -> StepIntegrals {
+    if s <= 0.0 {
+        return StepIntegrals::default();
+    }
     let (a, d) = balanced(omega, zeta, s);
     // exp([[A, I], [0, 0]] s): its upper-right block is the integral of exp(A t) over [0, s].
     let mut c = [[0.0; 8]; 8];
@@ -402,6 +411,13 @@ mod tests {
                 );
             }
         }
+    }
+
+    #[test]
+    fn a_step_of_zero_changes_nothing() {
+        let y = [0.01, -0.3, 2.0, -15.0];
+        assert_eq!(propagator(17.95, 0.05, 0.0).apply(&y), (y[0], y[1]));
+        assert_eq!(step_integrals(17.95, 0.05, 0.0).velocity_squared(&y), 0.0);
     }
 
     #[test]

@@ -104,6 +104,8 @@ pub struct BuildingResult {
     pub acceleration_m_s2: [Vec<f64>; 2],
     /// Every floor's displacement: `floor_displacement_m[side][floor][sample]` [m].
     pub floor_displacement_m: [Vec<Vec<f64>>; 2],
+    /// Every floor's velocity relative to the ground [m/s].
+    pub floor_velocity_m_s: [Vec<Vec<f64>>; 2],
     /// The pounding force summed over the levels [N].
     pub force_n: Vec<f64>,
     /// Each level's force: `level_force_n[level][sample]` [N].

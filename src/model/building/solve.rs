@@ -175,6 +175,10 @@ pub fn solve(sc: &BuildingScenario, motion: &GroundMotion) -> Result<BuildingRes
         vec![Vec::with_capacity(n); sc.left.storeys],
         vec![Vec::with_capacity(n); sc.right.storeys],
     ];
+    let mut floor_v: [Vec<Vec<f64>>; 2] = [
+        vec![Vec::with_capacity(n); sc.left.storeys],
+        vec![Vec::with_capacity(n); sc.right.storeys],
+    ];
     let mut roof_v = [Vec::with_capacity(n), Vec::with_capacity(n)];
     let mut roof_a = [Vec::with_capacity(n), Vec::with_capacity(n)];
     let mut level_force = vec![Vec::with_capacity(n); levels.len()];
@@ -185,6 +189,7 @@ pub fn solve(sc: &BuildingScenario, motion: &GroundMotion) -> Result<BuildingRes
         for side in 0..2 {
             for (f, u) in s.floors[side].iter().enumerate() {
                 floors[side][f].push(*u);
+                floor_v[side][f].push(s.floor_v[side][f]);
             }
             roof_v[side].push(s.roof_v[side]);
             roof_a[side].push(s.roof_a[side] + s.ground);
@@ -201,6 +206,19 @@ pub fn solve(sc: &BuildingScenario, motion: &GroundMotion) -> Result<BuildingRes
     let max_by_level = stepper.max_forces();
     let contacts = std::mem::take(&mut stepper.contacts);
     let impacts = group_impacts(&contacts, sc.merge_gap_s);
+    if sc.contact == ContactModel::Stereo {
+        let chattering: Vec<usize> = impacts
+            .iter()
+            .map(|e| e.contacts.len())
+            .filter(|&n| n > 10)
+            .collect();
+        if !chattering.is_empty() {
+            warnings.push(Warning::StereoChatter {
+                impacts: chattering.len(),
+                exchanges: chattering.iter().sum(),
+            });
+        }
+    }
     let (peak_floor, peak_drift, peak_points) = stepper.peaks();
     Ok(BuildingResult {
         contact: sc.contact,
@@ -218,6 +236,7 @@ pub fn solve(sc: &BuildingScenario, motion: &GroundMotion) -> Result<BuildingRes
         peak_floor_displacement_m: peak_floor,
         peak_drift_ratio: peak_drift,
         floor_displacement_m: floors,
+        floor_velocity_m_s: floor_v,
         force_n: force,
         level_force_n: level_force,
         max_pounding_force_n: max_by_level.iter().cloned().fold(0.0, f64::max),

@@ -158,6 +158,10 @@ struct Point {
     v0: f64,
     /// The open contact (an index into the contact list).
     open: Option<usize>,
+    /// The grid step of the last stereomechanical exchange here: a sequence of exchanges that
+    /// accumulates at an instant (floors pressed together, each rebound shorter by e) is cut at
+    /// one exchange per level per step.
+    exchanged_in: Option<usize>,
     max_closing: f64,
     max_force: f64,
 }
@@ -234,8 +238,9 @@ const ONSET_GRADING: u32 = 8;
 pub(super) struct Sample {
     pub t: f64,
     pub ground: f64,
-    /// Floors of each side.
+    /// Floors of each side, and their velocities.
     pub floors: [Vec<f64>; 2],
+    pub floor_v: [Vec<f64>; 2],
     pub roof_v: [f64; 2],
     /// Roof acceleration relative to the ground.
     pub roof_a: [f64; 2],
@@ -352,6 +357,7 @@ impl<'a> Stepper<'a> {
                     rate: 0.0,
                     v0: 0.0,
                     open: None,
+                    exchanged_in: None,
                     max_closing: f64::NEG_INFINITY,
                     max_force: 0.0,
                 }
@@ -512,6 +518,7 @@ impl<'a> Stepper<'a> {
         let t = self.time();
         let ground = self.motion.at(t);
         let floors = self.floors([&self.sides[0].q, &self.sides[1].q]);
+        let floor_v = self.floors([&self.sides[0].v, &self.sides[1].v]);
         let roof_v = std::array::from_fn(|s| {
             let side = &self.sides[s];
             side.floor(&side.v, side.heights.len() - 1)
@@ -533,6 +540,7 @@ impl<'a> Stepper<'a> {
             t,
             ground,
             floors,
+            floor_v,
             roof_v,
             roof_a,
             forces: self.points.iter().map(|p| p.force).collect(),
@@ -651,15 +659,28 @@ impl<'a> Stepper<'a> {
                 let (c0, cv0) = w.prev[i];
                 w.prev[i] = (c, cv);
                 // Between grid points the closing motion is the cubic through their exact
-                // states: a maximum inside a step is found there.
+                // states: a maximum inside a step is found there, and a new largest one is
+                // refined on the exact motion (the gap that avoids contact is this maximum).
                 let inside = hermite_max(c0, cv0, c, cv, g.h);
-                p.max_closing = p.max_closing.max(c).max(inside);
+                p.max_closing = p.max_closing.max(c);
+                // The cubic is good to (w h)^4 / 384 of the amplitude: near the running maximum
+                // the exact motion decides.
+                if inside > p.max_closing - 1e-6 * p.max_closing.abs() {
+                    let (a, b) = ((j - 1) as f64 * g.h, j as f64 * g.h);
+                    let exact = self.exact_max_closing(i, &y0, a, b);
+                    let m = &mut self.points[i].max_closing;
+                    *m = m.max(exact);
+                }
+                let p = &mut self.points[i];
                 if contact == ContactModel::None || onset.is_some() {
                     continue;
                 }
                 let delta = c - gap - p.elastic();
                 let approaching = !needs_approach || cv > 0.0;
-                if (delta > 0.0 && approaching) || (!self.sears && inside > gap && cv0 > 0.0) {
+                let exchanged = p.exchanged_in == Some(self.n + j - 1);
+                if !exchanged
+                    && ((delta > 0.0 && approaching) || (!self.sears && inside > gap && cv0 > 0.0))
+                {
                     onset = Some(i);
                 }
             }
@@ -688,6 +709,32 @@ impl<'a> Stepper<'a> {
         self.n += len;
         self.record();
         Ok(Free::Done)
+    }
+
+    /// The largest closing motion of point i over [a, b] after the start of a free stretch from
+    /// `y0`, on the exact motion: where its rate falls through zero.
+    fn exact_max_closing(&self, i: usize, y0: &[Vec<[f64; 4]>; 2], a: f64, b: f64) -> f64 {
+        let p = &self.points[i];
+        let at = |s: f64| {
+            let mut c = (0.0, 0.0);
+            for (side, sign) in [(0, 1.0), (1, -1.0)] {
+                let sd = &self.sides[side];
+                for k in 0..sd.modes() {
+                    let (q, v) = propagator(sd.omega[k], sd.zeta[k], s).apply(&y0[side][k]);
+                    c.0 += sign * p.r[side][k] * q;
+                    c.1 += sign * p.r[side][k] * v;
+                }
+            }
+            c
+        };
+        let (ca, va) = if a > 0.0 { at(a) } else { self.point_now_of(p) };
+        let (cb, vb) = at(b);
+        if va > 0.0 && vb < 0.0 {
+            let s = bracket(|s| at(s).1, a, b, 1e-15 * b.max(1e-300)).mid();
+            at(s).0.max(ca).max(cb)
+        } else {
+            ca.max(cb)
+        }
     }
 
     /// A point's closing motion u_left - u_right and its rate, from modal states.
@@ -739,8 +786,8 @@ impl<'a> Stepper<'a> {
             ) || cv > 0.0;
             let inside = hermite_max(c0, cv0, c, cv, len) > self.sc.gap_m && cv0 > 0.0;
             // Leaving a contact just released, the closing motion starts at the gap: only a
-            // new approach counts.
-            let fresh = c0 < self.sc.gap_m || cv0 > 0.0;
+            // new approach counts; and one exchange per level per step.
+            let fresh = (c0 < self.sc.gap_m || cv0 > 0.0) && p.exchanged_in != Some(self.n);
             if onset.is_none() && fresh && ((c > self.sc.gap_m && approaching) || inside) {
                 onset = Some(i);
             }
@@ -856,7 +903,10 @@ impl<'a> Stepper<'a> {
         let (c, w) = self.point_now(level);
         let t_on = self.time();
         if self.sc.contact == ContactModel::Stereo {
+            // Floors already overlapping (after a cut sequence of exchanges) and not yet
+            // approaching: nothing to exchange in this step.
             self.exchange(level, w, t_on);
+            self.points[level].exchanged_in = Some(self.n);
             self.record();
             return Ok(());
         }
@@ -900,6 +950,15 @@ impl<'a> Stepper<'a> {
         Ok(())
     }
 
+    /// Whether the element's link takes hold only of approaching floors (a damped link that let
+    /// go with them still overlapping).
+    fn needs_approach(&self) -> bool {
+        matches!(
+            self.sc.contact,
+            ContactModel::Kelvin | ContactModel::HertzDamp
+        )
+    }
+
     /// The closing motion and its rate at a level now.
     fn point_now(&self, level: usize) -> (f64, f64) {
         self.point_state(
@@ -914,6 +973,7 @@ impl<'a> Stepper<'a> {
         if w <= 0.0 {
             return;
         }
+        self.points[level].exchanged_in = Some(self.n);
         let energy = self.sides[0].energy() + self.sides[1].energy();
         let p = &self.points[level];
         let inverse_mass: f64 = p.r.iter().flatten().map(|x| x * x).sum();
@@ -948,6 +1008,16 @@ impl<'a> Stepper<'a> {
         if !self.newmark {
             self.equilibrium_accelerations();
             self.newmark = true;
+        }
+        // A level out of contact follows the motion: its overlap and rate are the kinematics
+        // now, not what they were when it last let go.
+        for i in 0..self.points.len() {
+            if self.points[i].force <= 0.0 {
+                let (c, w) = self.point_now(i);
+                let p = &mut self.points[i];
+                p.delta = c - self.sc.gap_m - p.elastic();
+                p.rate = w;
+            }
         }
         let trial = self.trial(hh);
         // A Kelvin-Voigt link lets go where k delta + c delta' reaches zero, inside the step.
@@ -1069,14 +1139,23 @@ impl<'a> Stepper<'a> {
                     .map(|j| g[i][j] * forces[j])
                     .sum();
                 let rhs = predicted[i] - others;
-                let d = p
-                    .element
-                    .solve_step(g[i][i], rhs, hh, p.delta, p.rate, p.v0);
+                // A damped link that let go with the floors still overlapping takes hold again
+                // only when they approach each other (as a free step starts a contact).
+                let held =
+                    p.force > 0.0 || p.delta <= 0.0 || p.rate > 0.0 || !self.needs_approach();
+                let d = if held {
+                    p.element
+                        .solve_step(g[i][i], rhs, hh, p.delta, p.rate, p.v0)
+                } else {
+                    rhs
+                };
                 let rate = p.element.rate(hh, d, p.delta, p.rate);
                 let f = if self.sears {
                     p.element.stiffness() * d.max(0.0)
-                } else {
+                } else if held {
                     p.element.force(d, rate, p.v0)
+                } else {
+                    0.0
                 };
                 change = change.max((f - forces[i]).abs());
                 scale = scale.max(f.abs());

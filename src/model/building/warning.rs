@@ -18,6 +18,9 @@ pub enum Warning {
     PaperReadingUnstable { level: usize, a_tau: f64 },
     /// Still in contact when the record ended.
     InContactAtEnd { end_s: f64 },
+    /// Stereomechanical exchanges accumulated (floors pressed together, each rebound shorter):
+    /// cut at one per level per step, the impacts hold many exchanges.
+    StereoChatter { impacts: usize, exchanges: usize },
     /// The energy ledger does not balance (a defect: it balances to round-off by construction).
     CreatedEnergy { joules: f64, relative: f64 },
 }
@@ -42,6 +45,10 @@ impl fmt::Display for Warning {
             Warning::InContactAtEnd { end_s } => write!(
                 f,
                 "the buildings were still in contact at the end of the record (t = {end_s} s)"
+            ),
+            Warning::StereoChatter { impacts, exchanges } => write!(
+                f,
+                "stereomechanics chattered: {exchanges} instantaneous exchanges in {impacts} impacts, cut at one per level per step; the floors were pressed together, which an instantaneous exchange cannot hold (use a contact element with a force, kelvin say)"
             ),
             Warning::CreatedEnergy { joules, relative } => write!(
                 f,
