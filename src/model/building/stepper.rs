@@ -719,8 +719,8 @@ impl<'a> Stepper<'a> {
             let mut c = (0.0, 0.0);
             for (side, sign) in [(0, 1.0), (1, -1.0)] {
                 let sd = &self.sides[side];
-                for k in 0..sd.modes() {
-                    let (q, v) = propagator(sd.omega[k], sd.zeta[k], s).apply(&y0[side][k]);
+                for (k, y) in y0[side].iter().enumerate() {
+                    let (q, v) = propagator(sd.omega[k], sd.zeta[k], s).apply(y);
                     c.0 += sign * p.r[side][k] * q;
                     c.1 += sign * p.r[side][k] * v;
                 }
