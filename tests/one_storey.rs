@@ -1,0 +1,59 @@
+//! One storey each: with N = 1 the multi-storey solver gives exactly the one-storey results
+//! recorded in tests/golden/one-storey.json (the paper's buildings on 8 s of El Centro, every
+//! contact element), to 14 significant digits. `UPDATE_GOLDEN=1 cargo test --test one_storey`
+//! rewrites the file, which a change may do only where a test proves the old values wrong.
+
+use pounding::model::building::{BuildingResult, BuildingScenario, ContactModel, solve};
+
+fn figures(r: &BuildingResult) -> Vec<f64> {
+    let mut v = vec![
+        r.impacts.len() as f64,
+        r.contacts.len() as f64,
+        r.peak_displacement_m[0],
+        r.peak_displacement_m[1],
+        r.max_pounding_force_n,
+        r.energy.input_j,
+        r.energy.building_damping_j,
+        r.energy.contact_j,
+        r.energy.final_j,
+    ];
+    for e in &r.impacts {
+        v.extend([e.start_s, e.end_s, e.peak_force_n, e.impulse_ns]);
+    }
+    v
+}
+
+#[test]
+fn one_storey_buildings_reproduce_their_recorded_results_to_the_last_digit() {
+    let motion = pounding::io::motion::built_in("elcentro-1940")
+        .unwrap()
+        .truncated(8.0);
+    let mut now = serde_json::Map::new();
+    for model in ContactModel::ALL {
+        let sc = BuildingScenario {
+            contact: model,
+            ..BuildingScenario::paper()
+        };
+        assert_eq!((sc.left.storeys, sc.right.storeys), (1, 1));
+        let r = solve(&sc, &motion).unwrap();
+        now.insert(model.name().into(), serde_json::json!(figures(&r)));
+    }
+    let path = std::path::Path::new("tests/golden/one-storey.json");
+    if std::env::var_os("UPDATE_GOLDEN").is_some() {
+        std::fs::write(path, serde_json::to_string_pretty(&now).unwrap()).unwrap();
+        return;
+    }
+    let golden: serde_json::Map<String, serde_json::Value> =
+        serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    for (model, values) in &golden {
+        let want: Vec<f64> = serde_json::from_value(values.clone()).unwrap();
+        let got: Vec<f64> = serde_json::from_value(now[model].clone()).unwrap();
+        assert_eq!(got.len(), want.len(), "{model}: impact count");
+        for (i, (g, w)) in got.iter().zip(&want).enumerate() {
+            assert!(
+                (g - w).abs() <= 1e-14 * w.abs(),
+                "{model}: figure {i} is {g:e}, recorded {w:e}"
+            );
+        }
+    }
+}
