@@ -1,9 +1,15 @@
-//! Criterion benchmarks of the building pounding run: 8 s of the shipped El Centro 1940 record
-//! with each contact element.
+//! Criterion benchmarks of the building runs on 8 s of the shipped El Centro 1940 record: each
+//! contact element at the default tolerance (the paper's one-storey pair), the 3- against
+//! 5-storey pair, and the gap that avoids pounding over 20 records.
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use pounding::io::building_settings::BuildingSetup;
+use pounding::io::preset;
 use pounding::model::building::{BuildingScenario, ContactModel, solve};
 use pounding::model::motion::GroundMotion;
+use pounding::model::motion::synthetic::SyntheticSpec;
+use pounding::study::Progress;
+use pounding::study::gaps::record_gaps;
 use std::hint::black_box;
 
 fn record() -> GroundMotion {
@@ -15,12 +21,7 @@ fn record() -> GroundMotion {
 fn el_centro_8s(c: &mut Criterion) {
     let motion = record();
     let mut g = c.benchmark_group("buildings_8s");
-    for model in [
-        ContactModel::Sears,
-        ContactModel::Linear,
-        ContactModel::Kelvin,
-        ContactModel::None,
-    ] {
+    for model in ContactModel::ALL {
         let sc = BuildingScenario {
             contact: model,
             ..BuildingScenario::paper()
@@ -32,9 +33,51 @@ fn el_centro_8s(c: &mut Criterion) {
     g.finish();
 }
 
+/// Three storeys against five (the mdof-3-5 preset): three floor-to-floor levels.
+fn three_against_five(c: &mut Criterion) {
+    let motion = record();
+    let base = preset::load_for::<BuildingSetup>("mdof-3-5", "buildings")
+        .expect("shipped")
+        .scenario;
+    let mut g = c.benchmark_group("mdof_3_5_8s");
+    g.sample_size(10);
+    for model in [ContactModel::Linear, ContactModel::Sears, ContactModel::None] {
+        let sc = BuildingScenario {
+            contact: model,
+            ..base.clone()
+        };
+        g.bench_function(model.name(), |b| {
+            b.iter(|| solve(black_box(&sc), black_box(&motion)).expect("solves"))
+        });
+    }
+    g.finish();
+}
+
+/// `pounding gaps` over 20 records (El Centro and 19 synthetic ones), the 3- against 5-storey
+/// pair, in parallel: from the records loaded to every record's gaps.
+fn gaps_20_records(c: &mut Criterion) {
+    let base = preset::load_for::<BuildingSetup>("mdof-3-5", "buildings")
+        .expect("shipped")
+        .scenario;
+    let mut motions = vec![record()];
+    motions.extend((1..20).map(|seed| {
+        SyntheticSpec {
+            seed,
+            ..SyntheticSpec::default()
+        }
+        .generate()
+    }));
+    let mut g = c.benchmark_group("gaps");
+    g.sample_size(10);
+    g.bench_function("mdof_3_5_20_records", |b| {
+        b.iter(|| record_gaps(black_box(&base), &motions, &Progress::new()).expect("runs"))
+    });
+    g.finish();
+}
+
 criterion_group! {
     name = benches;
-    config = Criterion::default().sample_size(30).warm_up_time(std::time::Duration::from_secs(1)).measurement_time(std::time::Duration::from_secs(3));
-    targets = el_centro_8s
+    config = Criterion::default().sample_size(20).warm_up_time(std::time::Duration::from_secs(1)).measurement_time(std::time::Duration::from_secs(3));
+    targets = el_centro_8s, three_against_five, gaps_20_records
 }
 criterion_main!(benches);
