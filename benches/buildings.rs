@@ -41,7 +41,11 @@ fn three_against_five(c: &mut Criterion) {
         .scenario;
     let mut g = c.benchmark_group("mdof_3_5_8s");
     g.sample_size(10);
-    for model in [ContactModel::Linear, ContactModel::Sears, ContactModel::None] {
+    for model in [
+        ContactModel::Linear,
+        ContactModel::Sears,
+        ContactModel::None,
+    ] {
         let sc = BuildingScenario {
             contact: model,
             ..base.clone()

@@ -4,7 +4,12 @@
 use super::params::{Fields, Spec};
 use crate::io::building_settings::BuildingSetup;
 use crate::model::building::{Building, ContactModel, DampingModel, SlabReading};
+use crate::model::settings::{BUILDING_SETTINGS, Range};
 use eframe::egui;
+
+fn spec(key: &str) -> Spec<'static> {
+    Spec::of(BUILDING_SETTINGS, key)
+}
 
 /// The most storeys the panel offers (the command line takes up to 100).
 const MAX_STOREYS_SHOWN: usize = 20;
@@ -61,48 +66,20 @@ fn building_ui(ui: &mut egui::Ui, fields: &mut Fields, side: &str, b: &mut Build
         ));
     });
     let n = b.storeys;
-    for (key, unit, tooltip, min, max, list) in [
-        (
-            "masses",
-            "kg",
-            "Floor mass: with the stiffnesses it sets the periods",
-            1e2,
-            1e8,
-            &mut b.masses_kg,
-        ),
-        (
-            "stiffnesses",
-            "N/m",
-            "Storey shear stiffness",
-            1e4,
-            1e11,
-            &mut b.stiffnesses_n_m,
-        ),
-        (
-            "heights",
-            "m",
-            "Storey height: the floors' elevations decide where the buildings meet",
-            0.5,
-            10.0,
-            &mut b.heights_m,
-        ),
+    for (key, list) in [
+        ("masses", &mut b.masses_kg),
+        ("stiffnesses", &mut b.stiffnesses_n_m),
+        ("heights", &mut b.heights_m),
     ] {
-        let spec = |label: &'static str| Spec {
-            label,
-            unit,
-            tooltip,
-            min,
-            max,
-            log: key != "heights",
-        };
+        let each = spec(&format!("SIDE.{key}"));
         if list.len() == 1 || n == 1 {
-            let label = match key {
-                "masses" => "mass",
-                "stiffnesses" => "stiffness",
-                _ => "height",
+            let single = match key {
+                "masses" => "SIDE.mass",
+                "stiffnesses" => "SIDE.stiffness",
+                _ => "SIDE.height",
             };
             let mut v = list[0];
-            if fields.row(ui, &format!("{side}.{key}"), &spec(label), &mut v) {
+            if fields.row(ui, &format!("{side}.{key}"), &spec(single), &mut v) {
                 list[0] = v;
             }
             if n > 1
@@ -119,14 +96,9 @@ fn building_ui(ui: &mut egui::Ui, fields: &mut Fields, side: &str, b: &mut Build
                 .default_open(true)
                 .show(ui, |ui| {
                     for (j, v) in list.iter_mut().enumerate().rev() {
-                        let label: &'static str = match key {
-                            "masses" => "floor mass",
-                            "stiffnesses" => "storey stiffness",
-                            _ => "storey height",
-                        };
                         ui.horizontal(|ui| {
                             ui.label(format!("{:2}", j + 1));
-                            fields.row(ui, &format!("{side}.{key}.{j}"), &spec(label), v);
+                            fields.row(ui, &format!("{side}.{key}.{j}"), &each, v);
                         });
                     }
                 });
@@ -136,14 +108,7 @@ fn building_ui(ui: &mut egui::Ui, fields: &mut Fields, side: &str, b: &mut Build
     fields.row(
         ui,
         &format!("{side}.damping_ratio"),
-        &Spec {
-            label: "damping",
-            unit: "",
-            tooltip: "Viscous damping ratio (5% is the design-code value for concrete)",
-            min: 0.0,
-            max: 0.5,
-            log: false,
-        },
+        &spec("SIDE.damping_ratio"),
         &mut b.damping_ratio,
     );
     if n > 1 {
@@ -185,54 +150,23 @@ fn contact_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup)
     });
     // The question is which gap avoids pounding: it lives between 0 and a few centimetres, so
     // the slider is logarithmic from 0.1 mm (typed values go up to the validated maximum).
-    let mut gap = sc.gap_m;
-    if fields.row_typed(
-        ui,
-        "gap",
-        &Spec {
-            label: "gap",
-            unit: "m",
-            tooltip: "At-rest separation, the same at every level; the slider spans 0.1 mm to 0.5 m, type 0 for touching buildings",
-            min: 1e-4,
-            max: 0.5,
-            log: true,
-        },
-        (0.0, 1e3),
-        &mut gap,
-    ) {
-        sc.gap_m = gap;
-    }
+    fields.row(ui, "gap", &spec("gap"), &mut sc.gap_m);
     let mut k = sc.element_stiffness();
-    if fields.row(
-        ui,
-        "contact.stiffness",
-        &Spec {
-            label: "stiffness",
-            unit: if sc.contact.is_hertzian() {
-                "N/m^1.5"
-            } else {
-                "N/m"
-            },
-            tooltip: "Contact element stiffness (the paper: 15 GN/m)",
-            min: 1e6,
-            max: 1e14,
-            log: true,
+    let stiffness = Spec {
+        unit: if sc.contact.is_hertzian() {
+            "N/m^1.5"
+        } else {
+            "N/m"
         },
-        &mut k,
-    ) {
+        ..spec("contact.stiffness")
+    };
+    if fields.row(ui, "contact.stiffness", &stiffness, &mut k) {
         sc.stiffness = Some(k);
     }
     fields.row(
         ui,
         "contact.restitution",
-        &Spec {
-            label: "restitution",
-            unit: "",
-            tooltip: "Target restitution of kelvin, hertzdamp, jankowski and stereo",
-            min: 0.05,
-            max: 1.0,
-            log: false,
-        },
+        &spec("contact.restitution"),
         &mut sc.restitution,
     );
     ui.horizontal(|ui| {
@@ -243,40 +177,19 @@ fn contact_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup)
     fields.row(
         ui,
         "slab.damping",
-        &Spec {
-            label: "slab damping",
-            unit: "",
-            tooltip: "Damping ratio of the slabs' axial waves; 0 lets them ring through the record",
-            min: 0.0,
-            max: 0.5,
-            log: false,
-        },
+        &spec("slab.damping"),
         &mut sc.slab_damping,
     );
     fields.row(
         ui,
         "impact.merge_gap_s",
-        &Spec {
-            label: "merge gap",
-            unit: "s",
-            tooltip: "Contacts at one level closer than this count as one impact",
-            min: 0.0,
-            max: 0.5,
-            log: false,
-        },
+        &spec("impact.merge_gap_s"),
         &mut sc.merge_gap_s,
     );
     fields.row(
         ui,
         "solver.tolerance",
-        &Spec {
-            label: "tolerance",
-            unit: "",
-            tooltip: "Accuracy target of the contact steps (the motion between contacts is exact); the run's own error estimate is shown with the results",
-            min: 1e-6,
-            max: 1e-2,
-            log: true,
-        },
+        &spec("solver.tolerance"),
         &mut sc.tolerance,
     );
 }
@@ -329,66 +242,32 @@ fn motion_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup, 
         }
     });
     let mut scale = m.scale;
-    if fields.row(
-        ui,
-        "motion.scale",
-        &Spec {
-            label: "scale",
-            unit: "x",
-            tooltip: "Factor on the record; negative flips it",
-            min: -5.0,
-            max: 5.0,
-            log: false,
-        },
-        &mut scale,
-    ) && scale != 0.0
-    {
+    if fields.row(ui, "motion.scale", &spec("motion.scale"), &mut scale) && scale != 0.0 {
         m.scale = scale;
     }
     let mut duration = m.duration_s.unwrap_or(0.0);
-    if fields.row(
-        ui,
-        "motion.duration",
-        &Spec {
-            label: "duration",
-            unit: "s",
-            tooltip: "Use only the first seconds of the record (0: all)",
-            min: 0.0,
-            max: 120.0,
-            log: false,
-        },
-        &mut duration,
-    ) {
+    // 0 here means the whole record.
+    let whole = Spec {
+        tooltip: "Use only the first seconds of the record (0: all of it)",
+        typed: Range::closed(0.0, 1e6),
+        ..spec("motion.duration")
+    };
+    if fields.row(ui, "motion.duration", &whole, &mut duration) {
         m.duration_s = (duration > 0.0).then_some(duration);
     }
     if m.file.is_none() {
         fields.row(
             ui,
             "motion.pga",
-            &Spec {
-                label: "PGA",
-                unit: "g",
-                tooltip: "Peak ground acceleration of the synthetic record",
-                min: 0.01,
-                max: 2.0,
-                log: false,
-            },
+            &spec("motion.pga"),
             &mut m.synthetic.pga_g,
         );
         let mut seed = m.synthetic.seed as f64;
-        if fields.row(
-            ui,
-            "motion.seed",
-            &Spec {
-                label: "seed",
-                unit: "",
-                tooltip: "Another seed, another record of the same kind",
-                min: 0.0,
-                max: 1e6,
-                log: false,
-            },
-            &mut seed,
-        ) {
+        let seeds = Spec {
+            max: 1e6,
+            ..spec("motion.seed")
+        };
+        if fields.row(ui, "motion.seed", &seeds, &mut seed) {
             m.synthetic.seed = seed.round() as u64;
         }
     }

@@ -1,17 +1,51 @@
-//! Parameter rows: a slider that keeps the value in its valid range, and a field to type an
-//! exact value; a typed value outside the range is refused and the allowed range is shown.
+//! Parameter rows: a slider over a setting's usual range, and a field to type an exact value
+//! anywhere in its validated range; a typed value outside it is refused and the range shown.
+//! Label, unit, help, both ranges and the scale come from the settings table (`model::settings`).
 
+use crate::model::settings::{Kind, Range, Setting, find};
 use eframe::egui;
 use std::collections::HashMap;
 
 /// What a row edits.
+#[derive(Clone, Copy)]
 pub struct Spec<'a> {
     pub label: &'a str,
     pub unit: &'a str,
     pub tooltip: &'a str,
+    /// The slider's span.
     pub min: f64,
     pub max: f64,
     pub log: bool,
+    /// What a typed value may be.
+    pub typed: Range,
+}
+
+impl Spec<'static> {
+    /// The row of `key` in a settings table.
+    pub fn of(table: &'static [Setting], key: &str) -> Self {
+        let s = find(table, key).unwrap_or_else(|| panic!("the settings table lists {key}"));
+        let (range, slider, log) = match s.kind {
+            Kind::Number {
+                range, slider, log, ..
+            }
+            | Kind::List { range, slider, log } => (range, slider, log),
+            Kind::Count { min, max } => (
+                Range::closed(min as f64, max as f64),
+                (min as f64, max as f64),
+                false,
+            ),
+            _ => panic!("{key} is not a number"),
+        };
+        Spec {
+            label: s.label,
+            unit: s.unit,
+            tooltip: s.help,
+            min: slider.0,
+            max: slider.1,
+            log,
+            typed: range,
+        }
+    }
 }
 
 /// Text being typed per field, and the last refusal.
@@ -24,18 +58,6 @@ pub struct Fields {
 impl Fields {
     /// Shows one row; returns whether the value changed.
     pub fn row(&mut self, ui: &mut egui::Ui, id: &str, spec: &Spec, value: &mut f64) -> bool {
-        self.row_typed(ui, id, spec, (spec.min, spec.max), value)
-    }
-
-    /// A row whose typed values may go beyond the slider's range, to `typed`.
-    pub fn row_typed(
-        &mut self,
-        ui: &mut egui::Ui,
-        id: &str,
-        spec: &Spec,
-        typed: (f64, f64),
-        value: &mut f64,
-    ) -> bool {
         let mut changed = false;
         ui.horizontal(|ui| {
             // The label names the slider and the field for screen readers too.
@@ -77,7 +99,7 @@ impl Fields {
                 || (response.has_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)));
             if commit {
                 match shown.trim().parse::<f64>() {
-                    Ok(x) if x.is_finite() && x >= typed.0 && x <= typed.1 => {
+                    Ok(x) if spec.typed.contains(x) => {
                         if x != *value {
                             *value = x;
                             changed = true;
@@ -88,10 +110,9 @@ impl Fields {
                         self.refused.insert(
                             id.to_string(),
                             format!(
-                                "'{}' refused: allowed {} to {} {}",
+                                "'{}' refused: allowed {} {}",
                                 shown.trim(),
-                                format_value(typed.0),
-                                format_value(typed.1),
+                                spec.typed,
                                 spec.unit
                             ),
                         );

@@ -44,6 +44,18 @@ fn default_range(key: &str) -> (f64, f64, bool) {
     }
 }
 
+/// A sweep's error, phrased with the panel's field at fault.
+fn fielded(e: sweep::SweepError) -> String {
+    let field = match e.part() {
+        sweep::Part::Param => "swept setting: ",
+        sweep::Part::Count => "points: ",
+        sweep::Part::Range => "from/to: ",
+        sweep::Part::Spacing => "geometric spacing: ",
+        sweep::Part::Value => "",
+    };
+    format!("{field}{e}")
+}
+
 /// The sweep's plots by export name.
 const PLOT_NAMES: [&str; 3] = ["peak-force", "duration", "restitution"];
 
@@ -246,8 +258,7 @@ impl StudyScene {
                 .map_err(|_| format!("{name}: '{}' is not a number", text.trim()))
         };
         let (from, to) = (number("from", &self.from)?, number("to", &self.to)?);
-        sweep::check(&self.param, from, to, self.count, self.log)
-            .map_err(|e| e.replace("--", ""))?;
+        sweep::check(&self.param, from, to, self.count, self.log).map_err(fielded)?;
         let models: Vec<ModelKind> = MODELS
             .iter()
             .zip(self.models)
@@ -258,8 +269,7 @@ impl StudyScene {
             return Err("models: tick at least one".into());
         }
         let values = sweep::values(from, to, self.count, self.log);
-        let setups = sweep::setups(&self.base, &self.param, &values)
-            .map_err(|e| e.replace("--param ", ""))?;
+        let setups = sweep::setups(&self.base, &self.param, &values).map_err(fielded)?;
         Ok((setups, values, models))
     }
 

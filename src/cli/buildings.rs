@@ -2,10 +2,11 @@
 
 use super::building_report::{BuildingReport, summary};
 use clap::Args;
-use pounding::io::building_settings::{BUILDING_KEYS, BuildingSetup};
+use pounding::io::building_settings::BuildingSetup;
 use pounding::io::preset;
 use pounding::model::building::{BuildingScenario, ContactModel, solve};
 use pounding::model::motion::GroundMotion;
+use pounding::model::settings::BUILDING_SETTINGS;
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -53,7 +54,7 @@ pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         return super::list(
             out,
             26,
-            BUILDING_KEYS.iter().map(|(k, w)| (*k, w.to_string())),
+            BUILDING_SETTINGS.iter().map(|s| (s.key, s.describe())),
         );
     }
     if args.common.list_presets {

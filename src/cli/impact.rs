@@ -4,8 +4,9 @@ use super::report::{ImpactReport, summary};
 use clap::Args;
 use pounding::export::plot::{LinePlot, Series};
 use pounding::io::preset::{self, DEFAULT_PRESET};
-use pounding::io::settings::{IMPACT_KEYS, ImpactSetup};
+use pounding::io::settings::ImpactSetup;
 use pounding::model::impact::{ModelKind, solve};
+use pounding::model::settings::IMPACT_SETTINGS;
 use std::io::Write;
 
 #[derive(Args, Debug, Default)]
@@ -26,7 +27,7 @@ pub(super) fn answered_lists(
         super::list(
             out,
             22,
-            IMPACT_KEYS.iter().map(|(k, w)| (*k, w.to_string())),
+            IMPACT_SETTINGS.iter().map(|s| (s.key, s.describe())),
         )?;
     } else if common.list_presets {
         super::list_presets(out, "impact")?;

@@ -6,7 +6,7 @@ use clap::Args;
 use pounding::export::plot::{LinePlot, Series};
 use pounding::model::impact::ModelKind;
 use pounding::study::Progress;
-use pounding::study::sweep::{self, Point};
+use pounding::study::sweep::{self, Part, Point};
 use serde::Serialize;
 use std::io::Write;
 use std::time::Instant;
@@ -58,7 +58,7 @@ pub fn run(args: &SweepArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let (Some(param), Some(from), Some(to)) = (args.param.as_deref(), args.from, args.to) else {
         bail!("--param, --from and --to are required");
     };
-    sweep::check(param, from, to, args.count, args.log).map_err(|e| anyhow!(e))?;
+    sweep::check(param, from, to, args.count, args.log).map_err(flagged)?;
     let (base, _) = super::impact::setup(&args.common)?;
     let models: Vec<ModelKind> = if args.models.is_empty() {
         vec![base.model]
@@ -69,7 +69,7 @@ pub fn run(args: &SweepArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             .collect::<anyhow::Result<_>>()?
     };
     let values = sweep::values(from, to, args.count, args.log);
-    let setups = sweep::setups(&base, param, &values).map_err(|e| anyhow!(e))?;
+    let setups = sweep::setups(&base, param, &values).map_err(flagged)?;
     let start = Instant::now();
     let points = sweep::run(&setups, &values, &models, &Progress::new())?;
     let report = SweepReport {
@@ -93,6 +93,23 @@ pub fn run(args: &SweepArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         table(&report, out)?;
     }
     Ok(())
+}
+
+/// A sweep's error, phrased with the flag at fault.
+fn flagged(e: sweep::SweepError) -> anyhow::Error {
+    let flag = match e.part() {
+        Part::Param => "--param: ",
+        Part::Count => "--count: ",
+        Part::Range => "--from/--to: ",
+        Part::Spacing => "--log: ",
+        Part::Value => "--param ",
+    };
+    let hint = if e.part() == Part::Param {
+        "; see `pounding sweep --list-keys`"
+    } else {
+        ""
+    };
+    anyhow!("{flag}{e}{hint}")
 }
 
 fn opt(v: Option<f64>, scale: f64) -> String {

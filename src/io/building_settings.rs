@@ -24,123 +24,6 @@ impl Default for BuildingSetup {
     }
 }
 
-pub const BUILDING_KEYS: &[(&str, &str)] = &[
-    (
-        "contact.model",
-        "sears|linear|kelvin|hertz|hertzdamp|jankowski|stereo|none (the --contact flag)",
-    ),
-    (
-        "SIDE.storeys",
-        "number of storeys N, in [1, 100] (SIDE is left or right)",
-    ),
-    (
-        "SIDE.masses",
-        "floor masses [kg], > 0: one value for every floor, or N separated by commas",
-    ),
-    (
-        "SIDE.stiffnesses",
-        "storey shear stiffnesses [N/m], > 0: one value, or N",
-    ),
-    ("SIDE.heights", "storey heights [m], > 0: one value, or N"),
-    ("SIDE.mass", "every floor's mass [kg], > 0"),
-    ("SIDE.stiffness", "every storey's stiffness [N/m], > 0"),
-    ("SIDE.height", "every storey's height [m], > 0"),
-    (
-        "SIDE.period",
-        "fundamental period [s], > 0: scales every storey's stiffness to it",
-    ),
-    (
-        "SIDE.damping_ratio",
-        "viscous damping ratio, in [0, 1); default 0.05",
-    ),
-    (
-        "SIDE.damping",
-        "modal|rayleigh: the ratio in every mode, or Rayleigh damping on two modes",
-    ),
-    (
-        "SIDE.rayleigh_modes",
-        "the two modes (1-based) Rayleigh damping gets the ratio in; default 1,2",
-    ),
-    (
-        "SIDE.velocity",
-        "velocity of every floor relative to the ground at t = 0 [m/s] (isolated-impact studies)",
-    ),
-    (
-        "SIDE.slab_length",
-        "floor slab length along the pounding direction [m], > 0: one value, or N",
-    ),
-    (
-        "SIDE.slab_width",
-        "floor slab width [m], > 0: one value, or N",
-    ),
-    (
-        "SIDE.slab_thickness",
-        "floor slab thickness [m], > 0: one value, or N",
-    ),
-    (
-        "SIDE.youngs_modulus",
-        "floor slab Young's modulus [Pa], > 0: one value, or N",
-    ),
-    (
-        "gap",
-        "at-rest separation, the same at every level [m], >= 0",
-    ),
-    (
-        "contact.stiffness",
-        "element stiffness (N/m; N/m^1.5 for hertz, hertzdamp, jankowski), or auto",
-    ),
-    (
-        "contact.restitution",
-        "target restitution (kelvin, hertzdamp, jankowski, stereo), in (0, 1]",
-    ),
-    ("contact.reading", "paper|end: the Sears reading"),
-    (
-        "contact.zone_length",
-        "Sears zone length d [m], or auto (a tenth of the stiffer building's slab)",
-    ),
-    (
-        "slab.damping",
-        "damping ratio of the slabs' axial waves, in [0, 1); 0 = undamped d'Alembert",
-    ),
-    (
-        "impact.merge_gap_s",
-        "contacts closer than this form one impact [s], >= 0",
-    ),
-    (
-        "motion.file",
-        "the ground motion: a built-in record (elcentro-1940), a file (.AT2 or text), or synthetic; the --motion flag",
-    ),
-    (
-        "motion.units",
-        "g|m/s2|cm/s2 for text files (AT2 files are in g)",
-    ),
-    ("motion.scale", "factor on the record; negative flips it"),
-    (
-        "motion.duration",
-        "use only the first seconds of the record [s], > 0",
-    ),
-    ("motion.dt", "step of a values-only text file [s], > 0"),
-    (
-        "motion.pga",
-        "synthetic record: peak ground acceleration [g], > 0",
-    ),
-    (
-        "motion.seed",
-        "synthetic record: random seed, a whole number",
-    ),
-    ("motion.length", "synthetic record: length [s], > 0"),
-    (
-        "solver.tolerance",
-        "accuracy target of the contact steps (relative), in (0, 0.1]; default 1e-4",
-    ),
-    (
-        "solver.steps_per_scale",
-        "steps per contact time scale inside contacts, >= 1, or auto (from the tolerance)",
-    ),
-    ("solver.max_step", "longest step outside contacts [s], > 0"),
-    ("solver.max_steps", "step budget, >= 1"),
-];
-
 impl BuildingSetup {
     pub fn apply(&mut self, key: &str, value: &SettingValue) -> Result<(), InputError> {
         let sc = &mut self.scenario;
@@ -158,13 +41,7 @@ impl BuildingSetup {
                 "stiffnesses" | "stiffness" => b.stiffnesses_n_m = numbers(key, value)?,
                 "heights" | "height" => b.heights_m = numbers(key, value)?,
                 "period" => {
-                    let t = number(key, value)?;
-                    if !(t.is_finite() && t > 0.0) {
-                        return Err(InputError::new(
-                            key,
-                            format!("{t} is not allowed: must be a finite number > 0 s"),
-                        ));
-                    }
+                    let t = checked(key, value)?;
                     let mut check = sc.clone();
                     check.contact = crate::model::building::ContactModel::None;
                     check.validate().map_err(|e| {
@@ -269,20 +146,20 @@ impl BuildingSetup {
             }
             "motion.units" => m.units = choice(key, value, Units::from_name, "g|m/s2|cm/s2")?,
             "motion.scale" => {
-                let x = number(key, value)?;
-                if !x.is_finite() || x == 0.0 {
+                let x = checked(key, value)?;
+                if x == 0.0 {
                     return Err(InputError::new(
                         key,
-                        format!("{x} is not allowed: must be a finite, non-zero factor"),
+                        "0 is not allowed: a factor in [-100, 100] other than 0 (negative flips the record)",
                     ));
                 }
                 m.scale = x;
             }
-            "motion.duration" => m.duration_s = Some(positive(key, value)?),
-            "motion.dt" => m.dt_s = Some(positive(key, value)?),
-            "motion.pga" => m.synthetic.pga_g = positive(key, value)?,
-            "motion.seed" => m.synthetic.seed = count(key, value)? as u64,
-            "motion.length" => m.synthetic.duration_s = positive(key, value)?,
+            "motion.duration" => m.duration_s = Some(checked(key, value)?),
+            "motion.dt" => m.dt_s = Some(checked(key, value)?),
+            "motion.pga" => m.synthetic.pga_g = checked(key, value)?,
+            "motion.seed" => m.synthetic.seed = checked(key, value)? as u64,
+            "motion.length" => m.synthetic.duration_s = checked(key, value)?,
             "solver.tolerance" => sc.tolerance = number(key, value)?,
             "solver.steps_per_scale" => {
                 sc.steps_per_scale = if auto(value) {
@@ -309,20 +186,19 @@ impl BuildingSetup {
     }
 }
 
-fn positive(key: &str, value: &SettingValue) -> Result<f64, InputError> {
+/// A number checked at once against its row of the settings table (the ground motion's settings
+/// are read before any run validates them).
+fn checked(key: &str, value: &SettingValue) -> Result<f64, InputError> {
     let x = number(key, value)?;
-    if x.is_finite() && x > 0.0 {
-        Ok(x)
-    } else {
-        Err(InputError::new(
-            key,
-            format!("{x} is not allowed: must be a finite number > 0"),
-        ))
-    }
+    crate::model::settings::check(crate::model::settings::BUILDING_SETTINGS, key, x)?;
+    Ok(x)
 }
 
 fn unknown(key: &str) -> InputError {
-    let known: Vec<&str> = BUILDING_KEYS.iter().map(|(k, _)| *k).collect();
+    let known: Vec<&str> = crate::model::settings::BUILDING_SETTINGS
+        .iter()
+        .map(|s| s.key)
+        .collect();
     InputError::new(
         key,
         format!(

@@ -51,76 +51,6 @@ impl SettingValue {
     }
 }
 
-/// Every key, with what it sets. Keys for both bars are listed once with `barN`.
-pub const IMPACT_KEYS: &[(&str, &str)] = &[
-    (
-        "model",
-        "sears|wave|lumped-hertz|lumped-linear|kelvin|stereo|fe",
-    ),
-    (
-        "barN.material",
-        "steel|concrete: sets E, nu and rho (later keys override them)",
-    ),
-    ("barN.youngs_modulus", "Young's modulus E [Pa], > 0"),
-    ("barN.poisson_ratio", "Poisson's ratio nu, in (-1, 0.5)"),
-    ("barN.density", "density rho [kg/m^3], > 0"),
-    ("barN.length", "length L [m], > 0"),
-    ("barN.radius", "radius of a circular rod [m], > 0"),
-    (
-        "barN.area",
-        "cross-section area of any section [m^2], > 0 (instead of radius)",
-    ),
-    (
-        "barN.added_mass",
-        "superimposed mass spread over the bar [kg], >= 0",
-    ),
-    (
-        "barN.velocity",
-        "velocity before impact [m/s], positive to the right",
-    ),
-    (
-        "barN.end_radius",
-        "radius of the rounded impacting end [m], or flat",
-    ),
-    ("contact.law", "hertz|linear"),
-    (
-        "contact.stiffness",
-        "contact stiffness (N/m^1.5 hertz, N/m linear), or auto (Hertz from the ends, linear from E A/(L/n))",
-    ),
-    (
-        "contact.zone_scale",
-        "multiplier on Sears' zone length d, > 0",
-    ),
-    (
-        "contact.zone_length",
-        "zone length d for both bars [m] instead of Sears' Eq. 5, or auto",
-    ),
-    (
-        "contact.divisions",
-        "n in the paper's linear stiffness E A/(L/n), > 0",
-    ),
-    (
-        "contact.restitution",
-        "target restitution for kelvin and stereo, in [0, 1]",
-    ),
-    ("sears.reading", "paper|collocated|end"),
-    ("solver.dt", "time step [s], > 0"),
-    (
-        "solver.window",
-        "simulated span [s], >= 0; 0 runs until the bars separate for good",
-    ),
-    ("solver.max_steps", "step budget, >= 1"),
-    (
-        "solver.refine",
-        "true|false: refine a step too coarse for the contact's time scale",
-    ),
-    ("fe.segments", "finite elements per bar, in [1, 1000000]"),
-    (
-        "fe.courant",
-        "fraction of the explicit stability limit, in (0, 1)",
-    ),
-];
-
 /// A scenario and the model to run it with.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ImpactSetup {
@@ -319,7 +249,10 @@ impl ImpactSetup {
 }
 
 fn unknown(key: &str) -> InputError {
-    let known: Vec<&str> = IMPACT_KEYS.iter().map(|(k, _)| *k).collect();
+    let known: Vec<&str> = crate::model::settings::IMPACT_SETTINGS
+        .iter()
+        .map(|s| s.key)
+        .collect();
     InputError::new(
         key,
         format!(

@@ -10,3 +10,4 @@ pub mod material;
 pub mod motion;
 pub mod root;
 pub mod scenario;
+pub mod settings;

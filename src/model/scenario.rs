@@ -147,78 +147,25 @@ impl fmt::Display for InputError {
 
 impl std::error::Error for InputError {}
 
-fn check_positive(field: &str, value: f64, unit: &str) -> Result<(), InputError> {
-    if value.is_finite() && value > 0.0 {
-        Ok(())
-    } else {
-        Err(InputError::new(
-            field,
-            format!("{value} is not allowed: must be a finite number > 0 {unit}"),
-        ))
-    }
-}
-
-fn check_range(
-    field: &str,
-    value: f64,
-    lo: f64,
-    hi: f64,
-    closed: bool,
-    unit: &str,
-) -> Result<(), InputError> {
-    let inside = if closed {
-        value >= lo && value <= hi
-    } else {
-        value > lo && value < hi
-    };
-    if value.is_finite() && inside {
-        Ok(())
-    } else {
-        let (l, r) = if closed { ('[', ']') } else { ('(', ')') };
-        Err(InputError::new(
-            field,
-            format!("{value} is not allowed: must lie in {l}{lo}, {hi}{r} {unit}"),
-        ))
-    }
+/// A value checked against its row of the impact settings table.
+fn check(field: &str, value: f64) -> Result<(), InputError> {
+    super::settings::check(super::settings::IMPACT_SETTINGS, field, value)
 }
 
 fn validate_bar(prefix: &str, bar: &Bar) -> Result<(), InputError> {
     let f = |name: &str| format!("{prefix}.{name}");
-    check_positive(&f("youngs_modulus"), bar.material.youngs_modulus_pa, "Pa")?;
-    check_range(
-        &f("poisson_ratio"),
-        bar.material.poisson_ratio,
-        -1.0,
-        0.5,
-        false,
-        "",
-    )?;
-    check_positive(&f("density"), bar.material.density_kg_m3, "kg/m^3")?;
-    check_positive(&f("length"), bar.length_m, "m")?;
+    check(&f("youngs_modulus"), bar.material.youngs_modulus_pa)?;
+    check(&f("poisson_ratio"), bar.material.poisson_ratio)?;
+    check(&f("density"), bar.material.density_kg_m3)?;
+    check(&f("length"), bar.length_m)?;
     match bar.section {
-        Section::Circular { radius_m } => check_positive(&f("radius"), radius_m, "m")?,
-        Section::Area { area_m2 } => check_positive(&f("area"), area_m2, "m^2")?,
+        Section::Circular { radius_m } => check(&f("radius"), radius_m)?,
+        Section::Area { area_m2 } => check(&f("area"), area_m2)?,
     }
-    if !(bar.added_mass_kg.is_finite() && bar.added_mass_kg >= 0.0) {
-        return Err(InputError::new(
-            f("added_mass"),
-            format!(
-                "{} is not allowed: must be a finite number >= 0 kg",
-                bar.added_mass_kg
-            ),
-        ));
-    }
-    if !bar.velocity_m_s.is_finite() {
-        return Err(InputError::new(
-            f("velocity"),
-            format!(
-                "{} is not allowed: must be a finite number in m/s",
-                bar.velocity_m_s
-            ),
-        ));
-    }
+    check(&f("added_mass"), bar.added_mass_kg)?;
+    check(&f("velocity"), bar.velocity_m_s)?;
     if let EndShape::Rounded { radius_m } = bar.end {
-        check_positive(&f("end_radius"), radius_m, "m (or `flat`)")?;
+        check(&f("end_radius"), radius_m)?;
     }
     Ok(())
 }
@@ -228,53 +175,37 @@ impl ImpactScenario {
         validate_bar("bar1", &self.bar1)?;
         validate_bar("bar2", &self.bar2)?;
         if let Some(k) = self.contact.stiffness {
-            check_positive(
-                "contact.stiffness",
-                k,
-                "(N/m^1.5 for hertz, N/m for linear)",
-            )?;
+            check("contact.stiffness", k)?;
         }
-        check_positive("contact.zone_scale", self.contact.zone_scale, "")?;
+        check("contact.zone_scale", self.contact.zone_scale)?;
         if let Some(d) = self.contact.zone_length_m {
-            check_positive("contact.zone_length", d, "m (or auto)")?;
+            check("contact.zone_length", d)?;
         }
-        check_positive("contact.divisions", self.contact.divisions, "")?;
-        check_range(
-            "contact.restitution",
-            self.contact.restitution,
-            0.0,
-            1.0,
-            true,
-            "",
-        )?;
-        check_positive("solver.dt", self.solver.dt_s, "s")?;
-        if !(self.solver.window_s.is_finite() && self.solver.window_s >= 0.0) {
-            return Err(InputError::new(
-                "solver.window",
-                format!(
-                    "{} is not allowed: must be a finite number >= 0 s (0 runs until the bars separate for good)",
-                    self.solver.window_s
-                ),
-            ));
-        }
-        if self.solver.max_steps == 0 {
-            return Err(InputError::new(
-                "solver.max_steps",
-                "0 is not allowed: must be at least 1",
-            ));
-        }
-        if !(1..=1_000_000).contains(&self.fe.segments) {
-            return Err(InputError::new(
-                "fe.segments",
-                format!(
-                    "{} is not allowed: must lie in [1, 1000000]",
-                    self.fe.segments
-                ),
-            ));
-        }
-        check_range("fe.courant", self.fe.courant, 0.0, 1.0, false, "")?;
-        if self.contact.law == LawKind::Hertz
-            && self.contact.stiffness.is_none()
+        check("contact.divisions", self.contact.divisions)?;
+        check("contact.restitution", self.contact.restitution)?;
+        check("solver.dt", self.solver.dt_s)?;
+        check("solver.window", self.solver.window_s)?;
+        check("solver.max_steps", self.solver.max_steps as f64)?;
+        check("fe.segments", self.fe.segments as f64)?;
+        check("fe.courant", self.fe.courant)?;
+        Ok(())
+    }
+
+    /// What a model needs beyond the ranges: only what it uses ("leave out what a given scene
+    /// does not need"). The Hertz law needs a rounded end or a stiffness, but wave theory and
+    /// stereomechanics have no contact law.
+    pub fn validate_for(&self, model: super::impact::ModelKind) -> Result<(), InputError> {
+        use super::impact::ModelKind;
+        self.validate()?;
+        let hertz = match model {
+            ModelKind::Sears | ModelKind::Fe => self.contact.law == LawKind::Hertz,
+            ModelKind::LumpedHertz => true,
+            ModelKind::Wave | ModelKind::Stereo | ModelKind::LumpedLinear | ModelKind::Kelvin => {
+                false
+            }
+        };
+        if hertz
+            && !(self.contact.law == LawKind::Hertz && self.contact.stiffness.is_some())
             && hertz_stiffness(&self.bar1, &self.bar2).is_none()
         {
             return Err(InputError::new(

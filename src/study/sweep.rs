@@ -2,8 +2,10 @@
 //! model. The command line's `pounding sweep` and the window's Parameter study run this.
 
 use super::{Cancelled, Progress, par_map};
-use crate::io::settings::{IMPACT_KEYS, ImpactSetup};
+use crate::io::settings::ImpactSetup;
 use crate::model::impact::{ModelKind, solve};
+use crate::model::scenario::InputError;
+use crate::model::settings::{IMPACT_SETTINGS, Kind, concrete_keys};
 use serde::Serialize;
 
 #[derive(Serialize, Debug, Clone, PartialEq)]
@@ -32,43 +34,83 @@ pub fn values(from: f64, to: f64, count: usize, log: bool) -> Vec<f64> {
         .collect()
 }
 
-/// The numeric impact keys a sweep can vary (both bars spelled out).
+/// The numeric impact keys a sweep can vary (both bars spelled out), from the settings table.
 pub fn numeric_keys() -> Vec<String> {
-    const WORDS: [&str; 5] = ["model", "material", "law", "reading", "refine"];
-    IMPACT_KEYS
+    let numeric: Vec<_> = IMPACT_SETTINGS
         .iter()
-        .filter(|(k, _)| !WORDS.iter().any(|w| k.ends_with(w)))
-        .flat_map(|(k, _)| match k.strip_prefix("barN.") {
-            Some(rest) => vec![format!("bar1.{rest}"), format!("bar2.{rest}")],
-            None => vec![k.to_string()],
-        })
-        .collect()
+        .filter(|s| matches!(s.kind, Kind::Number { .. } | Kind::Count { .. }))
+        .copied()
+        .collect();
+    concrete_keys(&numeric)
 }
 
-/// The range, checked; errors name the flag (or field) at fault.
-pub fn check(param: &str, from: f64, to: f64, count: usize, log: bool) -> Result<(), String> {
+/// What is wrong with a sweep, by the part of it at fault; each front end names that part its
+/// own way (a flag, a field).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SweepError {
+    #[error("'{0}' is not a numeric impact setting")]
+    NotNumeric(String),
+    #[error("{0} values is outside 2 to 100000")]
+    Count(usize),
+    #[error("the ends of the range must be finite numbers")]
+    NotFinite,
+    #[error("a geometric range needs both ends > 0 (got {from} and {to})")]
+    Geometric { from: f64, to: f64 },
+    /// One swept value that the setting refuses.
+    #[error("{param}={value}: {source}")]
+    Value {
+        param: String,
+        value: f64,
+        source: InputError,
+    },
+}
+
+/// Which part of a sweep an error is about.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Part {
+    Param,
+    Count,
+    Range,
+    Spacing,
+    Value,
+}
+
+impl SweepError {
+    pub fn part(&self) -> Part {
+        match self {
+            SweepError::NotNumeric(_) => Part::Param,
+            SweepError::Count(_) => Part::Count,
+            SweepError::NotFinite => Part::Range,
+            SweepError::Geometric { .. } => Part::Spacing,
+            SweepError::Value { .. } => Part::Value,
+        }
+    }
+}
+
+/// The sweep's range, checked.
+pub fn check(param: &str, from: f64, to: f64, count: usize, log: bool) -> Result<(), SweepError> {
     if !numeric_keys().iter().any(|k| k == param) {
-        return Err(format!(
-            "--param: '{param}' is not a numeric impact setting; see `pounding sweep --list-keys`"
-        ));
+        return Err(SweepError::NotNumeric(param.to_string()));
     }
     if !(2..=100_000).contains(&count) {
-        return Err(format!("--count: {count} is outside 2 to 100000"));
+        return Err(SweepError::Count(count));
     }
     if !from.is_finite() || !to.is_finite() {
-        return Err("--from/--to: values must be finite numbers".into());
+        return Err(SweepError::NotFinite);
     }
     if log && (from <= 0.0 || to <= 0.0) {
-        return Err(format!(
-            "--log: --from and --to must be > 0 (got {from} and {to})"
-        ));
+        return Err(SweepError::Geometric { from, to });
     }
     Ok(())
 }
 
 /// The base setup with `param` set to each value, every one validated before any solve so a bad
 /// range fails at once and names the value.
-pub fn setups(base: &ImpactSetup, param: &str, values: &[f64]) -> Result<Vec<ImpactSetup>, String> {
+pub fn setups(
+    base: &ImpactSetup,
+    param: &str,
+    values: &[f64],
+) -> Result<Vec<ImpactSetup>, SweepError> {
     values
         .iter()
         .map(|v| {
@@ -76,7 +118,11 @@ pub fn setups(base: &ImpactSetup, param: &str, values: &[f64]) -> Result<Vec<Imp
             s.apply_assignment(&format!("{param}={v}"))
                 .and_then(|()| s.scenario.validate())
                 .map(|()| s)
-                .map_err(|e| format!("--param {param}={v}: {e}"))
+                .map_err(|source| SweepError::Value {
+                    param: param.to_string(),
+                    value: *v,
+                    source,
+                })
         })
         .collect()
 }

@@ -320,34 +320,18 @@ impl BuildingScenario {
     }
 
     pub fn validate(&self) -> Result<(), InputError> {
-        let pos = |field: &str, v: f64, unit: &str| {
-            if v.is_finite() && v > 0.0 {
-                Ok(())
-            } else {
-                Err(InputError::new(
-                    field,
-                    format!("{v} is not allowed: must be a finite number > 0 {unit}"),
-                ))
-            }
-        };
+        use crate::model::settings::{BUILDING_SETTINGS, check};
+        let check = |field: &str, v: f64| check(BUILDING_SETTINGS, field, v);
         for (name, b) in [("left", &self.left), ("right", &self.right)] {
-            if !(1..=MAX_STOREYS).contains(&b.storeys) {
-                return Err(InputError::new(
-                    format!("{name}.storeys"),
-                    format!(
-                        "{} is not allowed: must lie in [1, {MAX_STOREYS}]",
-                        b.storeys
-                    ),
-                ));
-            }
-            for (key, list, unit) in [
-                ("masses", &b.masses_kg, "kg"),
-                ("stiffnesses", &b.stiffnesses_n_m, "N/m"),
-                ("heights", &b.heights_m, "m"),
-                ("slab_length", &b.slab_lengths_m, "m"),
-                ("slab_width", &b.slab_widths_m, "m"),
-                ("slab_thickness", &b.slab_thicknesses_m, "m"),
-                ("youngs_modulus", &b.slab_youngs_pa, "Pa"),
+            check(&format!("{name}.storeys"), b.storeys as f64)?;
+            for (key, list) in [
+                ("masses", &b.masses_kg),
+                ("stiffnesses", &b.stiffnesses_n_m),
+                ("heights", &b.heights_m),
+                ("slab_length", &b.slab_lengths_m),
+                ("slab_width", &b.slab_widths_m),
+                ("slab_thickness", &b.slab_thicknesses_m),
+                ("youngs_modulus", &b.slab_youngs_pa),
             ] {
                 let field = format!("{name}.{key}");
                 if list.len() != 1 && list.len() != b.storeys {
@@ -362,15 +346,10 @@ impl BuildingScenario {
                     ));
                 }
                 for &v in list.iter() {
-                    pos(&field, v, unit)?;
+                    check(&field, v)?;
                 }
             }
-            if !(b.damping_ratio.is_finite() && (0.0..1.0).contains(&b.damping_ratio)) {
-                return Err(InputError::new(
-                    format!("{name}.damping_ratio"),
-                    format!("{} is not allowed: must lie in [0, 1)", b.damping_ratio),
-                ));
-            }
+            check(&format!("{name}.damping_ratio"), b.damping_ratio)?;
             if let DampingModel::Rayleigh { modes: [i, j] } = b.damping
                 && (i == 0 || j == 0 || i > b.storeys || j > b.storeys || i == j)
                 && b.storeys > 1
@@ -384,30 +363,13 @@ impl BuildingScenario {
                 ));
             }
         }
-        if !(self.gap_m.is_finite() && self.gap_m >= 0.0) {
-            return Err(InputError::new(
-                "gap",
-                format!(
-                    "{} is not allowed: must be a finite number >= 0 m",
-                    self.gap_m
-                ),
-            ));
-        }
+        check("gap", self.gap_m)?;
         if let Some(k) = self.stiffness {
-            pos(
-                "contact.stiffness",
-                k,
-                "(N/m, or N/m^1.5 for hertz, hertzdamp, jankowski)",
-            )?;
+            check("contact.stiffness", k)?;
         }
-        if !(self.restitution.is_finite() && self.restitution > 0.0 && self.restitution <= 1.0) {
-            return Err(InputError::new(
-                "contact.restitution",
-                format!("{} is not allowed: must lie in (0, 1]", self.restitution),
-            ));
-        }
+        check("contact.restitution", self.restitution)?;
         if let Some(d) = self.zone_length_m {
-            pos("contact.zone_length", d, "m")?;
+            check("contact.zone_length", d)?;
         }
         if self.contact == ContactModel::Sears && self.reading == SlabReading::Paper {
             for level in self.levels() {
@@ -427,53 +389,16 @@ impl BuildingScenario {
                 }
             }
         }
-        if !(self.slab_damping.is_finite() && (0.0..1.0).contains(&self.slab_damping)) {
-            return Err(InputError::new(
-                "slab.damping",
-                format!("{} is not allowed: must lie in [0, 1)", self.slab_damping),
-            ));
+        check("slab.damping", self.slab_damping)?;
+        check("impact.merge_gap_s", self.merge_gap_s)?;
+        check("solver.tolerance", self.tolerance)?;
+        if let Some(s) = self.steps_per_scale {
+            check("solver.steps_per_scale", s)?;
         }
-        if !(self.merge_gap_s.is_finite() && self.merge_gap_s >= 0.0) {
-            return Err(InputError::new(
-                "impact.merge_gap_s",
-                format!(
-                    "{} is not allowed: must be a finite number >= 0 s",
-                    self.merge_gap_s
-                ),
-            ));
-        }
-        if !(self.tolerance.is_finite() && self.tolerance > 0.0 && self.tolerance <= 0.1) {
-            return Err(InputError::new(
-                "solver.tolerance",
-                format!("{} is not allowed: must lie in (0, 0.1]", self.tolerance),
-            ));
-        }
-        if let Some(s) = self.steps_per_scale
-            && !(s.is_finite() && s >= 1.0)
-        {
-            return Err(InputError::new(
-                "solver.steps_per_scale",
-                format!("{s} is not allowed: must be a finite number >= 1 (or auto)"),
-            ));
-        }
-        pos("solver.max_step", self.max_step_s, "s")?;
-        if self.max_steps == 0 {
-            return Err(InputError::new(
-                "solver.max_steps",
-                "0 is not allowed: must be at least 1",
-            ));
-        }
-        for (name, v) in [
-            ("left.velocity", self.initial_velocity_m_s[0]),
-            ("right.velocity", self.initial_velocity_m_s[1]),
-        ] {
-            if !v.is_finite() {
-                return Err(InputError::new(
-                    name,
-                    format!("{v} is not allowed: must be a finite number in m/s"),
-                ));
-            }
-        }
+        check("solver.max_step", self.max_step_s)?;
+        check("solver.max_steps", self.max_steps as f64)?;
+        check("left.velocity", self.initial_velocity_m_s[0])?;
+        check("right.velocity", self.initial_velocity_m_s[1])?;
         Ok(())
     }
 }

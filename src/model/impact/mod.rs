@@ -271,7 +271,7 @@ pub(crate) fn close_open_contact(
 
 /// Solve one impact with the chosen model.
 pub fn solve(model: ModelKind, scenario: &ImpactScenario) -> Result<ImpactResult, SolveError> {
-    scenario.validate()?;
+    scenario.validate_for(model)?;
     let start = Instant::now();
     let w = scenario.approach_velocity_m_s();
     let mut raw = if w <= 0.0 {
