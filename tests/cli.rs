@@ -635,3 +635,36 @@ fn sweep_writes_csv_and_plot_and_refuses_bad_ranges_by_name() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn wave_theory_has_no_contact_law_so_flat_ends_run_while_hertz_models_name_the_missing_radius() {
+    // Wave theory and the spring models never read the Hertz law: both ends flat must run.
+    for model in ["wave", "lumped-linear", "fe"] {
+        let v = json(&[
+            "impact",
+            "--model",
+            model,
+            "--set",
+            "bar1.end_radius=flat",
+            "--set",
+            "contact.law=linear",
+        ]);
+        assert!(v["peak_force_n"].as_f64().unwrap() > 0.0, "{model}: {v}");
+    }
+    let v = json(&["impact", "--model", "wave", "--set", "bar1.end_radius=flat"]);
+    assert!(v["peak_force_n"].as_f64().unwrap() > 0.0, "{v}");
+    // The Hertzian models do read it: they refuse, naming the law and both end radii.
+    let o = pounding(&[
+        "impact",
+        "--model",
+        "lumped-hertz",
+        "--set",
+        "bar1.end_radius=flat",
+    ]);
+    assert!(!o.status.success());
+    let err = stderr(&o);
+    assert!(
+        err.contains("contact.law") && err.contains("bar1.end_radius"),
+        "{err}"
+    );
+}

@@ -55,6 +55,24 @@ impl Range {
         }
     }
 
+    /// The smallest accepted value: `min`, or the next number above it when `min` is refused.
+    pub fn low_accepted(&self) -> f64 {
+        if self.min_open {
+            self.min.next_up()
+        } else {
+            self.min
+        }
+    }
+
+    /// The largest accepted value.
+    pub fn high_accepted(&self) -> f64 {
+        if self.max_open {
+            self.max.next_down()
+        } else {
+            self.max
+        }
+    }
+
     pub fn contains(&self, x: f64) -> bool {
         x.is_finite()
             && (if self.min_open {
