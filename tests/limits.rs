@@ -276,3 +276,57 @@ fn flat_ends_have_no_hertz_stiffness() {
         "{err}"
     );
 }
+
+/// x solving (1 + x) e^-x = eps, by bisection: how many spring time constants the force of a
+/// stiff spring between equal bars takes to fall to `eps` of its plateau once the short bar's
+/// unloading wave is back.
+fn decay_constants(eps: f64) -> f64 {
+    let (mut a, mut b) = (0.0f64, 100.0f64);
+    for _ in 0..200 {
+        let x = 0.5 * (a + b);
+        if (1.0 + x) * (-x).exp() > eps {
+            a = x
+        } else {
+            b = x
+        }
+    }
+    0.5 * (a + b)
+}
+
+#[test]
+fn a_stiff_flat_contact_lasts_one_short_round_trip_though_the_bars_go_on_touching() {
+    // 1 m on 2 m of equal steel, flat ends, a linear spring k: between equal impedances Z the
+    // force obeys tau F' + F = Z v / 2 - F(t - 2 L1/c), tau = Z / (2 k), so it rises to Z v / 2
+    // and, once the short bar's unloading wave is back at 2 L1/c, falls as (1 + s/tau) e^(-s/tau):
+    // it reaches the loaded threshold eps = LOADED_FRACTION x tau later. The bars then touch at
+    // zero force until the long bar's wave returns; that touching time is the second field.
+    use pounding::model::impact::LOADED_FRACTION;
+    for k in [1e12, 1e14] {
+        let mut sc = rods(1.0, 2.0);
+        sc.bar1.end = EndShape::Flat;
+        sc.bar2.end = EndShape::Flat;
+        sc.reading = Reading::End;
+        sc.contact.law = LawKind::Linear;
+        sc.contact.stiffness = Some(k);
+        let r = run(ModelKind::Sears, &sc);
+        let round_trip = sc.bar1.round_trip_s();
+        let tau = 0.5 * sc.bar1.impedance_n_s_m() / k;
+        let decay = decay_constants(LOADED_FRACTION) * tau;
+        assert!(
+            rel(r.contact_duration_s, round_trip) <= 1.05 * decay / round_trip,
+            "k = {k:e}: duration {:e} s against 2 L1/c = {round_trip:e} s (decay {decay:e} s)",
+            r.contact_duration_s
+        );
+        assert!(
+            (r.contact_duration_s - round_trip - decay).abs() < 0.05 * decay,
+            "k = {k:e}: duration {:e} s against 2 L1/c + decay = {:e} s",
+            r.contact_duration_s,
+            round_trip + decay
+        );
+        assert!(
+            r.touching_duration_s > 1.2 * round_trip,
+            "k = {k:e}: touching {:e} s",
+            r.touching_duration_s
+        );
+    }
+}

@@ -9,9 +9,15 @@ use std::fmt::Write;
 
 #[derive(Serialize)]
 pub struct ContactJson {
+    /// When the bars touch and part.
     pub start_s: f64,
     pub end_s: Option<f64>,
+    /// How long the force stays above 1e-6 of its peak, and from when to when.
     pub duration_s: Option<f64>,
+    pub loaded_start_s: f64,
+    pub loaded_end_s: Option<f64>,
+    /// How long the bars touch, loaded or not.
+    pub touching_s: Option<f64>,
     pub peak_force_n: f64,
     pub impulse_ns: f64,
 }
@@ -52,7 +58,10 @@ pub struct ImpactReport {
     pub model: &'static str,
     pub impact: bool,
     pub peak_force_n: Option<f64>,
+    /// How long the first contact's force stays above 1e-6 of its peak.
     pub contact_duration_s: f64,
+    /// How long the bars touch in the first contact, loaded or not.
+    pub touching_duration_s: f64,
     pub restitution: f64,
     pub restitution_first_contact: f64,
     pub impulse_ns: f64,
@@ -89,6 +98,7 @@ impl ImpactReport {
             impact: r.impact,
             peak_force_n: r.peak_force_n,
             contact_duration_s: r.contact_duration_s,
+            touching_duration_s: r.touching_duration_s,
             restitution: r.restitution,
             restitution_first_contact: r.restitution_first_contact,
             impulse_ns: r.impulse_ns,
@@ -100,6 +110,9 @@ impl ImpactReport {
                     start_s: c.start_s,
                     end_s: c.end_s,
                     duration_s: c.duration_s(),
+                    loaded_start_s: c.loaded_start_s,
+                    loaded_end_s: c.loaded_end_s,
+                    touching_s: c.touching_s(),
                     peak_force_n: c.peak_force_n,
                     impulse_ns: c.impulse_ns,
                 })
@@ -206,7 +219,11 @@ pub fn summary(
             let _ = writeln!(s, "  peak force          none (instantaneous exchange)");
         }
     }
-    let _ = writeln!(s, "  contact duration    {:.6e} s", r.contact_duration_s);
+    let _ = writeln!(
+        s,
+        "  contact duration    {:.6e} s (force above 1e-6 of its peak; touching {:.6e} s)",
+        r.contact_duration_s, r.touching_duration_s
+    );
     let _ = writeln!(s, "  impulse             {:.6e} N s", r.impulse_ns);
     let _ = writeln!(
         s,

@@ -80,20 +80,92 @@ impl ModelKind {
     }
 }
 
+/// A contact counts as loaded while its force exceeds this fraction of its peak. The bars can
+/// go on touching at zero force (a short bar on a longer one of equal impedance, after the short
+/// one's round trip), and there the touching time is decided by round-off noise; the loaded time
+/// is what wave theory calls the contact duration.
+pub const LOADED_FRACTION: f64 = 1e-6;
+
+/// Where the loaded interval ends (starts) within this fraction of its length of the touching
+/// interval's end (start), the touching instant is kept: the solver locates it exactly, where the
+/// threshold crossing is read off the samples. A smooth contact (force to zero at separation)
+/// thereby keeps its exact duration.
+pub const SNAP_FRACTION: f64 = 1e-3;
+
 /// One interval of contact.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContactEvent {
+    /// When the bars (the planes, in the paper reading) first touch.
     pub start_s: f64,
-    /// `None` when the contact is still on at the end of the simulated span.
+    /// When they part; `None` when the contact is still on at the end of the simulated span.
     pub end_s: Option<f64>,
+    /// When the force first exceeds [`LOADED_FRACTION`] of the peak.
+    pub loaded_start_s: f64,
+    /// When it last falls below that; `None` when still loaded at the end of the span.
+    pub loaded_end_s: Option<f64>,
     pub peak_force_n: f64,
     pub impulse_ns: f64,
 }
 
 impl ContactEvent {
+    /// The contact duration: how long the force stays above [`LOADED_FRACTION`] of its peak.
     pub fn duration_s(&self) -> Option<f64> {
+        self.loaded_end_s.map(|e| e - self.loaded_start_s)
+    }
+
+    /// How long the bars touch, loaded or not.
+    pub fn touching_s(&self) -> Option<f64> {
         self.end_s.map(|e| e - self.start_s)
     }
+}
+
+/// The loaded part of the contact [start, end] of sampled force, by [`LOADED_FRACTION`] of
+/// `peak`, crossings interpolated linearly and snapped to the touching ends by
+/// [`SNAP_FRACTION`].
+pub(crate) fn loaded_interval(
+    time: &[f64],
+    force: &[f64],
+    start: f64,
+    end: Option<f64>,
+    peak: f64,
+) -> (f64, Option<f64>) {
+    let lo = time.partition_point(|&t| t < start);
+    let hi = time
+        .partition_point(|&t| t <= end.unwrap_or(f64::INFINITY))
+        .min(force.len());
+    let threshold = LOADED_FRACTION * peak;
+    let above: Vec<usize> = (lo..hi).filter(|&i| force[i] > threshold).collect();
+    let (Some(&first), Some(&last)) = (above.first(), above.last()) else {
+        return (start, end);
+    };
+    let cross = |a: usize, b: usize| {
+        let (fa, fb) = (force[a], force[b]);
+        if fa == fb {
+            time[a]
+        } else {
+            time[a] + (threshold - fa) / (fb - fa) * (time[b] - time[a])
+        }
+    };
+    let mut loaded_start = if first > lo {
+        cross(first - 1, first)
+    } else {
+        start
+    };
+    let mut loaded_end = if last + 1 < hi {
+        Some(cross(last, last + 1))
+    } else {
+        end
+    };
+    let length = loaded_end.unwrap_or(time[last]) - loaded_start;
+    if loaded_start - start <= SNAP_FRACTION * length {
+        loaded_start = start;
+    }
+    if let (Some(e), Some(le)) = (end, loaded_end)
+        && e - le <= SNAP_FRACTION * length
+    {
+        loaded_end = Some(e);
+    }
+    (loaded_start, loaded_end)
 }
 
 /// Where the initial kinetic energy went [J].
@@ -152,8 +224,11 @@ pub struct ImpactResult {
     /// Approach of the contact (of the planes P_i in the paper reading) [m].
     pub approach_m: Vec<f64>,
     pub contacts: Vec<ContactEvent>,
-    /// Duration of the first contact [s] (0 for an instantaneous or no impact).
+    /// Duration of the first contact [s]: how long its force stays above [`LOADED_FRACTION`]
+    /// of its peak (0 for an instantaneous or no impact).
     pub contact_duration_s: f64,
+    /// How long the bars touch in the first contact, loaded or not [s].
+    pub touching_duration_s: f64,
     /// Peak force of the run [N]; `None` for stereomechanics (an instantaneous exchange).
     pub peak_force_n: Option<f64>,
     /// Total impulse of the run [N s].
@@ -374,16 +449,23 @@ fn finish(model: ModelKind, sc: &ImpactScenario, raw: Raw) -> ImpactResult {
     let contacts: Vec<ContactEvent> = raw
         .contacts
         .iter()
-        .map(|&(start_s, end_s, impulse_ns)| ContactEvent {
-            start_s,
-            end_s,
-            peak_force_n: peak_between(
+        .map(|&(start_s, end_s, impulse_ns)| {
+            let peak_force_n = peak_between(
                 &raw.time_s,
                 &raw.force_n,
                 start_s,
                 end_s.unwrap_or(f64::INFINITY),
-            ),
-            impulse_ns,
+            );
+            let (loaded_start_s, loaded_end_s) =
+                loaded_interval(&raw.time_s, &raw.force_n, start_s, end_s, peak_force_n);
+            ContactEvent {
+                start_s,
+                end_s,
+                loaded_start_s,
+                loaded_end_s,
+                peak_force_n,
+                impulse_ns,
+            }
         })
         .collect();
     let peak_force_n = match raw.peak_override_n {
@@ -408,6 +490,7 @@ fn finish(model: ModelKind, sc: &ImpactScenario, raw: Raw) -> ImpactResult {
         model,
         impact: w > 0.0,
         contact_duration_s: first.and_then(|c| c.duration_s()).unwrap_or(0.0),
+        touching_duration_s: first.and_then(|c| c.touching_s()).unwrap_or(0.0),
         restitution_first_contact: restitution_of(first.map(|c| c.impulse_ns).unwrap_or(0.0)),
         restitution: restitution_of(raw.impulse_ns),
         time_s: raw.time_s,
