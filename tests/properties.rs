@@ -3,7 +3,7 @@
 //! exactly where an independent energy count says the reading created energy.
 
 mod common;
-use common::field_energy_in_frame;
+use common::{field_energy_in_frame, field_momentum};
 use pounding::model::bar::{EndShape, Section};
 use pounding::model::contact::LawKind;
 use pounding::model::impact::Warning;
@@ -96,7 +96,10 @@ proptest! {
                 let mut fine = s;
                 fine.solver.dt_s = r.stats.dt_s / 16.0;
                 let bf = solve(model, &fine).map_err(|e| TestCaseError::fail(e.to_string()))?.energy.balance_error.abs();
-                prop_assert!(bf < (b / 2.0).max(1e-4), "{}: balance {} at dt, {} at dt/16 (unresolved)", tag, b, bf);
+                // Before the step resolves the contact the loss need not fall in proportion (a
+                // 1e-6 s step on a 3e-9 s contact loses 1.4e-4, at a sixteenth of it 1.0e-4, at
+                // a 256th 1.2e-6): refining must not make it worse.
+                prop_assert!(bf <= b.max(1e-4), "{}: balance {} at dt, {} at dt/16 (unresolved)", tag, b, bf);
             } else if b > 1e-5 {
                 // Converging: 16 times smaller at a 64 times finer step (a coarse run can sit
                 // before the asymptotic range, where one halving may even raise the error).
@@ -133,7 +136,28 @@ proptest! {
         } else if created < 0.5 * ENERGY_CREATION_TOL {
             prop_assert!(!warned, "warned with only {created:.3e} created");
         }
-        // Momentum holds in every reading.
-        prop_assert!((m1 * r.velocities_after_m_s[0] + m2 * r.velocities_after_m_s[1] - m1 * sc.bar1.velocity_m_s - m2 * sc.bar2.velocity_m_s).abs() <= 1e-9 * (m1 + m2) * (w + sc.bar2.velocity_m_s.abs()));
+        // Momentum holds in every reading: integrated over the bars' velocity fields (the
+        // after-velocities are v -/+ J/m and would balance whatever the force was). The field
+        // is rebuilt from force samples by interpolation at each bar's own round trip, so it
+        // holds to second order in the step: within 2e-3 of the impulse, and a run at a
+        // sixteenth of the step must come sixteen times closer (one halving can sit before the
+        // asymptotic range: 6.1e-5, then 7.7e-5, then 2.9e-5 of 5.9 N s). Where the step could not resolve the contact the
+        // field rebuilt from spikes between samples says little, so those runs are left out.
+        if !r.warnings.iter().any(|w| matches!(w, Warning::StepKept { .. })) {
+            let defect = |r: &pounding::model::impact::ImpactResult| {
+                let waves = r.waves.as_ref().unwrap();
+                let points = |w: &pounding::model::field::BarWaves| {
+                    ((8.0 * w.length_m() / (w.wave_speed_m_s * r.stats.dt_s)).ceil() as usize).clamp(2000, 400_000) & !1
+                };
+                let after: f64 = (0..2).map(|i| field_momentum(&waves[i], bars[i].effective_density_kg_m3(), r.end_s, points(&waves[i]))).sum();
+                (after - (m1 * sc.bar1.velocity_m_s + m2 * sc.bar2.velocity_m_s)).abs()
+            };
+            let mut finer = sc;
+            finer.solver.dt_s = r.stats.dt_s / 16.0;
+            let rf = solve(ModelKind::Sears, &finer).map_err(|e| TestCaseError::fail(e.to_string()))?;
+            let (coarse, fine) = (defect(&r), defect(&rf));
+            prop_assert!(coarse <= 2e-3 * r.impulse_ns, "momentum defect {coarse:e} against impulse {:e}", r.impulse_ns);
+            prop_assert!(fine <= coarse / 16.0 + 1e-6 * r.impulse_ns, "momentum defect {coarse:e} at dt, {fine:e} at dt/16");
+        }
     }
 }
