@@ -3,24 +3,61 @@
 
 use super::export::ShownPlot;
 use crate::export::plot::LinePlot;
+use crate::export::plot::{log_axis_pays, tick_label};
 use eframe::egui;
-use egui_plot::{Legend, Line, Plot, Points};
+use egui_plot::{GridInput, GridMark, Legend, Line, Plot, Points};
 
-/// A tick label: three significant digits.
-pub fn tick(x: f64) -> String {
-    if x == 0.0 || !x.is_finite() {
-        return "0".into();
+/// Grid marks of a log10 axis: every decade (labelled first), 2 and 5 times it, then the other
+/// digits, so a decade a few hundred points wide reads 1, 2, 5, 10 and a wider one each digit.
+fn log_marks(input: GridInput) -> Vec<GridMark> {
+    let (lo, hi) = input.bounds;
+    if !(lo.is_finite() && hi.is_finite()) || hi - lo > 400.0 {
+        return Vec::new();
     }
-    if !(1e-3..1e4).contains(&x.abs()) {
-        return format!("{x:.2e}");
+    let mut marks = Vec::new();
+    for decade in (lo.floor() as i64)..=(hi.ceil() as i64) {
+        for digit in 1..10 {
+            let value = decade as f64 + f64::from(digit).log10();
+            let step_size = match digit {
+                1 => 1.0,
+                2 | 5 => 0.3,
+                _ => 0.1,
+            };
+            if (lo..=hi).contains(&value) {
+                marks.push(GridMark { value, step_size });
+            }
+        }
     }
-    let decimals = (2 - x.abs().log10().floor() as i32).max(0) as usize;
-    let text = format!("{x:.decimals$}");
-    if text.contains('.') {
-        text.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        text
+    marks
+}
+
+/// Grid marks of a linear axis: labelled steps of 1, 2 or 5 times a power of ten, at least 32
+/// points apart (egui_plot's own spacer labels only powers of ten, so a short plot of e between
+/// 0.5 and 1 read "1" alone), with five unlabelled lines between.
+fn nice_marks(input: GridInput) -> Vec<GridMark> {
+    let (lo, hi) = input.bounds;
+    // base_step_size is the value of 8 points.
+    let wanted = 4.0 * input.base_step_size;
+    if !(lo.is_finite() && hi.is_finite() && wanted.is_finite() && wanted > 0.0) {
+        return Vec::new();
     }
+    let decade = 10f64.powf(wanted.log10().floor());
+    let major = [1.0, 2.0, 5.0, 10.0]
+        .into_iter()
+        .map(|m| m * decade)
+        .find(|&step| step >= wanted)
+        .unwrap_or(10.0 * decade);
+    let minor = major / 5.0;
+    let (first, last) = ((lo / minor).ceil(), (hi / minor).floor());
+    if !(last - first < 10_000.0) {
+        return Vec::new();
+    }
+    (first as i64..=last as i64)
+        .map(|k| GridMark {
+            value: k as f64 * minor,
+            step_size: if k % 5 == 0 { major } else { minor },
+        })
+        .collect()
 }
 
 /// Draws `plot` `height` points high; plots sharing `link` pan and zoom together in x.
@@ -31,7 +68,11 @@ pub fn draw(
     height: f32,
     link: Option<egui::Id>,
 ) -> ShownPlot {
-    let x = |v: f64| if plot.log_x { v.log10() } else { v };
+    let points = || plot.series.iter().flat_map(|s| s.points.iter());
+    let log_x = log_axis_pays(plot.log_x, points().map(|p| p.0));
+    let log_y = log_axis_pays(plot.log_y, points().map(|p| p.1));
+    let axis = |log: bool| move |v: f64| if log { v.log10() } else { v };
+    let (x, y) = (axis(log_x), axis(log_y));
     let series: Vec<(String, Vec<[f64; 2]>)> = plot
         .series
         .iter()
@@ -39,22 +80,36 @@ pub fn draw(
             let pts = s
                 .points
                 .iter()
-                .map(|(a, b)| [x(*a), *b])
+                .map(|(a, b)| [x(*a), y(*b)])
                 .filter(|p| p[0].is_finite() && p[1].is_finite())
                 .collect();
             (s.name.clone(), super::series::thin(pts))
         })
         .collect();
+    let label = |text: &str, log: bool| {
+        if log {
+            format!("{text} (log scale)")
+        } else {
+            text.to_string()
+        }
+    };
     let mut p = Plot::new(id)
         .height(height)
         .legend(Legend::default())
-        .y_axis_label(plot.y_label.clone());
-    p = if plot.log_x {
-        p.x_axis_label(format!("{} (log scale)", plot.x_label))
-            .x_axis_formatter(|mark, _| tick(10f64.powf(mark.value)))
+        .x_axis_label(label(&plot.x_label, log_x))
+        .y_axis_label(label(&plot.y_label, log_y));
+    if log_x {
+        p = p
+            .x_grid_spacer(log_marks)
+            .x_axis_formatter(|mark, _| tick_label(10f64.powf(mark.value)));
+    }
+    if log_y {
+        p = p
+            .y_grid_spacer(log_marks)
+            .y_axis_formatter(|mark, _| tick_label(10f64.powf(mark.value)));
     } else {
-        p.x_axis_label(plot.x_label.clone())
-    };
+        p = p.y_grid_spacer(nice_marks);
+    }
     if let Some(link) = link {
         p = p.link_axis(link, [true, false]);
     }
@@ -70,12 +125,16 @@ pub fn draw(
     let b = response.transform.bounds();
     ShownPlot {
         title: plot.title.clone(),
-        x_label: if plot.log_x {
+        x_label: if log_x {
             format!("log10 {}", plot.x_label)
         } else {
             plot.x_label.clone()
         },
-        y_label: plot.y_label.clone(),
+        y_label: if log_y {
+            format!("log10 {}", plot.y_label)
+        } else {
+            plot.y_label.clone()
+        },
         series,
         bounds: Some((b.min(), b.max())),
     }
@@ -88,8 +147,51 @@ mod tests {
     #[test]
     fn log_axis_ticks_read_as_three_significant_digits() {
         let shown: Vec<String> = [0.501187, 1.0, 1.258925, 7.943282, 12345.0, 0.0001]
-            .map(tick)
+            .map(tick_label)
             .into();
         assert_eq!(shown, ["0.501", "1", "1.26", "7.94", "1.23e4", "1.00e-4"]);
+    }
+
+    #[test]
+    fn a_range_under_a_decade_gets_a_linear_axis() {
+        // Restitution between 0.5 and 1 on a log axis showed one tick label ("1").
+        assert!(!log_axis_pays(true, [0.5, 0.7, 1.0].into_iter()));
+        assert!(log_axis_pays(true, [0.05, 1.0].into_iter()));
+        assert!(!log_axis_pays(false, [0.05, 1.0].into_iter()));
+    }
+
+    #[test]
+    fn a_log_axis_marks_every_decade_and_labels_two_and_five_between() {
+        let marks = log_marks(GridInput {
+            bounds: (-1.05, 0.35),
+            base_step_size: 0.01,
+        });
+        let labelled: Vec<String> = marks
+            .iter()
+            .filter(|m| m.step_size >= 0.3)
+            .map(|m| tick_label(10f64.powf(m.value)))
+            .collect();
+        assert_eq!(labelled, ["0.1", "0.2", "0.5", "1", "2"]);
+        assert_eq!(marks.len(), 9 + 3);
+    }
+
+    #[test]
+    fn a_linear_axis_labels_one_two_five_steps_at_least_32_points_apart() {
+        // 0.5 to 1 over 160 points: 8 points are 0.025, so labels every 0.1 (32 points).
+        let marks = nice_marks(GridInput {
+            bounds: (0.5, 1.0),
+            base_step_size: 0.025,
+        });
+        let labelled: Vec<f64> = marks
+            .iter()
+            .filter(|m| m.step_size > 0.05)
+            .map(|m| (m.value * 1e9).round() / 1e9)
+            .collect();
+        assert_eq!(labelled, [0.5, 0.6, 0.7, 0.8, 0.9, 1.0]);
+        assert!(
+            marks
+                .iter()
+                .all(|m| (m.step_size - 0.1).abs() < 1e-12 || (m.step_size - 0.02).abs() < 1e-12)
+        );
     }
 }

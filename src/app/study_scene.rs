@@ -12,6 +12,7 @@ use super::plot_view;
 use crate::export::plot::{LinePlot, Series};
 use crate::io::settings::ImpactSetup;
 use crate::model::impact::ModelKind;
+use crate::model::settings::{IMPACT_SETTINGS, axis_label};
 use crate::study::Cancelled;
 use crate::study::sweep::{self, Point};
 use eframe::egui;
@@ -454,7 +455,7 @@ impl StudyScene {
                 markers: f.points.len() / models.len().max(1) <= 40,
                 ..LinePlot::new(
                     format!("{title} against {}", f.param),
-                    f.param.clone(),
+                    axis_label(IMPACT_SETTINGS, &f.param),
                     *y_label,
                     series,
                 )
@@ -566,5 +567,20 @@ mod tests {
         s.models = [false; 7];
         s.start();
         assert!(s.status.clone().unwrap().0.starts_with("models:"));
+    }
+
+    #[test]
+    fn the_plots_name_the_swept_setting_by_label_and_unit_and_restitution_reads_linearly() {
+        let ctx = egui::Context::default();
+        let mut s = StudyScene::new(&ctx, ImpactSetup::default());
+        wait(&mut s);
+        let exporter = Exporter::default();
+        let mut out = ctx.run_ui(egui::RawInput::default(), |ui| s.main_ui(ui, &exporter));
+        out.textures_delta.clear();
+        for shown in &s.shown {
+            assert_eq!(shown.x_label, "bar 2 length [m]");
+        }
+        // e spans less than a decade: a linear axis, its values as they are.
+        assert_eq!(s.shown[2].y_label, "e");
     }
 }

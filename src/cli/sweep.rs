@@ -5,6 +5,7 @@ use anyhow::{anyhow, bail};
 use clap::Args;
 use pounding::export::plot::{LinePlot, Series};
 use pounding::model::impact::ModelKind;
+use pounding::model::settings::{IMPACT_SETTINGS, axis_label};
 use pounding::study::Progress;
 use pounding::study::sweep::{self, Part, Point};
 use serde::Serialize;
@@ -185,7 +186,7 @@ fn plot(r: &SweepReport, log: bool) -> LinePlot {
         markers: r.values.len() <= 30,
         ..LinePlot::new(
             format!("Peak contact force against {}", r.param),
-            r.param.clone(),
+            axis_label(IMPACT_SETTINGS, &r.param),
             "peak force [kN]",
             series,
         )

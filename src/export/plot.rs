@@ -67,6 +67,35 @@ const PALETTE: [RGBColor; 8] = [
     RGBColor(23, 190, 207),
 ];
 
+/// A tick label: three significant digits, exponent form outside [1e-3, 1e4).
+pub fn tick_label(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return "0".into();
+    }
+    if !(1e-3..1e4).contains(&x.abs()) {
+        return format!("{x:.2e}");
+    }
+    let decimals = (2 - x.abs().log10().floor() as i32).max(0) as usize;
+    let text = format!("{x:.decimals$}");
+    if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        text
+    }
+}
+
+/// Whether values asked for on a logarithmic axis get one: only where they span a decade or more
+/// (over less, a log axis has one or two labelled ticks and reads worse than a linear one).
+pub fn log_axis_pays(log: bool, values: impl Iterator<Item = f64>) -> bool {
+    if !log {
+        return false;
+    }
+    let (lo, hi) = values
+        .filter(|v| v.is_finite() && *v > 0.0)
+        .fold((f64::INFINITY, 0.0f64), |(a, b), v| (a.min(v), b.max(v)));
+    lo.is_finite() && hi >= 10.0 * lo
+}
+
 impl LinePlot {
     /// A linear-axes plot of 1000 x 600 pixels at scale 1, fitted to its data.
     pub fn new(
@@ -135,7 +164,9 @@ impl LinePlot {
             return if log { (1e-12, 1.0) } else { (0.0, 1.0) };
         }
         if log {
-            (lo / 1.5, hi * 1.5)
+            // From a power of ten: the axis's ticks run upwards from one (1, 2, ..., 9 times
+            // it), and a first decade without one would have no labels.
+            (10f64.powf((lo / 1.5).log10().floor()), hi * 1.5)
         } else {
             let pad = 0.05 * (hi - lo).max(hi.abs().max(1e-300) * 1e-9);
             (lo - pad, hi + pad)
@@ -150,12 +181,11 @@ impl LinePlot {
         DB::ErrorType: 'static,
     {
         area.fill(&WHITE).map_err(|e| e.to_string())?;
-        let (x0, x1) = self
-            .x_range
-            .unwrap_or_else(|| self.range(self.log_x, |p| p.0));
-        let (y0, y1) = self
-            .y_range
-            .unwrap_or_else(|| self.range(self.log_y, |p| p.1));
+        let points = || self.series.iter().flat_map(|s| s.points.iter());
+        let log_x = log_axis_pays(self.log_x, points().map(|p| p.0));
+        let log_y = log_axis_pays(self.log_y, points().map(|p| p.1));
+        let (x0, x1) = self.x_range.unwrap_or_else(|| self.range(log_x, |p| p.0));
+        let (y0, y1) = self.y_range.unwrap_or_else(|| self.range(log_y, |p| p.1));
         let k = self.scale.clamp(0.25, 8.0);
         let px = |v: f64| (v * k).round().max(1.0) as u32;
         let mut builder = ChartBuilder::on(&area);
@@ -170,7 +200,7 @@ impl LinePlot {
                 let tick = |log: bool| {
                     move |v: &f64| {
                         if log {
-                            format!("{v:.0e}")
+                            tick_label(*v)
                         } else {
                             format!("{}", (v * 1e6).round() / 1e6)
                         }
@@ -180,8 +210,8 @@ impl LinePlot {
                     .configure_mesh()
                     .x_desc(self.x_label.as_str())
                     .y_desc(self.y_label.as_str())
-                    .x_label_formatter(&tick(self.log_x))
-                    .y_label_formatter(&tick(self.log_y))
+                    .x_label_formatter(&tick(log_x))
+                    .y_label_formatter(&tick(log_y))
                     .label_style(("sans-serif", px(14.0)))
                     .axis_desc_style(("sans-serif", px(16.0)))
                     .draw()
@@ -195,8 +225,8 @@ impl LinePlot {
                         .filter(|(x, y)| {
                             x.is_finite()
                                 && y.is_finite()
-                                && (!self.log_x || *x > 0.0)
-                                && (!self.log_y || *y > 0.0)
+                                && (!log_x || *x > 0.0)
+                                && (!log_y || *y > 0.0)
                         })
                         .collect();
                     chart
@@ -228,7 +258,7 @@ impl LinePlot {
                     .map_err(|e| e.to_string())?;
             }};
         }
-        match (self.log_x, self.log_y) {
+        match (log_x, log_y) {
             (true, true) => finish!(
                 builder
                     .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())

@@ -236,6 +236,26 @@ pub fn check(table: &'static [Setting], field: &str, value: f64) -> Result<(), I
     }
 }
 
+/// An axis label for a concrete key: "bar 2 length [m]" for `bar2.length`, "left period [s]"
+/// for `left.period`, the key itself where the table does not list it.
+pub fn axis_label(table: &'static [Setting], key: &str) -> String {
+    let Some(s) = find(table, key) else {
+        return key.to_string();
+    };
+    let owner = match key.split_once('.') {
+        Some(("bar1", _)) => "bar 1 ",
+        Some(("bar2", _)) => "bar 2 ",
+        Some(("left", _)) => "left ",
+        Some(("right", _)) => "right ",
+        _ => "",
+    };
+    if s.unit.is_empty() {
+        format!("{owner}{}", s.label)
+    } else {
+        format!("{owner}{} [{}]", s.label, s.unit)
+    }
+}
+
 /// Every concrete key of a table: `barN` and `SIDE` keys spelled out for both.
 pub fn concrete_keys(table: &[Setting]) -> Vec<String> {
     table
@@ -833,6 +853,19 @@ mod tests {
         let e = s.check("bar2.length", -1.0).unwrap_err();
         assert_eq!(e.field, "bar2.length");
         assert!(e.message.contains("[1e-6, 1e6] m"), "{}", e.message);
+    }
+
+    #[test]
+    fn axis_labels_name_the_bar_the_quantity_and_its_unit() {
+        assert_eq!(
+            axis_label(IMPACT_SETTINGS, "bar2.length"),
+            "bar 2 length [m]"
+        );
+        assert_eq!(
+            axis_label(BUILDING_SETTINGS, "left.period"),
+            "left period [s]"
+        );
+        assert_eq!(axis_label(IMPACT_SETTINGS, "nonsense"), "nonsense");
     }
 
     #[test]
