@@ -9,7 +9,6 @@
 use eframe::egui;
 use egui_kittest::{Harness, SnapshotOptions};
 use pounding::app::{HIDE_TIMINGS, Launch, PoundingApp, SceneKind};
-use std::time::{Duration, Instant};
 
 mod common;
 
@@ -31,22 +30,7 @@ fn snapshot(scene: SceneKind, time_s: f64, name: &str) {
         .wgpu()
         .build_eframe(|cc| PoundingApp::new(cc, launch));
     // Solves run on worker threads: step until all of them have landed and stayed so.
-    let start = Instant::now();
-    let mut quiet = 0;
-    while quiet < 5 {
-        harness.step();
-        quiet = if harness.state().is_solving() {
-            0
-        } else {
-            quiet + 1
-        };
-        assert!(
-            start.elapsed() < Duration::from_secs(120),
-            "{name}: solves never finished"
-        );
-        std::thread::sleep(Duration::from_millis(20));
-    }
-    harness.run_steps(3);
+    common::settle(&mut harness, name);
     harness.snapshot_options(
         name,
         &SnapshotOptions::new().max_failed_pixels(MAX_FAILED_PIXELS),

@@ -114,3 +114,24 @@ pub fn read_png(path: &std::path::Path) -> (u32, u32, usize, Vec<u8>) {
     let info = reader.next_frame(&mut pixels).expect("decodes");
     (info.width, info.height, info.color_type.samples(), pixels)
 }
+
+/// Steps the window until every background solve has landed and stayed so for five frames.
+#[cfg(feature = "gui")]
+pub fn settle(harness: &mut egui_kittest::Harness<'_, pounding::app::PoundingApp>, name: &str) {
+    let start = std::time::Instant::now();
+    let mut quiet = 0;
+    while quiet < 5 {
+        harness.step();
+        quiet = if harness.state().is_solving() {
+            0
+        } else {
+            quiet + 1
+        };
+        assert!(
+            start.elapsed() < std::time::Duration::from_secs(120),
+            "{name}: solves never finished"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    harness.run_steps(3);
+}
