@@ -49,7 +49,7 @@ fn nice_marks(input: GridInput) -> Vec<GridMark> {
         .unwrap_or(10.0 * decade);
     let minor = major / 5.0;
     let (first, last) = ((lo / minor).ceil(), (hi / minor).floor());
-    if !(last - first < 10_000.0) {
+    if last - first >= 10_000.0 || last < first {
         return Vec::new();
     }
     (first as i64..=last as i64)
