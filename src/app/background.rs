@@ -1,5 +1,6 @@
 //! A study run on a thread of its own: its progress is read each frame, it can be cancelled, and
-//! its outcome is taken once it lands (the window is repainted when it does).
+//! its outcome is taken once it lands (the window is repainted when it does). A panic in the
+//! study is caught and lands as its outcome, so the scene never waits for ever.
 
 use crate::study::Progress;
 use eframe::egui;
@@ -9,7 +10,7 @@ use std::time::{Duration, Instant};
 
 pub struct Background<T> {
     progress: Arc<Progress>,
-    rx: Receiver<T>,
+    rx: Receiver<Result<T, String>>,
     started: Instant,
 }
 
@@ -21,7 +22,9 @@ impl<T: Send + 'static> Background<T> {
         std::thread::Builder::new()
             .name("pounding-study".into())
             .spawn(move || {
-                let _ = tx.send(work(&p));
+                let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| work(&p)))
+                    .map_err(|e| super::worker::panic_message(e.as_ref()));
+                let _ = tx.send(outcome);
                 ctx.request_repaint();
             })
             .expect("the study thread starts");
@@ -32,9 +35,9 @@ impl<T: Send + 'static> Background<T> {
         }
     }
 
-    /// The outcome and the wall time, once landed; until then asks for a repaint soon so the
-    /// progress bar moves.
-    pub fn try_take(&self, ctx: &egui::Context) -> Option<(T, Duration)> {
+    /// The outcome (or the message of the panic that ended the study) and the wall time, once
+    /// landed; until then asks for a repaint soon so the progress bar moves.
+    pub fn try_take(&self, ctx: &egui::Context) -> Option<(Result<T, String>, Duration)> {
         match self.rx.try_recv() {
             Ok(out) => Some((out, self.started.elapsed())),
             Err(_) => {

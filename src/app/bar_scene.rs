@@ -6,11 +6,12 @@ use super::export::{Exporter, ShownPlot};
 use super::impact_params;
 use super::params::Fields;
 use super::playback::Playback;
-use super::worker::Worker;
+use super::worker::{Worker, internal_error};
 use crate::io::preset;
 use crate::io::settings::ImpactSetup;
-use crate::model::impact::estimate::{ErrorEstimate, estimate_error};
-use crate::model::impact::{ImpactResult, ModelKind, solve};
+use crate::model::control::Control;
+use crate::model::impact::estimate::{ErrorEstimate, estimate_error_with};
+use crate::model::impact::{ImpactResult, ModelKind, SolveError, solve_with};
 use crate::model::scenario::Reading;
 use eframe::egui::{self, Color32};
 use egui_plot::{Legend, Line, Plot, VLine};
@@ -50,19 +51,26 @@ pub struct BarScene {
     shown_approach: ShownPlot,
 }
 
-fn run_job((setup, compare): Job) -> Output {
+fn run_job((setup, compare): Job, control: &Control) -> Output {
     let models: Vec<ModelKind> = if compare {
         COMPARED.to_vec()
     } else {
         vec![setup.model]
     };
+    // The single-model scene shows its result's own error estimate (one more, coarser solve).
+    let stages = if compare { models.len() } else { 2 } as u32;
     let results: Vec<_> = models
         .into_iter()
-        .map(|m| (m, solve(m, &setup.scenario).map_err(|e| e.to_string())))
+        .enumerate()
+        .map(|(k, m)| {
+            control.stage(k as u32, stages);
+            let r = solve_with(m, &setup.scenario, control).map_err(|e| e.to_string());
+            (m, r)
+        })
         .collect();
-    // The single-model scene shows its result's own error estimate (one more, coarser solve).
+    control.stage(1, stages);
     let estimate = match (&results[..], compare) {
-        ([(m, Ok(r))], false) => estimate_error(*m, &setup.scenario, r).ok(),
+        ([(m, Ok(r))], false) => estimate_error_with(*m, &setup.scenario, r, control).ok(),
         _ => None,
     };
     (results, estimate)
@@ -104,8 +112,23 @@ impl BarScene {
         self.solve_time = done.elapsed;
         self.latency = latency;
         self.error = None;
+        let (results, estimate) = match done.output {
+            Ok(out) => out,
+            // The last result stays on screen.
+            Err(panic) => {
+                self.error = Some(internal_error(&panic));
+                return;
+            }
+        };
+        let cancelled = SolveError::Cancelled.to_string();
+        if results
+            .iter()
+            .any(|(_, r)| r.as_ref().is_err_and(|e| *e == cancelled))
+        {
+            self.error = Some("cancelled: the last result is kept".into());
+            return;
+        }
         self.peers.clear();
-        let (results, estimate) = done.output;
         self.estimate = estimate;
         for (model, result) in results {
             match result {
@@ -131,6 +154,15 @@ impl BarScene {
 
     pub fn busy(&self) -> bool {
         self.worker.busy()
+    }
+
+    /// The running solve's progress, once it has taken longer than a frame.
+    pub fn progress(&self) -> Option<f64> {
+        self.worker.progress(super::worker::PROGRESS_AFTER)
+    }
+
+    pub fn cancel(&mut self) {
+        self.worker.cancel();
     }
 
     /// Loads a preset by name or file; on error the scene is kept and the error returned.

@@ -9,12 +9,15 @@ use super::export::{Exporter, ShownPlot};
 use super::params::Fields;
 use super::playback::Playback;
 use super::series::decimate;
-use super::worker::Worker;
+use super::worker::{Worker, internal_error};
 use crate::io::building_settings::BuildingSetup;
 use crate::model::building::gaps::{GapAssessment, assess};
 use crate::model::building::{
-    BuildingErrorEstimate, BuildingResult, BuildingScenario, ContactModel, estimate_error, solve,
+    BuildingErrorEstimate, BuildingResult, BuildingScenario, ContactModel, estimate_error_with,
+    solve_with,
 };
+use crate::model::control::Control;
+use crate::model::impact::SolveError;
 use crate::model::motion::{G, GroundMotion};
 use eframe::egui::{self, Color32};
 use egui_plot::{Legend, Line, Plot, PlotBounds, VLine};
@@ -58,20 +61,34 @@ pub struct BuildingScene {
     shown_force: ShownPlot,
 }
 
-fn run_job(setup: BuildingSetup) -> Output {
+/// What the scene says when its solve was cancelled.
+const CANCELLED: &str = "cancelled: the last result is kept";
+
+fn run_job(setup: BuildingSetup, control: &Control) -> Output {
     let motion =
         crate::io::motion::load(&setup.motion).map_err(|e| format!("ground motion: {e}"))?;
-    let result = solve(&setup.scenario, &motion).map_err(|e| e.to_string())?;
-    let baseline = solve(
+    // The estimate's run takes about twice the main one, the run without contact a tenth.
+    control.stage(0, 3);
+    let failed = |e: SolveError| match e {
+        SolveError::Cancelled => CANCELLED.to_string(),
+        e => e.to_string(),
+    };
+    let result = solve_with(&setup.scenario, &motion, control).map_err(failed)?;
+    let baseline = solve_with(
         &BuildingScenario {
             contact: ContactModel::None,
             ..setup.scenario.clone()
         },
         &motion,
+        control,
     )
-    .map_err(|e| e.to_string())?;
-    let estimate = estimate_error(&setup.scenario, &motion, &result).ok();
-    Ok((motion, result, baseline, estimate))
+    .map_err(failed)?;
+    control.stage(1, 3);
+    let estimate = estimate_error_with(&setup.scenario, &motion, &result, control);
+    if matches!(estimate, Err(SolveError::Cancelled)) {
+        return Err(CANCELLED.into());
+    }
+    Ok((motion, result, baseline, estimate.ok()))
 }
 
 impl BuildingScene {
@@ -111,13 +128,25 @@ impl BuildingScene {
         self.worker.busy()
     }
 
+    /// The running solve's progress, once it has taken longer than a frame.
+    pub fn progress(&self) -> Option<f64> {
+        self.worker.progress(super::worker::PROGRESS_AFTER)
+    }
+
+    pub fn cancel(&mut self) {
+        self.worker.cancel();
+    }
+
     pub fn poll(&mut self) {
         let Some((done, latency)) = self.worker.poll() else {
             return;
         };
         self.solve_time = done.elapsed;
         self.latency = latency;
-        match done.output {
+        match done
+            .output
+            .unwrap_or_else(|panic| Err(internal_error(&panic)))
+        {
             Ok((motion, result, baseline, estimate)) => {
                 self.error = None;
                 self.playback.t_max = motion.duration_s();

@@ -629,6 +629,20 @@ impl eframe::App for PoundingApp {
                     ms(latency.as_secs_f64(), 1),
                     if busy { " | solving..." } else { "" }
                 ));
+                if let Some(done) = self.shown().progress() {
+                    ui.add(
+                        egui::ProgressBar::new(done as f32)
+                            .desired_width(160.0)
+                            .show_percentage(),
+                    );
+                    if ui
+                        .button("Cancel")
+                        .on_hover_text("Stop this solve; the last result stays")
+                        .clicked()
+                    {
+                        self.shown_mut().0.cancel();
+                    }
+                }
                 if let Some((m, is_error)) = &self.message {
                     ui.separator();
                     let colour = if *is_error {

@@ -85,6 +85,13 @@ impl PaperFigures {
         let (outcome, elapsed) = r.try_take(&self.ctx)?;
         let (done, total) = r.counts();
         self.running = None;
+        let outcome = match outcome {
+            Ok(outcome) => outcome,
+            Err(panic) => {
+                self.status = Some((super::worker::internal_error(&panic), true));
+                return None;
+            }
+        };
         match outcome {
             Ok(output) => {
                 self.status = Some((

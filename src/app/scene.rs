@@ -13,6 +13,10 @@ pub trait Scene {
     fn playback(&mut self) -> &mut Playback;
     /// A solve is under way.
     fn busy(&self) -> bool;
+    /// How far a solve that has taken longer than a frame has got (0 to 1).
+    fn progress(&self) -> Option<f64>;
+    /// Stops the solve under way; the last result stays.
+    fn cancel(&mut self);
     /// The last solve's own time, and the time from the change to its result.
     fn timings(&self) -> (Duration, Duration);
     /// The animated view's rectangle last frame.
@@ -29,6 +33,12 @@ impl Scene for BarScene {
     }
     fn busy(&self) -> bool {
         BarScene::busy(self)
+    }
+    fn progress(&self) -> Option<f64> {
+        BarScene::progress(self)
+    }
+    fn cancel(&mut self) {
+        BarScene::cancel(self)
     }
     fn timings(&self) -> (Duration, Duration) {
         (self.solve_time, self.latency)
@@ -54,6 +64,12 @@ impl Scene for BuildingScene {
     fn busy(&self) -> bool {
         BuildingScene::busy(self)
     }
+    fn progress(&self) -> Option<f64> {
+        BuildingScene::progress(self)
+    }
+    fn cancel(&mut self) {
+        BuildingScene::cancel(self)
+    }
     fn timings(&self) -> (Duration, Duration) {
         (self.solve_time, self.latency)
     }
@@ -77,6 +93,13 @@ impl Scene for StudyScene {
     }
     fn busy(&self) -> bool {
         StudyScene::busy(self)
+    }
+    fn progress(&self) -> Option<f64> {
+        // The study shows its own progress bar and Cancel in its panel.
+        None
+    }
+    fn cancel(&mut self) {
+        StudyScene::cancel(self)
     }
     fn timings(&self) -> (Duration, Duration) {
         (self.solve_time, self.solve_time)

@@ -283,6 +283,14 @@ impl StudyScene {
         let Some((outcome, elapsed)) = r.job.try_take(&self.ctx) else {
             return;
         };
+        let outcome = match outcome {
+            Ok(outcome) => outcome,
+            Err(panic) => {
+                self.status = Some((super::worker::internal_error(&panic), true));
+                self.running = None;
+                return;
+            }
+        };
         match outcome {
             Ok(points) => {
                 let failed = points.iter().filter(|p| p.error.is_some()).count();

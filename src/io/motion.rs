@@ -78,18 +78,34 @@ pub fn load(spec: &MotionSpec) -> Result<GroundMotion, MotionError> {
         }
         None => spec.synthetic.generate(),
     };
+    let too_short = |m: &GroundMotion| m.accel_m_s2.len() < 2;
+    if too_short(&motion) {
+        let why = match &spec.file {
+            None => format!(
+                "motion.length: {} s is less than two samples of {} s",
+                crate::model::settings::shown(spec.synthetic.duration_s),
+                crate::model::settings::shown(spec.synthetic.dt_s)
+            ),
+            Some(_) => "the record has fewer than two samples".into(),
+        };
+        return Err(err(&motion.name, None, why));
+    }
     if let Some(d) = spec.duration_s {
         motion = motion.truncated(d);
+        if too_short(&motion) {
+            return Err(err(
+                &motion.name,
+                None,
+                format!(
+                    "motion.duration: {} s leaves fewer than two samples of a record sampled every {} s",
+                    crate::model::settings::shown(d),
+                    crate::model::settings::shown(motion.dt_s)
+                ),
+            ));
+        }
     }
     if spec.scale != 1.0 {
         motion = motion.scaled(spec.scale);
-    }
-    if motion.accel_m_s2.len() < 2 {
-        return Err(err(
-            &motion.name,
-            None,
-            "the record has fewer than two samples",
-        ));
     }
     Ok(motion)
 }

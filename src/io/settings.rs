@@ -109,7 +109,10 @@ pub(crate) fn count(key: &str, v: &SettingValue) -> Result<usize, InputError> {
     } else {
         Err(InputError::new(
             key,
-            format!("expected a whole number >= 0, got {x}"),
+            format!(
+                "expected a whole number >= 0, got {}",
+                crate::model::settings::shown(x)
+            ),
         ))
     }
 }

@@ -80,6 +80,9 @@ pub struct Tap {
     weights: [f64; 4],
 }
 
+/// The longest lag a tap resolves, in steps; see [`Tap::new`].
+const LAG_STEPS_MAX: f64 = 1e15;
+
 impl Tap {
     /// A cubic tap: fourth-order accurate on smooth histories.
     pub fn new(lag_s: f64, dt_s: f64) -> Self {
@@ -95,7 +98,10 @@ impl Tap {
 
     fn with_order(lag_s: f64, dt_s: f64, cubic: bool) -> Self {
         debug_assert!(lag_s >= 0.0 && dt_s > 0.0);
-        let p = -lag_s / dt_s;
+        // A lag beyond 1e15 steps never reaches back past t = 0 within any run the step budget
+        // allows: clamped, its index arithmetic stays far from overflow (a 1e300 m bar or a
+        // 1e-15 s step would otherwise give an index of -2^63).
+        let p = (-lag_s / dt_s).max(-LAG_STEPS_MAX);
         // Snap lags that are a whole number of steps up to rounding, so that the natural cases
         // (lag 0, lag = T on a grid that divides T) read samples exactly.
         let p = if (p - p.round()).abs() < 1e-9 {
@@ -253,6 +259,21 @@ mod tests {
             let want = f(60.0 * dt - 3.0 - lag);
             assert!((got - want).abs() < 1e-10, "lag {lag}: {got} vs {want}");
             assert_eq!(tap.newest_weight() != 0.0, lag < dt, "lag {lag}");
+        }
+    }
+
+    #[test]
+    fn a_lag_of_astronomically_many_steps_reads_the_zero_history_before_t0() {
+        // 1e300 s on a 1e-15 s step: 1e315 steps back, where -lag/dt as an index would overflow.
+        for (lag, dt) in [(1e300, 1e-15), (1e20, 1e-6), (f64::MAX, 1e-300)] {
+            for tap in [Tap::new(lag, dt), Tap::linear(lag, dt)] {
+                let mut s = Series::with_capacity(8);
+                for v in [1.0, 2.0, 3.0] {
+                    s.push(v);
+                }
+                assert_eq!(tap.known_before_push(&s), 0.0, "lag {lag:e} on {dt:e}");
+                assert_eq!(tap.newest_weight(), 0.0);
+            }
         }
     }
 }

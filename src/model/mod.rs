@@ -3,6 +3,7 @@
 pub mod bar;
 pub mod building;
 pub mod contact;
+pub mod control;
 pub mod field;
 pub mod history;
 pub mod impact;

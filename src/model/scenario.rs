@@ -213,6 +213,17 @@ impl ImpactScenario {
                 "hertz needs a rounded end on at least one bar (bar1.end_radius or bar2.end_radius), or an explicit contact.stiffness; both ends are flat",
             ));
         }
+        // A Kelvin-Voigt link that cannot pull reaches e = 0 only with infinite damping
+        // (e ~ 1 / (4 xi^2)); stereomechanics takes e = 0 as a plastic impact.
+        if model == ModelKind::Kelvin && self.contact.restitution <= 0.0 {
+            return Err(InputError::new(
+                "contact.restitution",
+                format!(
+                    "{} is not allowed for kelvin: a link that cannot pull gives e = 0 only with infinite damping; must lie in (0, 1]",
+                    super::settings::shown(self.contact.restitution)
+                ),
+            ));
+        }
         Ok(())
     }
 

@@ -88,15 +88,19 @@ impl Range {
     }
 }
 
+/// A number as messages show it: plain between 1e-3 and 1e4, in exponent form outside (1e300
+/// would otherwise print three hundred digits).
+pub fn shown(x: f64) -> String {
+    if x != 0.0 && x.is_finite() && !(1e-3..1e4).contains(&x.abs()) {
+        format!("{x:e}")
+    } else {
+        format!("{x}")
+    }
+}
+
 impl fmt::Display for Range {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let num = |x: f64| {
-            if x != 0.0 && !(1e-3..1e4).contains(&x.abs()) {
-                format!("{x:e}")
-            } else {
-                format!("{x}")
-            }
-        };
+        let num = shown;
         write!(
             f,
             "{}{}, {}{}",
@@ -201,7 +205,10 @@ impl Setting {
         };
         Err(InputError::new(
             field,
-            format!("{value} is not allowed: must lie in {range}{unit}{or_word}"),
+            format!(
+                "{} is not allowed: must lie in {range}{unit}{or_word}",
+                shown(value)
+            ),
         ))
     }
 }
@@ -699,8 +706,8 @@ pub static BUILDING_SETTINGS: &[Setting] = &[
         key: "contact.restitution",
         label: "restitution",
         unit: "",
-        help: "target restitution of kelvin, hertzdamp, jankowski and stereo",
-        kind: number(Range::above(0.0, 1.0), (0.05, 1.0), false),
+        help: "target restitution of kelvin, hertzdamp, jankowski and stereo (below 0.01 the damped elements are dashpots whose time scale m/c the contact steps do not resolve)",
+        kind: number(Range::closed(0.01, 1.0), (0.05, 1.0), false),
         default: "0.65",
     },
     Setting {

@@ -8,7 +8,8 @@
 //! |e(h/2)| <= |e(h)| / 2, so |e(h)| <= 2 |q(h) - q(h/2)|: twice the difference is a bound. The
 //! contact steps are second order, so the bound is about 1.5 times the actual error.
 
-use super::{BuildingResult, BuildingScenario, solve};
+use super::{BuildingResult, BuildingScenario};
+use crate::model::control::Control;
 use crate::model::impact::SolveError;
 use crate::model::motion::GroundMotion;
 
@@ -49,8 +50,18 @@ pub fn estimate_error(
     motion: &GroundMotion,
     r: &BuildingResult,
 ) -> Result<BuildingErrorEstimate, SolveError> {
+    estimate_error_with(sc, motion, r, Control::never())
+}
+
+/// [`estimate_error`], its solve reporting to `control`.
+pub fn estimate_error_with(
+    sc: &BuildingScenario,
+    motion: &GroundMotion,
+    r: &BuildingResult,
+    control: &Control,
+) -> Result<BuildingErrorEstimate, SolveError> {
     let start = std::time::Instant::now();
-    let fine = solve(&refined(sc, 2.0), motion)?;
+    let fine = super::solve_with(&refined(sc, 2.0), motion, control)?;
     let mut e = compare(r, &fine);
     e.max_force *= 2.0;
     e.peak_displacement *= 2.0;

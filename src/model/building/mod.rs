@@ -21,14 +21,14 @@ mod solve;
 mod stepper;
 pub mod warning;
 
-pub use estimate::{BuildingErrorEstimate, estimate_error};
+pub use estimate::{BuildingErrorEstimate, estimate_error, estimate_error_with};
 pub use levels::{Attachment, Level, LevelKind};
 pub use modal::{DampingModel, Modes};
 pub use result::{
     BuildingEnergy, BuildingResult, BuildingStats, ImpactEvent, RawContact, group_impacts,
 };
 pub use scenario::{Building, BuildingScenario, SLAB_YOUNGS_MODULUS_PA, Slab};
-pub use solve::solve;
+pub use solve::{solve, solve_with};
 pub use warning::Warning;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -6,6 +6,7 @@ use super::result::{BuildingResult, BuildingStats, group_impacts};
 use super::stepper::{Grid, Stepper};
 use super::{BuildingScenario, ContactModel, SlabReading, Warning};
 use crate::model::contact::ContactLaw;
+use crate::model::control::Control;
 use crate::model::impact::SolveError;
 use crate::model::impact::timestep::contact_time_scale;
 use crate::model::motion::GroundMotion;
@@ -125,6 +126,15 @@ fn plan(
 }
 
 pub fn solve(sc: &BuildingScenario, motion: &GroundMotion) -> Result<BuildingResult, SolveError> {
+    solve_with(sc, motion, Control::never())
+}
+
+/// [`solve`], reporting progress to `control` and stopping when it is cancelled.
+pub fn solve_with(
+    sc: &BuildingScenario,
+    motion: &GroundMotion,
+    control: &Control,
+) -> Result<BuildingResult, SolveError> {
     sc.validate()?;
     let start = Instant::now();
     let levels = sc.levels();
@@ -154,7 +164,7 @@ pub fn solve(sc: &BuildingScenario, motion: &GroundMotion) -> Result<BuildingRes
         }
     }
     let mut stepper = Stepper::new(sc, motion, grid, &levels, modes.clone());
-    stepper.run()?;
+    stepper.run(control)?;
     let end_s = grid.total as f64 * grid.h;
     let (energy, still) = stepper.finish(end_s);
     if still {

@@ -22,6 +22,7 @@ use super::modal::{Modes, Propagator, StepIntegrals, propagator, step_integrals}
 use super::result::{BuildingEnergy, RawContact};
 use super::slab::{SlabMark, SlabWaves};
 use super::{BuildingScenario, ContactModel, SlabReading};
+use crate::model::control::{CHECK_EVERY, Control};
 use crate::model::impact::SolveError;
 use crate::model::motion::GroundMotion;
 use crate::model::root::bracket;
@@ -234,6 +235,9 @@ impl Peaks {
 /// it.
 const ONSET_GRADING: u32 = 8;
 
+/// Memory the recorded histories may take [bytes].
+pub const SAMPLE_MEMORY_BUDGET: f64 = 2.0e9;
+
 /// One sample of the histories.
 pub(super) struct Sample {
     pub t: f64,
@@ -415,10 +419,18 @@ impl<'a> Stepper<'a> {
         Ok(())
     }
 
-    /// Runs to the end of the record.
-    pub fn run(&mut self) -> Result<(), SolveError> {
+    /// Runs to the end of the record, telling `control` how far it got.
+    pub fn run(&mut self, control: &Control) -> Result<(), SolveError> {
         let end = self.grid.total;
+        let mut looked_at = 0;
         while self.n < end {
+            // Free steps advance many grid steps at once: look every CHECK_EVERY grid steps.
+            if self.n >= looked_at {
+                control.report(self.n as f64 / end.max(1) as f64)?;
+                self.check_bounded()?;
+                self.check_memory()?;
+                looked_at = self.n + CHECK_EVERY;
+            }
             if self.points.iter().any(|p| p.force > 0.0) {
                 self.contact_step()?;
                 continue;
@@ -436,7 +448,45 @@ impl<'a> Stepper<'a> {
                 Free::Onset { j, level } => self.onset(j, level)?,
             }
         }
-        Ok(())
+        self.check_bounded()
+    }
+
+    /// Bytes one recorded sample takes: its numbers and its vectors' headers and allocations.
+    fn sample_bytes(&self) -> f64 {
+        let floors = self.sides[0].heights.len() + self.sides[1].heights.len();
+        let numbers = 2 + 2 * floors + 4 + self.points.len();
+        (8 * numbers + 5 * (24 + 16)) as f64
+    }
+
+    /// Stops a run whose histories outgrow [`SAMPLE_MEMORY_BUDGET`] (checked every few thousand
+    /// steps, so at most that many samples past it are ever held).
+    fn check_memory(&self) -> Result<(), SolveError> {
+        let bytes = self.samples.len() as f64 * self.sample_bytes();
+        if bytes <= SAMPLE_MEMORY_BUDGET {
+            return Ok(());
+        }
+        Err(SolveError::Memory {
+            at_s: self.time(),
+            bytes: SAMPLE_MEMORY_BUDGET,
+        })
+    }
+
+    /// Stops a run whose contacts have handed the buildings more than ten times the energy that
+    /// ever entered them (or an infinite amount): no element does that, so the numbers that
+    /// would follow are meaningless. The Sears paper reading does it beyond a tau = pi/2.
+    fn check_bounded(&self) -> Result<(), SolveError> {
+        let l = &self.ledger;
+        let entered = l.initial_j + l.input_j.abs();
+        if l.contact_work_j.is_finite() && l.contact_work_j <= 10.0 * entered {
+            return Ok(());
+        }
+        Err(SolveError::Diverged {
+            at_s: self.time(),
+            why: format!(
+                "the contacts handed the buildings {:.3e} J against {:.3e} J that entered",
+                l.contact_work_j, entered
+            ),
+        })
     }
 
     /// Floor displacements of both sides from modal coordinates.

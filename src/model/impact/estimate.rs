@@ -2,7 +2,8 @@
 //! the mesh for FE), and Richardson's estimate |q(h) - q(2h)| / (2^p - 1) with the design order
 //! p = 2 of every stepped model here. Wave theory and stereomechanics are exact.
 
-use super::{ImpactResult, ModelKind, SolveError, solve};
+use super::{ImpactResult, ModelKind, SolveError};
+use crate::model::control::Control;
 use crate::model::scenario::ImpactScenario;
 use std::time::Instant;
 
@@ -34,6 +35,16 @@ pub fn estimate_error(
     scenario: &ImpactScenario,
     result: &ImpactResult,
 ) -> Result<ErrorEstimate, SolveError> {
+    estimate_error_with(model, scenario, result, Control::never())
+}
+
+/// [`estimate_error`], its solve reporting to `control`.
+pub fn estimate_error_with(
+    model: ModelKind,
+    scenario: &ImpactScenario,
+    result: &ImpactResult,
+    control: &Control,
+) -> Result<ErrorEstimate, SolveError> {
     if matches!(model, ModelKind::Wave | ModelKind::Stereo) || !result.impact {
         return Ok(ErrorEstimate {
             method: "exact",
@@ -51,7 +62,7 @@ pub fn estimate_error(
         "step"
     };
     let start = Instant::now();
-    let c = solve(model, &coarse)?;
+    let c = super::solve_with(model, &coarse, control)?;
     let wall_time_s = start.elapsed().as_secs_f64();
     let factor = 1.0 / (2f64.powi(2) - 1.0);
     Ok(ErrorEstimate {

@@ -12,6 +12,7 @@
 use super::timestep::contact_time_scale;
 use super::{Raw, SolveError, Warning};
 use crate::model::bar::Bar;
+use crate::model::control::{CHECK_EVERY, Control};
 use crate::model::scenario::ImpactScenario;
 
 /// A link this many times stiffer than the end elements is reported: the end nodes chatter.
@@ -77,7 +78,10 @@ impl Chain {
     }
 }
 
-pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
+/// The most node updates (nodes times steps) one FE run may take: about ten seconds here.
+pub const FE_WORK_MAX: f64 = 5e9;
+
+pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, SolveError> {
     let law = sc.contact_law()?;
     let n = sc.fe.segments;
     let bars = [sc.bar1, sc.bar2];
@@ -100,14 +104,14 @@ pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
     let f_est = sc.wave_force_n();
     let m_ends = 1.0 / (left.inv_m[n] + right.inv_m[0]);
     let link_step = 0.5 * (m_ends / law.tangent_at_force(f_est)).sqrt();
+    let span = if sc.solver.window_s > 0.0 {
+        sc.solver.window_s
+    } else {
+        2.0 * scale
+            .lumped_duration_s
+            .max(2.0 * sc.bar1.round_trip_s().max(sc.bar2.round_trip_s()))
+    };
     if h > link_step {
-        let span = if sc.solver.window_s > 0.0 {
-            sc.solver.window_s
-        } else {
-            2.0 * scale
-                .lumped_duration_s
-                .max(2.0 * sc.bar1.round_trip_s().max(sc.bar2.round_trip_s()))
-        };
         if span / link_step <= sc.solver.max_steps as f64 {
             h = link_step;
         } else {
@@ -116,6 +120,17 @@ pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
                 link_step_s: link_step,
             });
         }
+    }
+    // The step budget bounds the steps, this the work: a million segments per bar take seconds
+    // a step.
+    let nodes = 2.0 * (n as f64 + 1.0);
+    let expected = nodes * (span / h).min(sc.solver.max_steps as f64);
+    if expected > FE_WORK_MAX {
+        return Err(SolveError::FeWork {
+            segments: n,
+            node_steps: expected,
+            max: FE_WORK_MAX,
+        });
     }
     let beta = h * h * (left.inv_m[n] + right.inv_m[0]);
     let n_stop = if sc.solver.window_s > 0.0 {
@@ -131,6 +146,17 @@ pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
     let mut step = 0usize;
     // The half-step velocities start at v(-h/2) = v0: the bars move rigidly before contact.
     while step < n_stop {
+        if step.is_multiple_of(CHECK_EVERY) {
+            control.report(step as f64 / n_stop.min(sc.solver.max_steps) as f64)?;
+            // A run longer than its span estimate still stops at the work budget.
+            if nodes * step as f64 > FE_WORK_MAX {
+                return Err(SolveError::FeWork {
+                    segments: n,
+                    node_steps: nodes * step as f64,
+                    max: FE_WORK_MAX,
+                });
+            }
+        }
         if step + 1 > sc.solver.max_steps {
             return Err(SolveError::Budget {
                 max_steps: sc.solver.max_steps,

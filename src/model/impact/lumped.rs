@@ -8,6 +8,7 @@
 use super::timestep::contact_time_scale;
 use super::{Raw, SolveError, Warning};
 use crate::model::contact::ContactLaw;
+use crate::model::control::{CHECK_EVERY, Control};
 use crate::model::root::bracket;
 use crate::model::scenario::ImpactScenario;
 
@@ -23,20 +24,30 @@ pub fn kelvin_restitution(xi: f64) -> f64 {
         return -(-xi * th / s).exp() * (th.cos() - xi / s * th.sin());
     }
     let s = (xi * xi - 1.0).sqrt().max(1e-9);
-    let (r1, r2) = (-xi + s, -xi - s);
+    // r1 = -xi + s without the cancellation that large xi would bring.
+    let (r1, r2) = (-1.0 / (xi + s), -xi - s);
     let (a1, a2) = (1.0 + 2.0 * xi * r1, 1.0 + 2.0 * xi * r2);
     let t = (a2 / a1).ln() / (r1 - r2);
     -(r1 * (r1 * t).exp() - r2 * (r2 * t).exp()) / (r1 - r2)
 }
 
-/// Damping ratio that gives restitution `e` with [`kelvin_restitution`] (bisection in log xi).
+/// Damping ratio that gives restitution `e` with [`kelvin_restitution`] (bisection in log xi);
+/// infinite for e <= 0, which no finite damping reaches.
 pub fn kelvin_damping_ratio(e: f64) -> f64 {
+    const XI_MAX: f64 = 1e4;
     if e >= 1.0 {
         return 0.0;
     }
+    if e <= 0.0 {
+        return f64::INFINITY;
+    }
+    // Beyond xi = 1e4, e = 1 / (4 xi^2) to 1e-8: the inverse in closed form.
+    if e < kelvin_restitution(XI_MAX) {
+        return 0.5 / e.sqrt();
+    }
     // e falls from 1 as xi grows: a root in ln xi between 1e-12 and 1e4.
     let f = |ln_xi: f64| kelvin_restitution(ln_xi.exp()) - e;
-    bracket(f, 1e-12f64.ln(), 1e4f64.ln(), 1e-14).mid().exp()
+    bracket(f, 1e-12f64.ln(), XI_MAX.ln(), 1e-14).mid().exp()
 }
 
 /// Anagnostopoulos' damping ratio for a Kelvin-Voigt link that may pull at the end of contact:
@@ -85,7 +96,7 @@ fn rk4(link: &Link, m: f64, y: State, h: f64) -> State {
     std::array::from_fn(|i| y[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]))
 }
 
-fn integrate(sc: &ImpactScenario, link: Link) -> Result<Raw, SolveError> {
+fn integrate(sc: &ImpactScenario, link: Link, control: &Control) -> Result<Raw, SolveError> {
     let masses = [sc.bar1.mass_kg(), sc.bar2.mass_kg()];
     let m = sc.effective_mass_kg();
     let w = sc.approach_velocity_m_s();
@@ -108,7 +119,11 @@ fn integrate(sc: &ImpactScenario, link: Link) -> Result<Raw, SolveError> {
         (vec![0.0], vec![link.force(0.0, w)], vec![0.0]);
     let mut t = 0.0;
     let mut steps = 0usize;
+    let expected_steps = (2.0 * scale.lumped_duration_s / h).max(1.0);
     loop {
+        if steps.is_multiple_of(CHECK_EVERY) {
+            control.report(steps as f64 / expected_steps)?;
+        }
         if steps >= sc.solver.max_steps {
             return Err(SolveError::Budget {
                 max_steps: sc.solver.max_steps,
@@ -177,17 +192,22 @@ fn integrate(sc: &ImpactScenario, link: Link) -> Result<Raw, SolveError> {
     })
 }
 
-pub(crate) fn solve_elastic(sc: &ImpactScenario, law: ContactLaw) -> Result<Raw, SolveError> {
+pub(crate) fn solve_elastic(
+    sc: &ImpactScenario,
+    law: ContactLaw,
+    control: &Control,
+) -> Result<Raw, SolveError> {
     integrate(
         sc,
         Link {
             law,
             damping_n_s_m: 0.0,
         },
+        control,
     )
 }
 
-pub(crate) fn solve_kelvin(sc: &ImpactScenario) -> Result<Raw, SolveError> {
+pub(crate) fn solve_kelvin(sc: &ImpactScenario, control: &Control) -> Result<Raw, SolveError> {
     let law = sc.linear_law();
     let m = sc.effective_mass_kg();
     let e = sc.contact.restitution;
@@ -199,6 +219,7 @@ pub(crate) fn solve_kelvin(sc: &ImpactScenario) -> Result<Raw, SolveError> {
             law,
             damping_n_s_m: c,
         },
+        control,
     )?;
     raw.warnings.push(Warning::KelvinCalibration {
         xi,

@@ -13,6 +13,8 @@ pub mod wave;
 
 pub use warning::{KeptBecause, Outside, VALIDATED, Warning};
 
+use crate::model::control::{Cancelled, Control};
+
 use super::field::BarWaves;
 use super::scenario::{ImpactScenario, InputError, Reading};
 use std::time::Instant;
@@ -270,6 +272,34 @@ pub enum SolveError {
         dt_s: f64,
         reached_s: f64,
     },
+    /// An FE run whose mesh and steps would take longer than its work budget.
+    #[error(
+        "work budget exceeded: fe.segments = {segments} per bar needs about {node_steps:.2e} node updates, more than {max:.0e}; lower fe.segments or shorten solver.window"
+    )]
+    FeWork {
+        segments: usize,
+        node_steps: f64,
+        max: f64,
+    },
+    /// A run whose histories would outgrow the memory budget.
+    #[error(
+        "memory budget exceeded at t = {at_s:.4} s: the histories would take more than {bytes:.1e} bytes; shorten the record (motion.duration), raise solver.max_step or lower solver.max_steps"
+    )]
+    Memory { at_s: f64, bytes: f64 },
+    /// A run whose numbers grew without bound; no result is given.
+    #[error(
+        "the run diverged at t = {at_s:.4} s: {why}; the Sears paper reading does this above a tau = pi/2 (use contact.reading = end or a softer contact.stiffness)"
+    )]
+    Diverged { at_s: f64, why: String },
+    /// Stopped through its [`Control`] (a newer request in the window, or Cancel).
+    #[error("cancelled")]
+    Cancelled,
+}
+
+impl From<Cancelled> for SolveError {
+    fn from(_: Cancelled) -> Self {
+        SolveError::Cancelled
+    }
 }
 
 /// What a model hands to [`finish`].
@@ -346,6 +376,15 @@ pub(crate) fn close_open_contact(
 
 /// Solve one impact with the chosen model.
 pub fn solve(model: ModelKind, scenario: &ImpactScenario) -> Result<ImpactResult, SolveError> {
+    solve_with(model, scenario, Control::never())
+}
+
+/// [`solve`], reporting progress to `control` and stopping when it is cancelled.
+pub fn solve_with(
+    model: ModelKind,
+    scenario: &ImpactScenario,
+    control: &Control,
+) -> Result<ImpactResult, SolveError> {
     scenario.validate_for(model)?;
     let start = Instant::now();
     let w = scenario.approach_velocity_m_s();
@@ -353,13 +392,17 @@ pub fn solve(model: ModelKind, scenario: &ImpactScenario) -> Result<ImpactResult
         no_impact(model, scenario)
     } else {
         match model {
-            ModelKind::Sears => sears::solve(scenario)?,
-            ModelKind::Wave => wave::solve(scenario)?,
-            ModelKind::LumpedHertz => lumped::solve_elastic(scenario, scenario.hertz_law()?)?,
-            ModelKind::LumpedLinear => lumped::solve_elastic(scenario, scenario.linear_law())?,
-            ModelKind::Kelvin => lumped::solve_kelvin(scenario)?,
+            ModelKind::Sears => sears::solve(scenario, control)?,
+            ModelKind::Wave => wave::solve(scenario, control)?,
+            ModelKind::LumpedHertz => {
+                lumped::solve_elastic(scenario, scenario.hertz_law()?, control)?
+            }
+            ModelKind::LumpedLinear => {
+                lumped::solve_elastic(scenario, scenario.linear_law(), control)?
+            }
+            ModelKind::Kelvin => lumped::solve_kelvin(scenario, control)?,
             ModelKind::Stereo => lumped::solve_stereo(scenario),
-            ModelKind::Fe => fe::solve(scenario)?,
+            ModelKind::Fe => fe::solve(scenario, control)?,
         }
     };
     let wall = start.elapsed().as_secs_f64();

@@ -26,6 +26,7 @@
 use super::timestep::{choose_step, contact_time_scale};
 use super::{Raw, SearsDiagnostics, SolveError, Warning, peak_between};
 use crate::model::contact::ContactLaw;
+use crate::model::control::{CHECK_EVERY, Control};
 use crate::model::field::{BarWaves, History};
 use crate::model::history::{Series, Tap};
 use crate::model::scenario::{ImpactScenario, InputError, Reading};
@@ -163,7 +164,7 @@ fn theta_for(z: f64) -> f64 {
     0.5 + 0.5 * (0.25 * z * z).min(1.0)
 }
 
-pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
+pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, SolveError> {
     let law = sc.contact_law()?;
     let lay = layout(sc)?;
     let bars = [sc.bar1, sc.bar2];
@@ -237,7 +238,11 @@ pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
     // c0 depends only on the lags, so it is the same every step.
     let c0: f64 = channels.iter().map(|ch| ch.inv_z * ch.top * ch.gain).sum();
 
+    let expected_steps = (expected / h).max(1.0);
     while n < n_stop {
+        if n.is_multiple_of(CHECK_EVERY) {
+            control.report(n as f64 / expected_steps)?;
+        }
         if n + 1 > sc.solver.max_steps {
             return Err(SolveError::Budget {
                 max_steps: sc.solver.max_steps,

@@ -8,6 +8,7 @@
 //! separate; the ends' approach then moves linearly and a later contact is located exactly.
 
 use super::{Raw, SolveError};
+use crate::model::control::{CHECK_EVERY, Control};
 use crate::model::field::{BarWaves, History};
 use crate::model::scenario::ImpactScenario;
 use std::cmp::Ordering;
@@ -44,7 +45,7 @@ impl Steps {
     }
 }
 
-pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
+pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, SolveError> {
     let bars = [sc.bar1, sc.bar2];
     let z = bars.map(|b| b.impedance_n_s_m());
     let rt = bars.map(|b| b.round_trip_s());
@@ -82,6 +83,9 @@ pub(crate) fn solve(sc: &ImpactScenario) -> Result<Raw, SolveError> {
             break;
         }
         events += 1;
+        if events.is_multiple_of(CHECK_EVERY) {
+            control.report(events as f64 / sc.solver.max_steps as f64)?;
+        }
         if events > sc.solver.max_steps {
             return Err(SolveError::Budget {
                 max_steps: sc.solver.max_steps,

@@ -99,7 +99,9 @@ impl SyntheticSpec {
         GroundMotion {
             name: format!(
                 "synthetic Kanai-Tajimi (seed {}, {} g, {} s)",
-                self.seed, self.pga_g, self.duration_s
+                self.seed,
+                crate::model::settings::shown(self.pga_g),
+                crate::model::settings::shown(self.duration_s)
             ),
             dt_s: self.dt_s,
             accel_m_s2: raw.into_iter().map(|a| a * scale).collect(),

@@ -1,0 +1,101 @@
+//! A solve's line to whoever waits for it: a request to stop, and how far it has got. The
+//! window's solver threads hand one to each solve, cancel it when a newer request arrives, and
+//! read its progress while drawing; the command line and the tests use [`Control::never`].
+
+use std::sync::atomic::{AtomicBool, AtomicU32, Ordering};
+
+/// How many steps a solver loop may take between two looks at its [`Control`].
+pub const CHECK_EVERY: usize = 4096;
+
+#[derive(Debug, Default)]
+pub struct Control {
+    cancel: AtomicBool,
+    /// The fraction done, in millionths.
+    done_ppm: AtomicU32,
+    /// A job of several solves: this solve is part `stage` of `stages`.
+    stage: AtomicU32,
+    stages: AtomicU32,
+}
+
+static NEVER: Control = Control::new();
+
+/// A solve stopped through its [`Control`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
+#[error("cancelled")]
+pub struct Cancelled;
+
+impl Control {
+    pub const fn new() -> Self {
+        Control {
+            cancel: AtomicBool::new(false),
+            done_ppm: AtomicU32::new(0),
+            stage: AtomicU32::new(0),
+            stages: AtomicU32::new(1),
+        }
+    }
+
+    /// One that nobody cancels or reads.
+    pub fn never() -> &'static Control {
+        &NEVER
+    }
+
+    pub fn cancel(&self) {
+        self.cancel.store(true, Ordering::Relaxed);
+    }
+
+    pub fn cancelled(&self) -> bool {
+        self.cancel.load(Ordering::Relaxed)
+    }
+
+    /// The solves that follow are part `stage` (from 0) of `stages` equal parts of one job:
+    /// their fractions map into that part of the whole.
+    pub fn stage(&self, stage: u32, stages: u32) {
+        if !std::ptr::eq(self, &NEVER) {
+            self.stages.store(stages.max(1), Ordering::Relaxed);
+            self.stage
+                .store(stage.min(stages.max(1) - 1), Ordering::Relaxed);
+        }
+    }
+
+    /// Records the fraction done (0 to 1) and says whether to go on.
+    pub fn report(&self, fraction: f64) -> Result<(), Cancelled> {
+        if !std::ptr::eq(self, &NEVER) {
+            let stages = f64::from(self.stages.load(Ordering::Relaxed));
+            let stage = f64::from(self.stage.load(Ordering::Relaxed));
+            let whole = (stage + fraction.clamp(0.0, 1.0)) / stages;
+            let ppm = (whole * 1e6) as u32;
+            self.done_ppm.store(ppm, Ordering::Relaxed);
+        }
+        if self.cancelled() {
+            Err(Cancelled)
+        } else {
+            Ok(())
+        }
+    }
+
+    /// The fraction done last reported.
+    pub fn fraction(&self) -> f64 {
+        f64::from(self.done_ppm.load(Ordering::Relaxed)) * 1e-6
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_cancelled_control_stops_the_next_report_and_keeps_its_progress() {
+        let c = Control::new();
+        assert_eq!(c.report(0.25), Ok(()));
+        assert!((c.fraction() - 0.25).abs() < 1e-6);
+        c.cancel();
+        assert_eq!(c.report(0.5), Err(Cancelled));
+        assert!((c.fraction() - 0.5).abs() < 1e-6);
+        assert_eq!(Control::never().report(0.7), Ok(()));
+        let c = Control::new();
+        c.stage(1, 4);
+        c.report(0.5).unwrap();
+        assert!((c.fraction() - 0.375).abs() < 1e-6);
+        assert_eq!(Control::never().fraction(), 0.0);
+    }
+}
