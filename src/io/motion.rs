@@ -246,7 +246,9 @@ pub fn parse_at2(text: &str, source: &str) -> Result<GroundMotion, MotionError> 
     if dt <= 0.0 {
         return Err(err(source, Some(4), format!("DT = {dt} must be > 0 s")));
     }
-    let mut values = Vec::with_capacity(npts as usize);
+    // The header's count is checked against the values below; trusting it for the allocation
+    // would let a mutated header (NPTS=1e18) abort the program.
+    let mut values = Vec::with_capacity((npts as usize).min(16 * text.len() / 8 + 16));
     for (i, line) in lines.iter().enumerate().skip(4) {
         for tok in line.split_whitespace() {
             values.push(number(tok, source, i + 1)? * G);
