@@ -156,3 +156,29 @@ pub fn status_ui(ui: &mut egui::Ui, status: Option<&(String, bool)>) {
         ui.colored_label(colour, message);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::settings::BUILDING_SETTINGS;
+
+    /// The relative change one pixel of a `width`-pixel slider makes at `value`.
+    fn one_pixel(spec: &Spec, value: f64, width: f64) -> f64 {
+        if spec.log {
+            (spec.max / spec.min).powf(1.0 / width) - 1.0
+        } else {
+            (spec.max - spec.min) / width / value
+        }
+    }
+
+    #[test]
+    fn the_gap_slider_resolves_millimetres_and_typing_reaches_the_validated_maximum() {
+        // The question is which gap avoids pounding: the smallest drag from the paper's 1 mm
+        // must not jump to centimetres (a linear 0-0.5 m slider moved it by 5 mm a pixel).
+        let spec = Spec::of(BUILDING_SETTINGS, "gap");
+        let step = one_pixel(&spec, 1e-3, 100.0);
+        assert!(step < 0.1, "one pixel moves the gap by {:.0}%", step * 100.0);
+        assert!(spec.min <= 1e-4 && spec.max >= 0.1);
+        assert!(spec.typed.contains(0.0) && spec.typed.contains(1e3));
+    }
+}
