@@ -227,7 +227,10 @@ fn every_element_stays_stable_for_contact_stiffness_from_1e6_to_1e13() {
                 // pass them off.
                 let out = solve(&sc, &m);
                 assert!(
-                    matches!(out, Err(pounding::model::impact::SolveError::Diverged { .. })),
+                    matches!(
+                        out,
+                        Err(pounding::model::impact::SolveError::Diverged { .. })
+                    ),
                     "{tag}: {:?}",
                     out.map(|r| r.max_pounding_force_n)
                 );

@@ -1,4 +1,4 @@
-//! The limits physics.md states, and closed forms of the peer models.
+//! The limits the model states (docs/model.md), and closed forms of the peer models.
 
 mod common;
 use common::{rel, run, wave_force};
@@ -82,7 +82,7 @@ fn wave_theory_restitution_is_the_length_ratio_and_contact_lasts_one_short_round
 
 #[test]
 fn hertz_contact_leaves_equal_bars_just_below_one() {
-    // physics.md: e about 0.988 for equal 2 m steel rods with Hertz contact.
+    // docs/model.md: e about 0.988 for equal 2 m steel rods with Hertz contact.
     for reading in Reading::ALL {
         let mut sc = rods(2.0, 2.0);
         sc.reading = reading;
@@ -99,7 +99,7 @@ fn hertz_contact_leaves_equal_bars_just_below_one() {
 
 #[test]
 fn long_bar_restitution_tends_slowly_to_the_length_ratio() {
-    // physics.md: ratio 2 gives e = 0.68, 0.55, 0.52 for a short bar of 5, 20, 50 m.
+    // docs/model.md: ratio 2 gives e = 0.68, 0.55, 0.52 for a short bar of 5, 20, 50 m.
     let mut last = 1.0;
     for (l, reference) in [(5.0, 0.68), (20.0, 0.55), (50.0, 0.52)] {
         let e = run(ModelKind::Sears, &rods(l, 2.0 * l)).restitution;
@@ -157,7 +157,7 @@ fn lumped_hertz_matches_the_closed_form_compression_and_duration() {
     let max_approach = r.approach_m.iter().cloned().fold(0.0, f64::max);
     assert!(rel(max_approach, dmax) < 1e-6, "{max_approach} vs {dmax}");
     // Duration 2 (dmax / w) * integral_0^1 (1 - x^(5/2))^(-1/2) dx = (4/5) B(2/5, 1/2) dmax / w,
-    // 2.9432752 dmax / w (physics.md rounds it to 2.9432).
+    // 2.9432752 dmax / w (often rounded to 2.9432).
     assert!(rel(r.contact_duration_s, 2.943_275_184_324_705 * dmax / w) < 1e-8);
     assert!(rel(r.peak_force_n.unwrap(), k * dmax.powf(1.5)) < 1e-6);
     assert!((r.restitution - 1.0).abs() < 1e-8);

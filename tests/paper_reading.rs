@@ -1,4 +1,4 @@
-//! The paper's reading of Sears (delayed planes): what physics.md's independent reference found,
+//! The paper's reading of Sears (delayed planes): what an independent reference implementation found (docs/numerics.md),
 //! and where the reading creates energy.
 
 mod common;
@@ -16,7 +16,7 @@ fn peak_with_zone_scale(scale: f64) -> f64 {
 
 #[test]
 fn zone_length_changes_the_peak_force_as_the_reference_found() {
-    // physics.md (1 m / 2 m rods): x0.01 -3.5%, x2 +3.4%, x5 +22%, x10 +53%, quoted to 2 digits.
+    // The reference (1 m / 2 m rods): x0.01 -3.5%, x2 +3.4%, x5 +22%, x10 +53%, quoted to 2 digits.
     let base = peak_with_zone_scale(1.0);
     for (scale, reference, tol) in [
         (0.01, -3.5, 0.05),
@@ -41,7 +41,7 @@ fn linear_rods(k: f64) -> ImpactScenario {
 
 #[test]
 fn soft_linear_contact_rattles_with_a_negative_first_contact_restitution() {
-    // physics.md: kL = 1.57e10 N/m rattles, first-contact e = -0.59.
+    // The reference: kL = 1.57e10 N/m rattles, first-contact e = -0.59.
     let r = run(ModelKind::Sears, &linear_rods(1.57e10));
     assert!(
         (r.restitution_first_contact + 0.59).abs() < 0.01,
@@ -95,7 +95,7 @@ fn stiff_paper_reading_creates_energy_and_an_independent_integration_agrees() {
         "e = {} vs independent {independent}",
         r.restitution
     );
-    // physics.md's reference quotes e = 7.66 here; this solver and the brute-force delay equation
+    // The reference quotes e = 7.66 here; this solver and the brute-force delay equation
     // above agree on 7.283 at every step size, so the difference lies in the reference's set-up.
     assert!((r.restitution - 7.283).abs() < 1e-3);
     let d = r.sears.unwrap();
@@ -112,7 +112,7 @@ fn stiff_paper_reading_creates_energy_and_an_independent_integration_agrees() {
 fn paper_reading_base_case_is_well_behaved() {
     let r = run(ModelKind::Sears, &ImpactScenario::default());
     let d = r.sears.unwrap();
-    // physics.md: a tau about 0.13 for Hertz steel rods at 1 m/s.
+    // The reference: a tau about 0.13 for Hertz steel rods at 1 m/s.
     assert!(
         d.a_tau > 0.1 && d.a_tau < 1.0 / std::f64::consts::E,
         "a tau = {}",
@@ -135,7 +135,7 @@ fn paper_reading_is_undefined_when_the_zone_exceeds_twice_the_bar() {
 
 #[test]
 fn hertz_at_high_velocity_overshoots_the_wave_force() {
-    // a tau > 1/e: the paper reading overshoots Z1 Z2/(Z1 + Z2) (v1 - v2). physics.md's reference
+    // a tau > 1/e: the paper reading overshoots Z1 Z2/(Z1 + Z2) (v1 - v2). The reference
     // quotes 7.6% at 100 m/s; this solver gives 7.32%, converged in the step (2 us to 0.25 us).
     let mut sc = ImpactScenario::default();
     sc.bar1.velocity_m_s = 100.0;

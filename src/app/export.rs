@@ -228,7 +228,7 @@ mod tests {
     #[test]
     fn a_failed_write_says_which_path() {
         let e = Exporter {
-            prefix: "/nonexistent-dir/x".into(),
+            prefix: "/dev/null/inside-a-file/x".into(),
             ..Default::default()
         };
         e.export(&shown(), "force", "csv");
@@ -237,6 +237,6 @@ mod tests {
             .recv_timeout(std::time::Duration::from_secs(10))
             .unwrap();
         let err = outcome.unwrap_err();
-        assert!(err.contains("/nonexistent-dir/x-force.csv"), "{err}");
+        assert!(err.contains("/dev/null/inside-a-file/x-force.csv"), "{err}");
     }
 }

@@ -177,7 +177,11 @@ mod tests {
         // must not jump to centimetres (a linear 0-0.5 m slider moved it by 5 mm a pixel).
         let spec = Spec::of(BUILDING_SETTINGS, "gap");
         let step = one_pixel(&spec, 1e-3, 100.0);
-        assert!(step < 0.1, "one pixel moves the gap by {:.0}%", step * 100.0);
+        assert!(
+            step < 0.1,
+            "one pixel moves the gap by {:.0}%",
+            step * 100.0
+        );
         assert!(spec.min <= 1e-4 && spec.max >= 0.1);
         assert!(spec.typed.contains(0.0) && spec.typed.contains(1e3));
     }

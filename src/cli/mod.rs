@@ -222,6 +222,10 @@ pub(crate) fn write_csv(
     if csv_to_stdout(Some(path)) {
         return Ok(write(out)?);
     }
+    if let Some(parent) = path.parent().filter(|p| !p.as_os_str().is_empty()) {
+        std::fs::create_dir_all(parent)
+            .with_context(|| format!("--csv: cannot create the folder of {}", path.display()))?;
+    }
     let file = std::fs::File::create(path)
         .with_context(|| format!("--csv: cannot create {}", path.display()))?;
     let mut w = std::io::BufWriter::new(file);

@@ -128,9 +128,19 @@ impl LinePlot {
             .unwrap_or("")
             .to_ascii_lowercase();
         match ext.as_str() {
-            "svg" => self.draw(SVGBackend::new(path, self.size).into_drawing_area()),
-            "png" => self.write_png(path),
+            "svg" | "png" => {}
             _ => return Err(PlotError::Extension(path.to_path_buf())),
+        }
+        // A plot asked for in a folder that does not exist yet gets the folder.
+        if let Some(parent) = path.parent().filter(|p| !p.as_os_str().is_empty()) {
+            std::fs::create_dir_all(parent).map_err(|e| PlotError::Write {
+                path: path.to_path_buf(),
+                message: format!("cannot create its folder: {e}"),
+            })?;
+        }
+        match ext.as_str() {
+            "svg" => self.draw(SVGBackend::new(path, self.size).into_drawing_area()),
+            _ => self.write_png(path),
         }
         .map_err(|e| PlotError::Write {
             path: path.to_path_buf(),

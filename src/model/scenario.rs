@@ -8,7 +8,7 @@ use super::contact::{
 use super::material::MaterialPreset;
 use std::fmt;
 
-/// Which reading of the Sears model (see physics.md, "Three readings of Sears").
+/// Which reading of the Sears model (docs/model.md, "Three readings").
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Reading {
     /// The paper's delayed planes: the law acts on the planes P_i at d_i, the force on the ends.

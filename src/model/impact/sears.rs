@@ -1,6 +1,6 @@
 //! The Sears impact model: a contact law at the contact surface, d'Alembert waves in the bars.
 //!
-//! All three readings share one form (physics.md, corrected Eq. 8):
+//! All three readings share one form (docs/model.md, the paper's Eq. 8 corrected):
 //!
 //!   delta(t) = w t - sum_i (1/Z_i) [Psi_i(t - s_i1) + Psi_i(t - s_i2)],
 //!   Psi_i(t) = Phi(t) + Psi_i(t - T_i),  Phi(t) = integral of F,  F = f(delta),
@@ -17,7 +17,7 @@
 //! Where c0 = 0 (the paper reading with d/c >= h) the step is explicit and Phi is a quadrature.
 //! The quadrature is a theta method whose weight follows the local stiffness z = c0 f'(delta) h
 //! ([`theta_for`]): the trapezoid rule where the step resolves the contact, backward Euler where
-//! it does not, never ringing (the trapezoid alone rings on stiff contact, physics.md). Where the
+//! it does not, never ringing (the trapezoid alone rings on stiff contact, docs/numerics.md). Where the
 //! step does not resolve the contact's rise, the force jumps within a step and look-ups into the
 //! history are linear (monotone) instead of cubic.
 //! Onset and separation are located inside the step, and the impulse of the partial step is
