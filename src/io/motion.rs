@@ -106,6 +106,16 @@ pub fn load(spec: &MotionSpec) -> Result<GroundMotion, MotionError> {
     }
     if spec.scale != 1.0 {
         motion = motion.scaled(spec.scale);
+        if motion.accel_m_s2.iter().any(|a| !a.is_finite()) {
+            return Err(err(
+                &motion.name,
+                None,
+                format!(
+                    "motion.scale: {} makes the record overflow",
+                    crate::model::settings::shown(spec.scale)
+                ),
+            ));
+        }
     }
     Ok(motion)
 }
@@ -200,6 +210,21 @@ fn number(token: &str, source: &str, line: usize) -> Result<f64, MotionError> {
     }
 }
 
+/// `value` in the file's units converted to m/s^2; a value that overflows there is refused by
+/// its line.
+fn in_m_s2(value: f64, scale: f64, source: &str, line: usize) -> Result<f64, MotionError> {
+    let a = value * scale;
+    if a.is_finite() {
+        Ok(a)
+    } else {
+        Err(err(
+            source,
+            Some(line),
+            format!("{value:e} overflows when converted to m/s^2"),
+        ))
+    }
+}
+
 /// PEER NGA AT2: three header lines, then `NPTS=   5372, DT=   .0100 SEC,` (or the newer
 /// `5372    0.0100    NPTS, DT`), then the values in g.
 pub fn parse_at2(text: &str, source: &str) -> Result<GroundMotion, MotionError> {
@@ -251,7 +276,7 @@ pub fn parse_at2(text: &str, source: &str) -> Result<GroundMotion, MotionError> 
     let mut values = Vec::with_capacity((npts as usize).min(16 * text.len() / 8 + 16));
     for (i, line) in lines.iter().enumerate().skip(4) {
         for tok in line.split_whitespace() {
-            values.push(number(tok, source, i + 1)? * G);
+            values.push(in_m_s2(number(tok, source, i + 1)?, G, source, i + 1)?);
         }
     }
     if values.len() != npts as usize {
@@ -297,6 +322,16 @@ pub fn parse_text(
         return Err(err(source, None, "no data"));
     }
     let two_columns = rows.iter().all(|(_, r)| r.len() == 2);
+    for (line, r) in &rows {
+        let accelerations = if two_columns && dt_s.is_none() {
+            &r[1..]
+        } else {
+            &r[..]
+        };
+        for &a in accelerations {
+            in_m_s2(a, scale, source, *line)?;
+        }
+    }
     if two_columns && dt_s.is_none() {
         let times: Vec<f64> = rows.iter().map(|(_, r)| r[0]).collect();
         if rows.len() < 2 {
