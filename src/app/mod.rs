@@ -10,12 +10,16 @@ mod building_view;
 mod dialog;
 mod export;
 mod impact_params;
+mod launch;
+mod menus;
 mod paper_figures;
 mod params;
+mod persistence;
 mod playback;
 mod plot_view;
 mod scene;
 mod series;
+mod status;
 mod study_scene;
 pub mod worker;
 
@@ -23,70 +27,13 @@ use crate::io::preset::{self, EMBEDDED};
 use crate::io::settings::ImpactSetup;
 use bar_scene::BarScene;
 use building_scene::BuildingScene;
-use eframe::egui::{self, Color32};
+use eframe::egui;
 use scene::Scene;
+
+pub use launch::{HIDE_TIMINGS, Launch, SceneKind};
+use persistence::{BUILDINGS_KEY, COMPARE_KEY, IMPACT_KEY, STUDY_KEY, UI_KEY, restore};
+use status::ms;
 use std::time::Instant;
-
-/// Storage keys; the suffix is the format's version, so an older save is never misread.
-const IMPACT_KEY: &str = "impact-scene-v1";
-const COMPARE_KEY: &str = "compare-scene-v1";
-const UI_KEY: &str = "ui-v1";
-const BUILDINGS_KEY: &str = "buildings-scene-v1";
-const STUDY_KEY: &str = "study-scene-v1";
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum SceneKind {
-    BarImpact,
-    WaveVsLumped,
-    Buildings,
-    Study,
-}
-
-impl SceneKind {
-    fn name(self) -> &'static str {
-        match self {
-            SceneKind::BarImpact => "bar",
-            SceneKind::WaveVsLumped => "compare",
-            SceneKind::Buildings => "buildings",
-            SceneKind::Study => "study",
-        }
-    }
-    pub fn from_name(s: &str) -> Option<Self> {
-        [
-            SceneKind::BarImpact,
-            SceneKind::WaveVsLumped,
-            SceneKind::Buildings,
-            SceneKind::Study,
-        ]
-        .into_iter()
-        .find(|k| k.name() == s)
-    }
-}
-
-/// How the window starts (from `pounding window` or the defaults).
-#[derive(Debug, Clone, Default)]
-pub struct Launch {
-    pub scene: Option<SceneKind>,
-    pub preset: Option<String>,
-    /// Close after this many frames (smoke tests, screenshots).
-    pub exit_after_frames: Option<u64>,
-    /// Start paused at this animation time [s].
-    pub time_s: Option<f64>,
-    /// Save a screenshot here before closing (with `exit_after_frames`).
-    pub screenshot: Option<std::path::PathBuf>,
-}
-
-/// Set by snapshot tests: wall-clock timings (which differ run to run) print as "-".
-pub static HIDE_TIMINGS: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
-
-/// A duration in seconds shown in milliseconds with `decimals`.
-fn ms(seconds: f64, decimals: usize) -> String {
-    if HIDE_TIMINGS.load(std::sync::atomic::Ordering::Relaxed) {
-        "- ms".into()
-    } else {
-        format!("{:.*} ms", decimals, seconds * 1e3)
-    }
-}
 
 pub struct PoundingApp {
     scene: SceneKind,
@@ -107,23 +54,6 @@ pub struct PoundingApp {
     ui_ms: f64,
     frames: u64,
     launch: Launch,
-}
-
-fn restore(
-    storage: Option<&dyn eframe::Storage>,
-    key: &str,
-    errors: &mut Vec<String>,
-) -> ImpactSetup {
-    let mut setup =
-        preset::load_for::<ImpactSetup>(preset::DEFAULT_PRESET, "impact").unwrap_or_default();
-    if let Some(text) = storage.and_then(|s| s.get_string(key)) {
-        let mut restored = setup;
-        match preset::apply_text(&mut restored, &text, "the last session's scene") {
-            Ok(()) => setup = restored,
-            Err(e) => errors.push(format!("{e} (the default scene is used)")),
-        }
-    }
-    setup
 }
 
 impl PoundingApp {
@@ -290,295 +220,6 @@ impl PoundingApp {
     fn playback(&mut self) -> &mut playback::Playback {
         self.shown_mut().0.playback()
     }
-
-    fn top_bar(&mut self, ui: &mut egui::Ui) {
-        ui.horizontal_wrapped(|ui| {
-            ui.strong("Pounding Lab");
-            ui.menu_button("File", |ui| self.file_menu(ui))
-                .response
-                .on_hover_text("Exports: plots, screenshots");
-            ui.separator();
-            ui.selectable_value(&mut self.scene, SceneKind::BarImpact, "Bar impact")
-                .on_hover_text("One impact, one model, every readout");
-            ui.selectable_value(&mut self.scene, SceneKind::WaveVsLumped, "Wave vs lumped")
-                .on_hover_text("Sears, wave theory, lumped and FE models overlaid");
-            ui.selectable_value(&mut self.scene, SceneKind::Buildings, "Building pounding")
-                .on_hover_text("Two buildings swaying in an earthquake, with and without pounding");
-            ui.selectable_value(&mut self.scene, SceneKind::Study, "Parameter study")
-                .on_hover_text(
-                    "One setting swept over a range: peak force, duration and e per model",
-                );
-            ui.separator();
-            if self.scene == SceneKind::Buildings {
-                let mut load = None;
-                if ui
-                    .button("Paper's buildings")
-                    .on_hover_text(
-                        "The paper's Section 4 as published: Table 1 on 8 s of El Centro 1940",
-                    )
-                    .clicked()
-                {
-                    load = Some("paper-buildings".to_string());
-                }
-                let label = ui.label("preset").id;
-                egui::ComboBox::from_id_salt("building-preset")
-                    .selected_text(&self.building_preset)
-                    .show_ui(ui, |ui| {
-                        for (name, text) in EMBEDDED
-                            .iter()
-                            .filter(|(_, t)| preset::scene(t) == "buildings")
-                        {
-                            ui.selectable_value(&mut self.building_preset, name.to_string(), *name)
-                                .on_hover_text(preset::description(text).unwrap_or_default());
-                        }
-                    })
-                    .response
-                    .labelled_by(label);
-                if ui
-                    .button("Load preset")
-                    .on_hover_text("Replace the buildings by the preset's")
-                    .clicked()
-                {
-                    load = Some(self.building_preset.clone());
-                }
-                if let Some(name) = load {
-                    match preset::load_for::<crate::io::building_settings::BuildingSetup>(
-                        &name,
-                        "buildings",
-                    ) {
-                        Ok(s) => {
-                            self.buildings.setup = s;
-                            self.buildings.reset_fields();
-                            self.buildings.request();
-                        }
-                        Err(e) => self.message = Some((e.to_string(), true)),
-                    }
-                }
-            } else {
-                self.preset_ui(ui);
-            }
-            ui.separator();
-            if ui
-                .button(if self.dark { "Light" } else { "Dark" })
-                .on_hover_text("Switch theme")
-                .clicked()
-            {
-                self.dark = !self.dark;
-                ui.ctx().set_theme(if self.dark {
-                    egui::Theme::Dark
-                } else {
-                    egui::Theme::Light
-                });
-            }
-            ui.separator();
-            if ui
-                .button("Help")
-                .on_hover_text("Keyboard and what you see (F1)")
-                .clicked()
-            {
-                self.help = !self.help;
-            }
-        });
-    }
-
-    fn file_menu(&mut self, ui: &mut egui::Ui) {
-        if self.scene != SceneKind::Buildings {
-            if ui.button("Open scene...").clicked() {
-                self.dialogs.ask(dialog::Purpose::OpenScene, &self.path);
-                ui.close();
-            }
-            if ui.button("Save scene as...").clicked() {
-                self.dialogs.ask(dialog::Purpose::SaveScene, &self.path);
-                ui.close();
-            }
-        } else if ui.button("Open ground motion...").clicked() {
-            self.dialogs.ask(dialog::Purpose::Motion, "");
-            ui.close();
-        }
-        if ui.button("Choose export folder...").clicked() {
-            self.dialogs
-                .ask(dialog::Purpose::ExportFolder, &self.exporter.prefix);
-            ui.close();
-        }
-        ui.separator();
-        let e = &mut self.exporter;
-        ui.horizontal(|ui| {
-            let label = ui
-                .label("export to")
-                .on_hover_text("Folder and name stem: files are <this>-<plot>.<ext>")
-                .id;
-            ui.add(egui::TextEdit::singleline(&mut e.prefix).desired_width(180.0))
-                .labelled_by(label);
-        });
-        ui.horizontal(|ui| {
-            let label = ui.label("PNG size (width x height)").id;
-            ui.add(
-                egui::DragValue::new(&mut e.size[0])
-                    .range(200..=8000)
-                    .suffix(" px"),
-            )
-            .labelled_by(label);
-            ui.label("x");
-            ui.add(
-                egui::DragValue::new(&mut e.size[1])
-                    .range(150..=8000)
-                    .suffix(" px"),
-            )
-            .labelled_by(label);
-        });
-        ui.horizontal(|ui| {
-            let label = ui.label("text and line scale").id;
-            ui.add(
-                egui::DragValue::new(&mut e.scale)
-                    .range(0.5..=4.0)
-                    .speed(0.05),
-            )
-            .labelled_by(label);
-        })
-        .response
-        .on_hover_text("2 draws text and lines twice as large (e.g. a 3200 x 1800 PNG for print)");
-        ui.separator();
-        let plots = self.shown().shown_plots();
-        if ui
-            .add_enabled(
-                !plots.is_empty(),
-                egui::Button::new("Export every plot (PNG, SVG, CSV)"),
-            )
-            .clicked()
-        {
-            for (name, plot) in plots {
-                for ext in ["png", "svg", "csv"] {
-                    self.exporter.export(plot, name, ext);
-                }
-            }
-            ui.close();
-        }
-        if ui.button("Screenshot of the window").clicked() {
-            self.exporter.screenshot(ui.ctx(), None, "window");
-            ui.close();
-        }
-        let view = self.shown().view_rect();
-        if ui
-            .add_enabled(view.is_some(), egui::Button::new("Screenshot of the view"))
-            .clicked()
-        {
-            self.exporter.screenshot(ui.ctx(), view, "view");
-            ui.close();
-        }
-    }
-
-    fn preset_ui(&mut self, ui: &mut egui::Ui) {
-        let label = ui.label("preset").id;
-        egui::ComboBox::from_id_salt("preset")
-            .selected_text(&self.preset_choice)
-            .show_ui(ui, |ui| {
-                for (name, text) in EMBEDDED
-                    .iter()
-                    .filter(|(_, t)| preset::scene(t) == "impact")
-                {
-                    ui.selectable_value(&mut self.preset_choice, name.to_string(), *name)
-                        .on_hover_text(preset::description(text).unwrap_or_default());
-                }
-            })
-            .response
-            .labelled_by(label);
-        // Both buttons load the chosen preset (Reset reads as undoing edits); both are drawn
-        // every frame, so neither is skipped when the other is clicked.
-        let load = ui
-            .button("Load preset")
-            .on_hover_text("Replace the scene's parameters by the preset")
-            .clicked();
-        let reset = ui
-            .button("Reset")
-            .on_hover_text("Back to the preset's values")
-            .clicked();
-        if load || reset {
-            let name = self.preset_choice.clone();
-            self.message = self.current().load_preset(&name).err().map(|e| (e, true));
-        }
-        ui.separator();
-        let label = ui.label("scene file").id;
-        ui.add(egui::TextEdit::singleline(&mut self.path).desired_width(140.0))
-            .labelled_by(label)
-            .on_hover_text("A TOML scene file");
-        if ui.button("Open").clicked() {
-            self.open_scene();
-        }
-        if ui.button("Save").clicked() {
-            self.save_scene();
-        }
-    }
-
-    fn open_scene(&mut self) {
-        let path = self.path.clone();
-        self.message = Some(match self.current().load_preset(&path) {
-            Ok(()) => (format!("loaded {path}"), false),
-            Err(e) => (e, true),
-        });
-    }
-
-    fn save_scene(&mut self) {
-        let text = preset::impact_to_toml(&self.current().setup);
-        self.message = Some(match std::fs::write(&self.path, text) {
-            Ok(()) => (format!("saved {}", self.path), false),
-            Err(e) => (format!("could not save {}: {e}", self.path), true),
-        });
-    }
-
-    /// Acts on a file dialog that has closed.
-    fn dialog_done(&mut self) {
-        let Some((purpose, chosen)) = self.dialogs.poll() else {
-            return;
-        };
-        let Some(path) = chosen else {
-            self.message = Some((dialog::NOTHING_CHOSEN.into(), false));
-            return;
-        };
-        let shown = path.display().to_string();
-        match purpose {
-            dialog::Purpose::OpenScene => {
-                self.path = shown;
-                self.open_scene();
-            }
-            dialog::Purpose::SaveScene => {
-                self.path = shown;
-                self.save_scene();
-            }
-            dialog::Purpose::ExportFolder => {
-                self.exporter.prefix = path.join("pounding").display().to_string();
-                self.message = Some((format!("exports go to {shown}"), false));
-            }
-            dialog::Purpose::Motion => self.buildings.load_motion(shown),
-        }
-    }
-
-    fn keys(&mut self, ctx: &egui::Context) {
-        if ctx.memory(|m| m.focused().is_some()) {
-            return;
-        }
-        let (space, right, restart, help) = ctx.input(|i| {
-            (
-                i.key_pressed(egui::Key::Space),
-                i.key_pressed(egui::Key::ArrowRight),
-                i.key_pressed(egui::Key::R),
-                i.key_pressed(egui::Key::F1),
-            )
-        });
-        let playback = self.playback();
-        if space {
-            playback.playing = !playback.playing;
-        }
-        if right {
-            playback.step();
-        }
-        if restart {
-            playback.t = 0.0;
-            playback.playing = true;
-        }
-        if help {
-            self.help = !self.help;
-        }
-    }
 }
 
 impl eframe::App for PoundingApp {
@@ -618,42 +259,7 @@ impl eframe::App for PoundingApp {
         }
         self.playback().advance(dt.min(0.1));
         egui::Panel::top("top").show(ui, |ui| self.top_bar(ui));
-        egui::Panel::bottom("status").show(ui, |ui| {
-            ui.horizontal(|ui| {
-                let (solve, latency) = self.shown().timings();
-                let busy = self.shown().busy();
-                ui.label(format!(
-                    "UI {} | solve {} | change to result {}{}",
-                    ms(self.ui_ms * 1e-3, 2),
-                    ms(solve.as_secs_f64(), 3),
-                    ms(latency.as_secs_f64(), 1),
-                    if busy { " | solving..." } else { "" }
-                ));
-                if let Some(done) = self.shown().progress() {
-                    ui.add(
-                        egui::ProgressBar::new(done as f32)
-                            .desired_width(160.0)
-                            .show_percentage(),
-                    );
-                    if ui
-                        .button("Cancel")
-                        .on_hover_text("Stop this solve; the last result stays")
-                        .clicked()
-                    {
-                        self.shown_mut().0.cancel();
-                    }
-                }
-                if let Some((m, is_error)) = &self.message {
-                    ui.separator();
-                    let colour = if *is_error {
-                        Color32::from_rgb(220, 60, 50)
-                    } else {
-                        ui.visuals().text_color()
-                    };
-                    ui.colored_label(colour, m);
-                }
-            });
-        });
+        self.status_bar(ui);
         egui::Panel::left("params")
             .resizable(true)
             .default_size(380.0)
@@ -702,21 +308,7 @@ impl eframe::App for PoundingApp {
     }
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
-        storage.set_string(IMPACT_KEY, preset::impact_to_toml(&self.bar.setup));
-        storage.set_string(COMPARE_KEY, preset::impact_to_toml(&self.compare.setup));
-        storage.set_string(STUDY_KEY, self.study.state());
-        storage.set_string(
-            BUILDINGS_KEY,
-            preset::buildings_to_toml(&self.buildings.setup),
-        );
-        storage.set_string(
-            UI_KEY,
-            format!(
-                "{};scene={}",
-                if self.dark { "dark" } else { "light" },
-                self.scene.name()
-            ),
-        );
+        persistence::save(self, storage);
     }
 }
 

@@ -1,0 +1,46 @@
+//! How the window starts: the scene on screen and what `pounding window` asks for.
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SceneKind {
+    BarImpact,
+    WaveVsLumped,
+    Buildings,
+    Study,
+}
+
+impl SceneKind {
+    pub fn name(self) -> &'static str {
+        match self {
+            SceneKind::BarImpact => "bar",
+            SceneKind::WaveVsLumped => "compare",
+            SceneKind::Buildings => "buildings",
+            SceneKind::Study => "study",
+        }
+    }
+    pub fn from_name(s: &str) -> Option<Self> {
+        [
+            SceneKind::BarImpact,
+            SceneKind::WaveVsLumped,
+            SceneKind::Buildings,
+            SceneKind::Study,
+        ]
+        .into_iter()
+        .find(|k| k.name() == s)
+    }
+}
+
+/// How the window starts (from `pounding window` or the defaults).
+#[derive(Debug, Clone, Default)]
+pub struct Launch {
+    pub scene: Option<SceneKind>,
+    pub preset: Option<String>,
+    /// Close after this many frames (smoke tests, screenshots).
+    pub exit_after_frames: Option<u64>,
+    /// Start paused at this animation time [s].
+    pub time_s: Option<f64>,
+    /// Save a screenshot here before closing (with `exit_after_frames`).
+    pub screenshot: Option<std::path::PathBuf>,
+}
+
+/// Set by snapshot tests: wall-clock timings (which differ run to run) print as "-".
+pub static HIDE_TIMINGS: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);

@@ -1,0 +1,268 @@
+//! The top bar (scenes, presets, theme, help), the File menu and what its dialogs bring back.
+
+use super::{PoundingApp, SceneKind, dialog};
+use crate::io::preset::{self, EMBEDDED};
+use eframe::egui;
+
+impl PoundingApp {
+    pub(super) fn top_bar(&mut self, ui: &mut egui::Ui) {
+        ui.horizontal_wrapped(|ui| {
+            ui.strong("Pounding Lab");
+            ui.menu_button("File", |ui| self.file_menu(ui))
+                .response
+                .on_hover_text("Exports: plots, screenshots");
+            ui.separator();
+            ui.selectable_value(&mut self.scene, SceneKind::BarImpact, "Bar impact")
+                .on_hover_text("One impact, one model, every readout");
+            ui.selectable_value(&mut self.scene, SceneKind::WaveVsLumped, "Wave vs lumped")
+                .on_hover_text("Sears, wave theory, lumped and FE models overlaid");
+            ui.selectable_value(&mut self.scene, SceneKind::Buildings, "Building pounding")
+                .on_hover_text("Two buildings swaying in an earthquake, with and without pounding");
+            ui.selectable_value(&mut self.scene, SceneKind::Study, "Parameter study")
+                .on_hover_text(
+                    "One setting swept over a range: peak force, duration and e per model",
+                );
+            ui.separator();
+            if self.scene == SceneKind::Buildings {
+                let mut load = None;
+                if ui
+                    .button("Paper's buildings")
+                    .on_hover_text(
+                        "The paper's Section 4 as published: Table 1 on 8 s of El Centro 1940",
+                    )
+                    .clicked()
+                {
+                    load = Some("paper-buildings".to_string());
+                }
+                let label = ui.label("preset").id;
+                egui::ComboBox::from_id_salt("building-preset")
+                    .selected_text(&self.building_preset)
+                    .show_ui(ui, |ui| {
+                        for (name, text) in EMBEDDED
+                            .iter()
+                            .filter(|(_, t)| preset::scene(t) == "buildings")
+                        {
+                            ui.selectable_value(&mut self.building_preset, name.to_string(), *name)
+                                .on_hover_text(preset::description(text).unwrap_or_default());
+                        }
+                    })
+                    .response
+                    .labelled_by(label);
+                if ui
+                    .button("Load preset")
+                    .on_hover_text("Replace the buildings by the preset's")
+                    .clicked()
+                {
+                    load = Some(self.building_preset.clone());
+                }
+                if let Some(name) = load {
+                    match preset::load_for::<crate::io::building_settings::BuildingSetup>(
+                        &name,
+                        "buildings",
+                    ) {
+                        Ok(s) => {
+                            self.buildings.setup = s;
+                            self.buildings.reset_fields();
+                            self.buildings.request();
+                        }
+                        Err(e) => self.message = Some((e.to_string(), true)),
+                    }
+                }
+            } else {
+                self.preset_ui(ui);
+            }
+            ui.separator();
+            if ui
+                .button(if self.dark { "Light" } else { "Dark" })
+                .on_hover_text("Switch theme")
+                .clicked()
+            {
+                self.dark = !self.dark;
+                ui.ctx().set_theme(if self.dark {
+                    egui::Theme::Dark
+                } else {
+                    egui::Theme::Light
+                });
+            }
+            ui.separator();
+            if ui
+                .button("Help")
+                .on_hover_text("Keyboard and what you see (F1)")
+                .clicked()
+            {
+                self.help = !self.help;
+            }
+        });
+    }
+
+    fn file_menu(&mut self, ui: &mut egui::Ui) {
+        if self.scene != SceneKind::Buildings {
+            if ui.button("Open scene...").clicked() {
+                self.dialogs.ask(dialog::Purpose::OpenScene, &self.path);
+                ui.close();
+            }
+            if ui.button("Save scene as...").clicked() {
+                self.dialogs.ask(dialog::Purpose::SaveScene, &self.path);
+                ui.close();
+            }
+        } else if ui.button("Open ground motion...").clicked() {
+            self.dialogs.ask(dialog::Purpose::Motion, "");
+            ui.close();
+        }
+        if ui.button("Choose export folder...").clicked() {
+            self.dialogs
+                .ask(dialog::Purpose::ExportFolder, &self.exporter.prefix);
+            ui.close();
+        }
+        ui.separator();
+        let e = &mut self.exporter;
+        ui.horizontal(|ui| {
+            let label = ui
+                .label("export to")
+                .on_hover_text("Folder and name stem: files are <this>-<plot>.<ext>")
+                .id;
+            ui.add(egui::TextEdit::singleline(&mut e.prefix).desired_width(180.0))
+                .labelled_by(label);
+        });
+        ui.horizontal(|ui| {
+            let label = ui.label("PNG size (width x height)").id;
+            ui.add(
+                egui::DragValue::new(&mut e.size[0])
+                    .range(200..=8000)
+                    .suffix(" px"),
+            )
+            .labelled_by(label);
+            ui.label("x");
+            ui.add(
+                egui::DragValue::new(&mut e.size[1])
+                    .range(150..=8000)
+                    .suffix(" px"),
+            )
+            .labelled_by(label);
+        });
+        ui.horizontal(|ui| {
+            let label = ui.label("text and line scale").id;
+            ui.add(
+                egui::DragValue::new(&mut e.scale)
+                    .range(0.5..=4.0)
+                    .speed(0.05),
+            )
+            .labelled_by(label);
+        })
+        .response
+        .on_hover_text("2 draws text and lines twice as large (e.g. a 3200 x 1800 PNG for print)");
+        ui.separator();
+        let plots = self.shown().shown_plots();
+        if ui
+            .add_enabled(
+                !plots.is_empty(),
+                egui::Button::new("Export every plot (PNG, SVG, CSV)"),
+            )
+            .clicked()
+        {
+            for (name, plot) in plots {
+                for ext in ["png", "svg", "csv"] {
+                    self.exporter.export(plot, name, ext);
+                }
+            }
+            ui.close();
+        }
+        if ui.button("Screenshot of the window").clicked() {
+            self.exporter.screenshot(ui.ctx(), None, "window");
+            ui.close();
+        }
+        let view = self.shown().view_rect();
+        if ui
+            .add_enabled(view.is_some(), egui::Button::new("Screenshot of the view"))
+            .clicked()
+        {
+            self.exporter.screenshot(ui.ctx(), view, "view");
+            ui.close();
+        }
+    }
+
+    fn preset_ui(&mut self, ui: &mut egui::Ui) {
+        let label = ui.label("preset").id;
+        egui::ComboBox::from_id_salt("preset")
+            .selected_text(&self.preset_choice)
+            .show_ui(ui, |ui| {
+                for (name, text) in EMBEDDED
+                    .iter()
+                    .filter(|(_, t)| preset::scene(t) == "impact")
+                {
+                    ui.selectable_value(&mut self.preset_choice, name.to_string(), *name)
+                        .on_hover_text(preset::description(text).unwrap_or_default());
+                }
+            })
+            .response
+            .labelled_by(label);
+        // Both buttons load the chosen preset (Reset reads as undoing edits); both are drawn
+        // every frame, so neither is skipped when the other is clicked.
+        let load = ui
+            .button("Load preset")
+            .on_hover_text("Replace the scene's parameters by the preset")
+            .clicked();
+        let reset = ui
+            .button("Reset")
+            .on_hover_text("Back to the preset's values")
+            .clicked();
+        if load || reset {
+            let name = self.preset_choice.clone();
+            self.message = self.current().load_preset(&name).err().map(|e| (e, true));
+        }
+        ui.separator();
+        let label = ui.label("scene file").id;
+        ui.add(egui::TextEdit::singleline(&mut self.path).desired_width(140.0))
+            .labelled_by(label)
+            .on_hover_text("A TOML scene file");
+        if ui.button("Open").clicked() {
+            self.open_scene();
+        }
+        if ui.button("Save").clicked() {
+            self.save_scene();
+        }
+    }
+
+    fn open_scene(&mut self) {
+        let path = self.path.clone();
+        self.message = Some(match self.current().load_preset(&path) {
+            Ok(()) => (format!("loaded {path}"), false),
+            Err(e) => (e, true),
+        });
+    }
+
+    fn save_scene(&mut self) {
+        let text = preset::impact_to_toml(&self.current().setup);
+        self.message = Some(match std::fs::write(&self.path, text) {
+            Ok(()) => (format!("saved {}", self.path), false),
+            Err(e) => (format!("could not save {}: {e}", self.path), true),
+        });
+    }
+
+    /// Acts on a file dialog that has closed.
+    pub(super) fn dialog_done(&mut self) {
+        let Some((purpose, chosen)) = self.dialogs.poll() else {
+            return;
+        };
+        let Some(path) = chosen else {
+            self.message = Some((dialog::NOTHING_CHOSEN.into(), false));
+            return;
+        };
+        let shown = path.display().to_string();
+        match purpose {
+            dialog::Purpose::OpenScene => {
+                self.path = shown;
+                self.open_scene();
+            }
+            dialog::Purpose::SaveScene => {
+                self.path = shown;
+                self.save_scene();
+            }
+            dialog::Purpose::ExportFolder => {
+                self.exporter.prefix = path.join("pounding").display().to_string();
+                self.message = Some((format!("exports go to {shown}"), false));
+            }
+            dialog::Purpose::Motion => self.buildings.load_motion(shown),
+        }
+    }
+}
