@@ -6,18 +6,26 @@ use super::material::Material;
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Section {
     /// Circular rod of the given radius [m].
-    Circular { radius_m: f64 },
+    Circular {
+        /// Radius [m].
+        radius_m: f64,
+    },
     /// Any section (a slab, say) of the given area [m^2]. Where a radius is needed (the Sears
     /// zone length), the radius of the circle of equal area is used.
-    Area { area_m2: f64 },
+    Area {
+        /// Area [m^2].
+        area_m2: f64,
+    },
 }
 
 /// Shape of the impacting end.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum EndShape {
+    /// A flat end: no Hertz curvature.
     Flat,
     /// Spherical cap of the given radius [m].
     Rounded {
+        /// Radius of the cap [m].
         radius_m: f64,
     },
 }
@@ -36,7 +44,9 @@ impl EndShape {
 /// is its right end. Bar 2 sits on the right; its impacting end is its left end.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Bar {
+    /// Elastic constants and density.
     pub material: Material,
+    /// Cross-section.
     pub section: Section,
     /// Length L [m].
     pub length_m: f64,
@@ -44,10 +54,12 @@ pub struct Bar {
     pub added_mass_kg: f64,
     /// Rigid-body velocity before impact [m/s], positive to the right.
     pub velocity_m_s: f64,
+    /// Shape of the impacting end.
     pub end: EndShape,
 }
 
 impl Bar {
+    /// Cross-section area A [m^2].
     pub fn area_m2(&self) -> f64 {
         match self.section {
             Section::Circular { radius_m } => std::f64::consts::PI * radius_m * radius_m,
@@ -100,6 +112,7 @@ impl Bar {
         self.radius_m() * (1.5f64.sqrt() + (1.0 + nu) * (3.0 - 2.0 * nu) / 6f64.sqrt())
     }
 
+    /// Rigid-body kinetic energy m v^2 / 2 before impact [J].
     pub fn kinetic_energy_j(&self) -> f64 {
         0.5 * self.mass_kg() * self.velocity_m_s * self.velocity_m_s
     }

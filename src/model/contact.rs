@@ -14,6 +14,7 @@ pub const PAPER_DIVISIONS: f64 = 10.0;
 /// linear default [m]: a millimetre, the scale of the paper's gap.
 pub const REFERENCE_OVERLAP_M: f64 = 1e-3;
 
+/// The form of a contact law.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum LawKind {
     /// F = k delta^(3/2), rounded ends.
@@ -23,6 +24,7 @@ pub enum LawKind {
 }
 
 impl LawKind {
+    /// The name presets and the command line use.
     pub fn name(self) -> &'static str {
         match self {
             LawKind::Hertz => "hertz",
@@ -34,11 +36,14 @@ impl LawKind {
 /// A contact law with its stiffness (N/m^1.5 for Hertz, N/m for linear).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContactLaw {
+    /// Hertz or linear.
     pub kind: LawKind,
+    /// k: N/m^1.5 for Hertz, N/m for linear.
     pub stiffness: f64,
 }
 
 impl ContactLaw {
+    /// F = k delta^1.5.
     pub fn hertz(k: f64) -> Self {
         ContactLaw {
             kind: LawKind::Hertz,
@@ -46,6 +51,7 @@ impl ContactLaw {
         }
     }
 
+    /// F = k delta.
     pub fn linear(k: f64) -> Self {
         ContactLaw {
             kind: LawKind::Linear,

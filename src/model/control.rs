@@ -7,6 +7,7 @@ use std::sync::atomic::{AtomicBool, AtomicU32, Ordering};
 /// How many steps a solver loop may take between two looks at its [`Control`].
 pub const CHECK_EVERY: usize = 4096;
 
+/// A cancel flag and the fraction done, shared between a solve and its caller.
 #[derive(Debug, Default)]
 pub struct Control {
     cancel: AtomicBool,
@@ -25,6 +26,7 @@ static NEVER: Control = Control::new();
 pub struct Cancelled;
 
 impl Control {
+    /// Not cancelled, nothing done.
     pub const fn new() -> Self {
         Control {
             cancel: AtomicBool::new(false),
@@ -39,10 +41,12 @@ impl Control {
         &NEVER
     }
 
+    /// Asks the solve to stop at its next look.
     pub fn cancel(&self) {
         self.cancel.store(true, Ordering::Relaxed);
     }
 
+    /// Whether a stop was asked for.
     pub fn cancelled(&self) -> bool {
         self.cancel.load(Ordering::Relaxed)
     }

@@ -16,9 +16,19 @@ use super::history::sample_at;
 #[derive(Debug, Clone, PartialEq)]
 pub enum History {
     /// Samples at t = n dt, n = 0, 1, ...
-    Uniform { dt_s: f64, values: Vec<f64> },
+    Uniform {
+        /// The spacing [s].
+        dt_s: f64,
+        /// H at each sample.
+        values: Vec<f64>,
+    },
     /// A step function: `values[k]` holds on [times[k], times[k+1]).
-    Steps { times: Vec<f64>, values: Vec<f64> },
+    Steps {
+        /// Where each step starts [s].
+        times: Vec<f64>,
+        /// H on each step.
+        values: Vec<f64>,
+    },
 }
 
 /// The wave state of one bar, enough to evaluate its field at any point and time.
@@ -28,8 +38,11 @@ pub struct BarWaves {
     pub body_length_m: f64,
     /// Length of a massless contact zone before the body (collocated Sears reading), else 0.
     pub zone_length_m: f64,
+    /// Wave speed c [m/s].
     pub wave_speed_m_s: f64,
+    /// Cross-section area [m^2].
     pub area_m2: f64,
+    /// Impedance Z [N s/m].
     pub impedance_n_s_m: f64,
     /// Rigid-body velocity before impact [m/s].
     pub initial_velocity_m_s: f64,
@@ -45,6 +58,7 @@ pub struct BarWaves {
 }
 
 impl BarWaves {
+    /// The body's round trip 2 L / c [s].
     pub fn round_trip_s(&self) -> f64 {
         2.0 * self.body_length_m / self.wave_speed_m_s
     }

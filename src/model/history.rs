@@ -19,22 +19,26 @@ pub struct Series {
 }
 
 impl Series {
+    /// An empty history with room for `capacity` samples.
     pub fn with_capacity(capacity: usize) -> Self {
         Series {
             data: Vec::with_capacity(capacity),
         }
     }
 
+    /// Appends the next sample.
     #[inline]
     pub fn push(&mut self, v: f64) {
         self.data.push(v);
     }
 
+    /// How many samples.
     #[inline]
     pub fn len(&self) -> usize {
         self.data.len()
     }
 
+    /// Whether there are none.
     #[inline]
     pub fn is_empty(&self) -> bool {
         self.data.is_empty()
@@ -46,6 +50,7 @@ impl Series {
         self.data[n]
     }
 
+    /// The newest sample (0 when empty).
     #[inline]
     pub fn last(&self) -> f64 {
         *self.data.last().unwrap_or(&0.0)
@@ -58,10 +63,12 @@ impl Series {
         if k < n { self.data[n - 1 - k] } else { 0.0 }
     }
 
+    /// Every sample, oldest first.
     pub fn samples(&self) -> &[f64] {
         &self.data
     }
 
+    /// The samples, given up.
     pub fn into_samples(self) -> Vec<f64> {
         self.data
     }

@@ -22,8 +22,10 @@ pub enum MaterialPreset {
 }
 
 impl MaterialPreset {
+    /// Every preset.
     pub const ALL: [MaterialPreset; 2] = [MaterialPreset::Steel, MaterialPreset::Concrete];
 
+    /// The name presets and the command line use.
     pub fn name(self) -> &'static str {
         match self {
             MaterialPreset::Steel => "steel",
@@ -31,10 +33,12 @@ impl MaterialPreset {
         }
     }
 
+    /// The preset of that name.
     pub fn from_name(name: &str) -> Option<Self> {
         Self::ALL.into_iter().find(|m| m.name() == name)
     }
 
+    /// Its elastic constants and density.
     pub fn material(self) -> Material {
         match self {
             MaterialPreset::Steel => Material {

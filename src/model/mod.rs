@@ -1,5 +1,7 @@
 //! The physics core: no GUI, GPU, file formats or printing.
 
+#![warn(missing_docs)]
+
 pub mod bar;
 pub mod building;
 pub mod contact;

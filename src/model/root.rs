@@ -13,6 +13,7 @@ pub struct Bracket {
 }
 
 impl Bracket {
+    /// The middle of the bracket.
     pub fn mid(&self) -> f64 {
         0.5 * (self.first_side + self.second_side)
     }

@@ -20,7 +20,9 @@ pub enum Reading {
 }
 
 impl Reading {
+    /// Every reading.
     pub const ALL: [Reading; 3] = [Reading::Paper, Reading::Collocated, Reading::End];
+    /// The name presets and the command line use.
     pub fn name(self) -> &'static str {
         match self {
             Reading::Paper => "paper",
@@ -28,6 +30,7 @@ impl Reading {
             Reading::End => "end",
         }
     }
+    /// The reading of that name.
     pub fn from_name(s: &str) -> Option<Self> {
         Self::ALL.into_iter().find(|r| r.name() == s)
     }
@@ -37,8 +40,10 @@ impl Reading {
     }
 }
 
+/// The contact between the bars.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContactSpec {
+    /// Hertz or linear.
     pub law: LawKind,
     /// Explicit stiffness (N/m^1.5 Hertz, N/m linear); `None` derives it: Hertz from the ends,
     /// linear from the paper's E A / (L / n) helper with `divisions` = n.
@@ -53,6 +58,7 @@ pub struct ContactSpec {
     pub restitution: f64,
 }
 
+/// How the impact solvers step.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SolverSettings {
     /// Time step [s].
@@ -66,6 +72,7 @@ pub struct SolverSettings {
     pub refine: bool,
 }
 
+/// The finite-element model's mesh and step.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FeSettings {
     /// Segments per bar.
@@ -74,13 +81,20 @@ pub struct FeSettings {
     pub courant: f64,
 }
 
+/// Two bars about to collide, their contact and the solvers' settings.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ImpactScenario {
+    /// The left bar, moving right.
     pub bar1: Bar,
+    /// The right bar.
     pub bar2: Bar,
+    /// The contact law.
     pub contact: ContactSpec,
+    /// The Sears reading.
     pub reading: Reading,
+    /// Steps, span and budget.
     pub solver: SolverSettings,
+    /// The FE model's settings.
     pub fe: FeSettings,
 }
 
@@ -126,11 +140,14 @@ impl Default for ImpactScenario {
 /// Bad input: which field, what it was, what is allowed.
 #[derive(Debug, Clone, PartialEq)]
 pub struct InputError {
+    /// The key at fault (`bar2.length`).
     pub field: String,
+    /// What is wrong, with the allowed range.
     pub message: String,
 }
 
 impl InputError {
+    /// An error naming `field`.
     pub fn new(field: impl Into<String>, message: impl Into<String>) -> Self {
         InputError {
             field: field.into(),
@@ -171,6 +188,7 @@ fn validate_bar(prefix: &str, bar: &Bar) -> Result<(), InputError> {
 }
 
 impl ImpactScenario {
+    /// Checks every value against its range in the settings table; the error names the key.
     pub fn validate(&self) -> Result<(), InputError> {
         validate_bar("bar1", &self.bar1)?;
         validate_bar("bar2", &self.bar2)?;

@@ -11,7 +11,9 @@ use std::fmt;
 /// A closed or open interval of accepted values.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Range {
+    /// Lower end.
     pub min: f64,
+    /// Upper end.
     pub max: f64,
     /// Whether `min` itself is refused.
     pub min_open: bool,
@@ -20,6 +22,7 @@ pub struct Range {
 }
 
 impl Range {
+    /// [min, max].
     pub const fn closed(min: f64, max: f64) -> Self {
         Range {
             min,
@@ -46,6 +49,7 @@ impl Range {
             max_open: true,
         }
     }
+    /// (min, max).
     pub const fn open(min: f64, max: f64) -> Self {
         Range {
             min,
@@ -73,6 +77,7 @@ impl Range {
         }
     }
 
+    /// Whether `x` is accepted (never a NaN or an infinity).
     pub fn contains(&self, x: f64) -> bool {
         x.is_finite()
             && (if self.min_open {
@@ -118,23 +123,34 @@ pub enum Kind {
     /// A number in `range`; a slider spans `slider`, logarithmically if `log`. `word` is a word
     /// that stands instead of a number (auto, flat), if the setting takes one.
     Number {
+        /// Accepted values.
         range: Range,
+        /// What the slider spans.
         slider: (f64, f64),
+        /// Whether the slider is logarithmic.
         log: bool,
+        /// A word accepted instead of a number.
         word: Option<&'static str>,
     },
     /// One number for every storey, or one per storey, each in `range`.
     List {
+        /// Accepted values of each.
         range: Range,
+        /// What the slider spans.
         slider: (f64, f64),
+        /// Whether the slider is logarithmic.
         log: bool,
     },
     /// A whole number.
     Count {
+        /// Smallest.
         min: u64,
+        /// Largest.
         max: u64,
     },
+    /// One of these words.
     Choice(&'static [&'static str]),
+    /// true or false.
     Bool,
     /// Free text (a file).
     Text,
@@ -143,10 +159,15 @@ pub enum Kind {
 /// One setting.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Setting {
+    /// The key (`barN` for bar1 and bar2, `SIDE` for left and right).
     pub key: &'static str,
+    /// What the window's row shows.
     pub label: &'static str,
+    /// Its unit (empty for none).
     pub unit: &'static str,
+    /// One line on what it does.
     pub help: &'static str,
+    /// What it holds and accepts.
     pub kind: Kind,
     /// As a user would type it.
     pub default: &'static str,

@@ -28,9 +28,12 @@ enum Dashpot {
     },
 }
 
+/// A contact element at one level: its law, its dashpot and the two buildings' effective mass there.
 #[derive(Debug, Clone, Copy)]
 pub struct Element {
+    /// Which element.
     pub model: ContactModel,
+    /// The elastic part: linear or Hertz.
     pub law: ContactLaw,
     dashpot: Dashpot,
     /// Effective mass of the two buildings at the contact point [kg].
@@ -70,6 +73,7 @@ impl Element {
         }
     }
 
+    /// The law's stiffness (N/m, or N/m^1.5 for the Hertzian elements).
     pub fn stiffness(&self) -> f64 {
         self.law.stiffness
     }

@@ -16,13 +16,16 @@ use crate::model::motion::GroundMotion;
 /// Bounds on the relative errors of a run, and what changed with the refinement.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct BuildingErrorEstimate {
+    /// Bound on the max pounding force's relative error.
     pub max_force: f64,
     /// The largest over both roofs and every floor.
     pub peak_displacement: f64,
     /// The largest over the impacts' start times, relative to the time; 0 when the refined run
     /// has another count.
     pub impact_time: f64,
+    /// Impacts the refined run found minus this run's.
     pub impact_count_change: i64,
+    /// Wall time of the refined run [s].
     pub wall_time_s: f64,
 }
 

@@ -20,8 +20,11 @@ use super::BuildingResult;
 /// One level's gaps [m].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LevelGap {
+    /// The smallest gap that avoids contact at this level [m].
     pub min_gap_m: f64,
+    /// The absolute-sum rule: the sum of the peak displacements there [m].
     pub abs_m: f64,
+    /// The SRSS rule: the root of the sum of their squares [m].
     pub srss_m: f64,
 }
 
@@ -32,10 +35,15 @@ pub struct GapAssessment {
     pub min_gap_m: f64,
     /// The level that sets it.
     pub level: Option<usize>,
+    /// The absolute-sum rule at the level that needs most [m].
     pub abs_m: f64,
+    /// The SRSS rule at the level that needs most [m].
     pub srss_m: f64,
+    /// ABS over the minimum gap (above 1: safe).
     pub abs_ratio: f64,
+    /// SRSS over the minimum gap (below 1: the buildings would still touch).
     pub srss_ratio: f64,
+    /// Each level's gaps, lowest first.
     pub levels: Vec<LevelGap>,
 }
 

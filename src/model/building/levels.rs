@@ -13,11 +13,14 @@ pub const SAME_LEVEL_M: f64 = 1e-6;
 /// What meets at a level.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum LevelKind {
+    /// A floor of each building at the same height.
     FloorFloor,
+    /// A floor of one building against the other's column line.
     FloorColumn,
 }
 
 impl LevelKind {
+    /// The name reports use.
     pub fn name(self) -> &'static str {
         match self {
             LevelKind::FloorFloor => "floor-floor",
@@ -34,8 +37,11 @@ pub enum Attachment {
     /// On the column between floor `below` (`None`: the ground) and floor `above`, a fraction
     /// `s` of the way up.
     Column {
+        /// The floor below (`None`: the ground).
         below: Option<usize>,
+        /// The floor above.
         above: usize,
+        /// How far up the storey, 0 to 1.
         s: f64,
     },
 }
@@ -77,9 +83,13 @@ impl Attachment {
 /// One contact point.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Level {
+    /// Height above the ground [m].
     pub elevation_m: f64,
+    /// What meets here.
     pub kind: LevelKind,
+    /// Where the point sits on the left building.
     pub left: Attachment,
+    /// Where the point sits on the right building.
     pub right: Attachment,
 }
 

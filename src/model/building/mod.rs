@@ -31,19 +31,29 @@ pub use scenario::{Building, BuildingScenario, SLAB_YOUNGS_MODULUS_PA, Slab};
 pub use solve::{solve, solve_with};
 pub use warning::Warning;
 
+/// The contact element between the buildings.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum ContactModel {
+    /// The Sears contact: the floor slabs as bars whose waves add to the overlap, a linear law.
     Sears,
+    /// A linear spring.
     Linear,
+    /// A Kelvin-Voigt spring and dashpot that cannot pull.
     Kelvin,
+    /// A Hertzian spring, k delta^1.5.
     Hertz,
+    /// Hertz with Muthukumar and DesRoches' damping.
     HertzDamp,
+    /// Jankowski's nonlinear viscoelastic element.
     Jankowski,
+    /// Stereomechanics: an instantaneous exchange with a restitution.
     Stereo,
+    /// No contact: the buildings pass through each other.
     None,
 }
 
 impl ContactModel {
+    /// Every element, in the order the front ends list them.
     pub const ALL: [ContactModel; 8] = [
         ContactModel::Sears,
         ContactModel::Linear,
@@ -54,6 +64,7 @@ impl ContactModel {
         ContactModel::Stereo,
         ContactModel::None,
     ];
+    /// The name the command line and presets use.
     pub fn name(self) -> &'static str {
         match self {
             ContactModel::Sears => "sears",
@@ -66,6 +77,7 @@ impl ContactModel {
             ContactModel::None => "none",
         }
     }
+    /// The element of that name.
     pub fn from_name(s: &str) -> Option<Self> {
         Self::ALL.into_iter().find(|m| m.name() == s)
     }
@@ -92,6 +104,8 @@ impl ContactModel {
 /// Sears reading for buildings: the paper's delayed planes or the slab ends (d -> 0).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum SlabReading {
+    /// The paper's reading: the law on planes a zone length d inside the slabs.
     Paper,
+    /// The law at the slab ends (d -> 0).
     End,
 }

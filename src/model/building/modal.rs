@@ -31,7 +31,10 @@ pub enum DampingModel {
     Modal,
     /// C = a M + b K with zeta in modes i and j (1-based); the other modes get
     /// a / (2 w) + b w / 2.
-    Rayleigh { modes: [usize; 2] },
+    Rayleigh {
+        /// The two modes (from 1) given the ratio exactly.
+        modes: [usize; 2],
+    },
 }
 
 impl Modes {
@@ -96,6 +99,7 @@ impl Modes {
         }
     }
 
+    /// How many modes (the number of storeys).
     pub fn count(&self) -> usize {
         self.omega_rad_s.len()
     }
@@ -161,18 +165,23 @@ fn symmetric_eigen(mut a: Vec<Vec<f64>>) -> (Vec<f64>, Vec<Vec<f64>>) {
 /// `q(s) = q . y0`, `q'(s) = v . y0` with y0 = [q(0), q'(0), g(0), g'].
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Propagator {
+    /// Weights giving q(s).
     pub q: [f64; 4],
+    /// Weights giving q'(s).
     pub v: [f64; 4],
 }
 
 /// Integrals over the same step: the integral of q is `int_q . y0`, of q'^2 is `y0^T w y0`.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct StepIntegrals {
+    /// Weights giving the integral of q over the step.
     pub int_q: [f64; 4],
+    /// The quadratic form giving the integral of q'^2 over the step.
     pub w: [[f64; 4]; 4],
 }
 
 impl Propagator {
+    /// (q(s), q'(s)) from y0 = [q(0), q'(0), g(0), g'].
     #[inline]
     pub fn apply(&self, y: &[f64; 4]) -> (f64, f64) {
         (dot(&self.q, y), dot(&self.v, y))

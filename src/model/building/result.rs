@@ -11,9 +11,13 @@ use crate::model::field::BarWaves;
 pub struct RawContact {
     /// Index into [`BuildingResult::levels`].
     pub level: usize,
+    /// Onset [s].
     pub start_s: f64,
+    /// Separation [s].
     pub end_s: f64,
+    /// Largest force [N].
     pub peak_force_n: f64,
+    /// Integral of the force [N s].
     pub impulse_ns: f64,
     /// Relative approach velocity at onset [m/s].
     pub approach_velocity_m_s: f64,
@@ -22,17 +26,24 @@ pub struct RawContact {
 /// Contacts at one level merged into one impact (closer than `merge_gap_s`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct ImpactEvent {
+    /// Index into [`BuildingResult::levels`].
     pub level: usize,
+    /// Onset of its first contact [s].
     pub start_s: f64,
+    /// Separation of its last contact [s].
     pub end_s: f64,
+    /// Largest force of its contacts [N].
     pub peak_force_n: f64,
+    /// Sum of its contacts' impulses [N s].
     pub impulse_ns: f64,
+    /// Relative approach velocity at its first onset [m/s].
     pub approach_velocity_m_s: f64,
     /// Indices into the raw contact list.
     pub contacts: Vec<usize>,
 }
 
 impl ImpactEvent {
+    /// From the first onset to the last separation [s].
     pub fn duration_s(&self) -> f64 {
         self.end_s - self.start_s
     }
@@ -46,6 +57,7 @@ pub struct BuildingEnergy {
     pub initial_j: f64,
     /// Work of the ground's inertial forces on the buildings.
     pub input_j: f64,
+    /// Energy dissipated by the buildings' damping [J].
     pub building_damping_j: f64,
     /// Energy the contact took from the buildings and did not give back (dissipated by a damped
     /// element or by the restitution of stereomechanics, or carried into the slabs' waves).
@@ -71,30 +83,38 @@ impl BuildingEnergy {
     }
 }
 
+/// What a run cost.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct BuildingStats {
     /// Steps of every kind: free steps between samples of the record, contact steps.
     pub steps: usize,
+    /// Steps taken inside contacts.
     pub contact_steps: usize,
     /// The step inside contacts, and the spacing at which the free motion is checked [s].
     pub fine_step_s: f64,
     /// The longest free step [s].
     pub coarse_step_s: f64,
+    /// Steps per contact time scale used inside contacts.
     pub steps_per_scale: f64,
+    /// Wall time of the solve [s].
     pub wall_time_s: f64,
 }
 
 /// A level's slabs' waves (Sears): left and right, `None` where a column meets the floor.
 pub type LevelWaves = [Option<BarWaves>; 2];
 
+/// Everything one building run reports.
 #[derive(Debug, Clone)]
 pub struct BuildingResult {
+    /// The element used.
     pub contact: ContactModel,
     /// The contact points, lowest first.
     pub levels: Vec<Level>,
     /// Both buildings' modes.
     pub modes: [Modes; 2],
+    /// Sample times [s].
     pub time_s: Vec<f64>,
+    /// Ground acceleration at the samples [m/s^2].
     pub ground_m_s2: Vec<f64>,
     /// Roof displacement relative to the ground [m].
     pub displacement_m: [Vec<f64>; 2],
@@ -110,7 +130,9 @@ pub struct BuildingResult {
     pub force_n: Vec<f64>,
     /// Each level's force: `level_force_n[level][sample]` [N].
     pub level_force_n: Vec<Vec<f64>>,
+    /// Every contact, at every level, in time order.
     pub contacts: Vec<RawContact>,
+    /// Contacts grouped into impacts (`merge_gap_s`).
     pub impacts: Vec<ImpactEvent>,
     /// Roof peaks |u| over the whole motion (located between samples too) [m].
     pub peak_displacement_m: [f64; 2],
@@ -118,7 +140,9 @@ pub struct BuildingResult {
     pub peak_floor_displacement_m: [Vec<f64>; 2],
     /// Every storey's peak |u_j - u_{j-1}| / h_j.
     pub peak_drift_ratio: [Vec<f64>; 2],
+    /// Largest contact force of the run [N].
     pub max_pounding_force_n: f64,
+    /// Largest contact force at each level [N].
     pub max_force_by_level_n: Vec<f64>,
     /// The largest |u| of each level's contact point on each side [m]: a floor's, or a column
     /// point's between two floors.
@@ -128,8 +152,11 @@ pub struct BuildingResult {
     pub max_closing_m: Vec<f64>,
     /// The Sears slabs' waves at each level (empty for the other elements).
     pub slab_waves: Vec<LevelWaves>,
+    /// Where the energy went.
     pub energy: BuildingEnergy,
+    /// What the run cost.
     pub stats: BuildingStats,
+    /// What the reader must know besides the numbers.
     pub warnings: Vec<Warning>,
 }
 

@@ -18,12 +18,16 @@ pub const MAX_STOREYS: usize = 100;
 pub struct Slab {
     /// Length along the pounding direction [m].
     pub length_m: f64,
+    /// Width across the pounding direction [m].
     pub width_m: f64,
+    /// Thickness [m].
     pub thickness_m: f64,
+    /// Young's modulus [Pa].
     pub youngs_modulus_pa: f64,
 }
 
 impl Slab {
+    /// Cross-section area across the pounding direction [m^2].
     pub fn area_m2(&self) -> f64 {
         self.width_m * self.thickness_m
     }
@@ -59,17 +63,26 @@ fn per(values: &[f64], j: usize) -> f64 {
 /// every floor. Per-storey lists hold one value (for every storey) or N.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Building {
+    /// Number of storeys N.
     pub storeys: usize,
+    /// Floor masses [kg]: one for every floor, or one each (bottom first).
     pub masses_kg: Vec<f64>,
+    /// Storey shear stiffnesses [N/m], one or one each.
     pub stiffnesses_n_m: Vec<f64>,
+    /// Storey heights [m], one or one each.
     pub heights_m: Vec<f64>,
     /// Viscous damping ratio. Default 5%, the value design codes assume for reinforced concrete
     /// (the paper does not state its damping).
     pub damping_ratio: f64,
+    /// How the damping matrix is built from the ratio.
     pub damping: DampingModel,
+    /// Floor slab lengths along the pounding direction [m], one or one each.
     pub slab_lengths_m: Vec<f64>,
+    /// Floor slab widths [m], one or one each.
     pub slab_widths_m: Vec<f64>,
+    /// Floor slab thicknesses [m], one or one each.
     pub slab_thicknesses_m: Vec<f64>,
+    /// Floor slabs' Young's moduli [Pa], one or one each.
     pub slab_youngs_pa: Vec<f64>,
 }
 
@@ -111,12 +124,15 @@ impl Building {
             youngs_modulus_pa: per(&self.slab_youngs_pa, j),
         }
     }
+    /// Every floor's mass, bottom first [kg].
     pub fn masses(&self) -> Vec<f64> {
         (0..self.storeys).map(|j| self.mass(j)).collect()
     }
+    /// Every storey's stiffness, bottom first [N/m].
     pub fn stiffnesses(&self) -> Vec<f64> {
         (0..self.storeys).map(|j| self.stiffness(j)).collect()
     }
+    /// Every storey's height, bottom first [m].
     pub fn heights(&self) -> Vec<f64> {
         (0..self.storeys).map(|j| self.height(j)).collect()
     }
@@ -128,9 +144,11 @@ impl Building {
     pub fn total_height_m(&self) -> f64 {
         self.heights().iter().sum()
     }
+    /// The building's mass [kg].
     pub fn total_mass_kg(&self) -> f64 {
         self.masses().iter().sum()
     }
+    /// Its modes, with its damping.
     pub fn modes(&self) -> Modes {
         Modes::of_shear_building(
             &self.masses(),
@@ -154,12 +172,16 @@ impl Building {
     }
 }
 
+/// Two buildings, the gap between them, the contact element and the solver's settings.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BuildingScenario {
+    /// The building on the left.
     pub left: Building,
+    /// The building on the right.
     pub right: Building,
     /// At-rest separation, the same at every level [m].
     pub gap_m: f64,
+    /// The element at every level.
     pub contact: ContactModel,
     /// Linear elements (sears, linear, kelvin) in N/m; None: at each level the paper's
     /// E A/(L/n) with n = 10 of the slabs that meet there (in series for two; 15 GN/m for the
@@ -169,6 +191,7 @@ pub struct BuildingScenario {
     /// Target restitution of kelvin, hertzdamp, jankowski and stereo. Default 0.65, a value
     /// measured for concrete-to-concrete impact (Jankowski).
     pub restitution: f64,
+    /// Where the Sears element reads its law.
     pub reading: SlabReading,
     /// Sears zone length [m]; None: a tenth of the slab (the stiffer building's where two meet:
     /// the paper's choice).
@@ -189,6 +212,7 @@ pub struct BuildingScenario {
     pub steps_per_scale: Option<f64>,
     /// Longest step outside contacts [s] (also bounded by the record's step).
     pub max_step_s: f64,
+    /// The step budget of a run.
     pub max_steps: usize,
     /// Velocities of the buildings relative to the ground at t = 0 [m/s], every floor alike
     /// (free-vibration and isolated-impact studies); zero for an earthquake.
@@ -319,6 +343,7 @@ impl BuildingScenario {
             .unwrap_or_else(|| steps_for_tolerance(self.tolerance, self.contact.contact_order()))
     }
 
+    /// Checks every value against its range in the settings table; the error names the key.
     pub fn validate(&self) -> Result<(), InputError> {
         use crate::model::settings::{BUILDING_SETTINGS, check};
         let check = |field: &str, v: f64| check(BUILDING_SETTINGS, field, v);

@@ -20,6 +20,7 @@ use super::Slab;
 use crate::model::field::{BarWaves, History};
 use crate::model::history::{Series, Tap};
 
+/// A floor slab's elastic response to the contact force, stepped on the contact grid.
 #[derive(Debug, Clone)]
 pub struct SlabWaves {
     inv_z: f64,
@@ -155,6 +156,7 @@ impl SlabWaves {
         self.elastic
     }
 
+    /// The state to come back to if a trial step is taken again.
     pub fn mark(&self) -> SlabMark {
         SlabMark {
             len: self.q.len(),
@@ -165,6 +167,7 @@ impl SlabWaves {
         }
     }
 
+    /// Back to a marked state.
     pub fn reset(&mut self, mark: SlabMark) {
         self.q.truncate(mark.len);
         self.forces.truncate(mark.len);

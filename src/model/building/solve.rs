@@ -125,6 +125,7 @@ fn plan(
     )
 }
 
+/// Runs two buildings through a ground motion.
 pub fn solve(sc: &BuildingScenario, motion: &GroundMotion) -> Result<BuildingResult, SolveError> {
     solve_with(sc, motion, Control::never())
 }

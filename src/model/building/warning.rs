@@ -3,26 +3,49 @@
 
 use std::fmt;
 
+/// A warning attached to a building run.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Warning {
     /// The contact's time scale needs a finer grid than the step or memory budget allows; a
     /// coarser grid is used (stable: the contact force is implicit) and the force's rise is not
     /// resolved.
     GridOverBudget {
+        /// The contact's time scale [s].
         scale_s: f64,
+        /// The step it needs [s].
         wanted_s: f64,
+        /// The step used [s].
         used_s: f64,
+        /// The step budget.
         max_steps: usize,
     },
     /// The Sears paper reading's validity number exceeds pi/2 at a level.
-    PaperReadingUnstable { level: usize, a_tau: f64 },
+    PaperReadingUnstable {
+        /// The level (index into the run's levels).
+        level: usize,
+        /// Its validity number.
+        a_tau: f64,
+    },
     /// Still in contact when the record ended.
-    InContactAtEnd { end_s: f64 },
+    InContactAtEnd {
+        /// The end of the record [s].
+        end_s: f64,
+    },
     /// Stereomechanical exchanges accumulated (floors pressed together, each rebound shorter):
     /// cut at one per level per step, the impacts hold many exchanges.
-    StereoChatter { impacts: usize, exchanges: usize },
+    StereoChatter {
+        /// Impacts of more than ten exchanges.
+        impacts: usize,
+        /// Their exchanges.
+        exchanges: usize,
+    },
     /// The energy ledger does not balance (a defect: it balances to round-off by construction).
-    CreatedEnergy { joules: f64, relative: f64 },
+    CreatedEnergy {
+        /// What the ledger misses [J].
+        joules: f64,
+        /// The same relative to the energy that entered.
+        relative: f64,
+    },
 }
 
 impl fmt::Display for Warning {

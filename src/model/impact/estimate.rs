@@ -10,8 +10,11 @@ use std::time::Instant;
 /// Estimated errors, relative to the values (absolute for the restitution).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct ErrorEstimate {
+    /// Peak force, relative.
     pub peak_force: f64,
+    /// Contact duration, relative.
     pub contact_duration: f64,
+    /// Impulse, relative.
     pub impulse: f64,
     /// Absolute error of e.
     pub restitution: f64,

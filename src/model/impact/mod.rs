@@ -26,6 +26,7 @@ use std::time::Instant;
 /// regimes where the creation matters (a tau beyond about 0.4).
 pub const ENERGY_CREATION_TOL: f64 = 1e-2;
 
+/// The impact models.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum ModelKind {
     /// Sears: contact law + stress waves, in the reading chosen by the scenario.
@@ -45,6 +46,7 @@ pub enum ModelKind {
 }
 
 impl ModelKind {
+    /// Every model, in the order the front ends list them.
     pub const ALL: [ModelKind; 7] = [
         ModelKind::Sears,
         ModelKind::Wave,
@@ -55,6 +57,7 @@ impl ModelKind {
         ModelKind::Fe,
     ];
 
+    /// The name the command line and presets use.
     pub fn name(self) -> &'static str {
         match self {
             ModelKind::Sears => "sears",
@@ -67,6 +70,7 @@ impl ModelKind {
         }
     }
 
+    /// The model of that name.
     pub fn from_name(s: &str) -> Option<Self> {
         Self::ALL.into_iter().find(|m| m.name() == s)
     }
@@ -105,7 +109,9 @@ pub struct ContactEvent {
     pub loaded_start_s: f64,
     /// When it last falls below that; `None` when still loaded at the end of the span.
     pub loaded_end_s: Option<f64>,
+    /// Largest force of this contact [N].
     pub peak_force_n: f64,
+    /// Integral of its force [N s].
     pub impulse_ns: f64,
 }
 
@@ -173,6 +179,7 @@ pub(crate) fn loaded_interval(
 /// Where the initial kinetic energy went [J].
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct EnergySplit {
+    /// Kinetic energy before impact [J].
     pub initial_j: f64,
     /// Kinetic energy of the bars' rigid-body motion at the end of the run.
     pub rigid_body_j: f64,
@@ -191,6 +198,7 @@ pub struct EnergySplit {
 /// What only the Sears model reports.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SearsDiagnostics {
+    /// The reading used.
     pub reading: Reading,
     /// Zone lengths d_i after the user's scale [m].
     pub zone_lengths_m: [f64; 2],
@@ -205,9 +213,12 @@ pub struct SearsDiagnostics {
     pub creates_energy: bool,
 }
 
+/// What a solve cost.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct SolveStats {
+    /// Steps taken.
     pub steps: usize,
+    /// The step used [s].
     pub dt_s: f64,
     /// The user's step when the solver refined it.
     pub refined_from_s: Option<f64>,
@@ -218,13 +229,17 @@ pub struct SolveStats {
 /// The result of one impact solve.
 #[derive(Debug, Clone)]
 pub struct ImpactResult {
+    /// The model that produced it.
     pub model: ModelKind,
     /// Whether the bars met at all (they must be approaching).
     pub impact: bool,
+    /// Sample times [s].
     pub time_s: Vec<f64>,
+    /// Contact force at the samples [N].
     pub force_n: Vec<f64>,
     /// Approach of the contact (of the planes P_i in the paper reading) [m].
     pub approach_m: Vec<f64>,
+    /// Every contact interval in the simulated span.
     pub contacts: Vec<ContactEvent>,
     /// Duration of the first contact [s]: how long its force stays above [`LOADED_FRACTION`]
     /// of its peak (0 for an instantaneous or no impact).
@@ -235,7 +250,9 @@ pub struct ImpactResult {
     pub peak_force_n: Option<f64>,
     /// Total impulse of the run [N s].
     pub impulse_ns: f64,
+    /// The bars' masses [kg].
     pub masses_kg: [f64; 2],
+    /// The bars' velocities before impact [m/s].
     pub initial_velocities_m_s: [f64; 2],
     /// Rigid-body velocities at the end of the run.
     pub velocities_after_m_s: [f64; 2],
@@ -243,12 +260,17 @@ pub struct ImpactResult {
     pub restitution: f64,
     /// The same after the first contact alone (what the paper reports).
     pub restitution_first_contact: f64,
+    /// Where the initial kinetic energy went.
     pub energy: EnergySplit,
+    /// What only the Sears model reports.
     pub sears: Option<SearsDiagnostics>,
     /// Wave histories of both bars, for stress and velocity anywhere (d'Alembert models).
     pub waves: Option<[BarWaves; 2]>,
+    /// End of the simulated span [s].
     pub end_s: f64,
+    /// What the reader must know besides the numbers.
     pub warnings: Vec<Warning>,
+    /// What the solve cost.
     pub stats: SolveStats,
 }
 
@@ -262,14 +284,19 @@ impl ImpactResult {
 /// Errors a solve can end with.
 #[derive(Debug, thiserror::Error)]
 pub enum SolveError {
+    /// An input refused, by name.
     #[error(transparent)]
     Input(#[from] InputError),
     #[error(
         "step budget exceeded: the run needs more than solver.max_steps = {max_steps} steps (dt = {dt_s:e} s, reached t = {reached_s:e} s); raise solver.max_steps, coarsen solver.dt or shorten solver.window"
     )]
+    /// The run needs more steps than `solver.max_steps`.
     Budget {
+        /// The budget.
         max_steps: usize,
+        /// The step [s].
         dt_s: f64,
+        /// How far the run got [s].
         reached_s: f64,
     },
     /// An FE run whose mesh and steps would take longer than its work budget.
@@ -277,20 +304,33 @@ pub enum SolveError {
         "work budget exceeded: fe.segments = {segments} per bar needs about {node_steps:.2e} node updates, more than {max:.0e}; lower fe.segments or shorten solver.window"
     )]
     FeWork {
+        /// Segments per bar.
         segments: usize,
+        /// Node updates the run would take.
         node_steps: f64,
+        /// The budget.
         max: f64,
     },
     /// A run whose histories would outgrow the memory budget.
     #[error(
         "memory budget exceeded at t = {at_s:.4} s: the histories would take more than {bytes:.1e} bytes; shorten the record (motion.duration), raise solver.max_step or lower solver.max_steps"
     )]
-    Memory { at_s: f64, bytes: f64 },
+    Memory {
+        /// How far the run got [s].
+        at_s: f64,
+        /// The budget [bytes].
+        bytes: f64,
+    },
     /// A run whose numbers grew without bound; no result is given.
     #[error(
         "the run diverged at t = {at_s:.4} s: {why}; the Sears paper reading does this above a tau = pi/2 (use contact.reading = end or a softer contact.stiffness)"
     )]
-    Diverged { at_s: f64, why: String },
+    Diverged {
+        /// When the run stopped [s].
+        at_s: f64,
+        /// What grew.
+        why: String,
+    },
     /// Stopped through its [`Control`] (a newer request in the window, or Cancel).
     #[error("cancelled")]
     Cancelled,

@@ -14,6 +14,7 @@ pub struct TimeScale {
     pub lumped_duration_s: f64,
 }
 
+/// The time scales of a contact law between effective mass `m_eff` and impedance `z_eff` approaching at `w`.
 pub fn contact_time_scale(law: &ContactLaw, w: f64, m_eff: f64, z_eff: f64) -> TimeScale {
     let k = law.stiffness;
     let (f_lumped, lumped_duration_s) = match law.kind {

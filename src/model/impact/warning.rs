@@ -10,8 +10,11 @@ pub enum KeptBecause {
     RefineOff,
     /// Refining would need about `steps` steps, over `solver.max_steps`.
     Budget {
+        /// The step refining would need [s].
         refined_s: f64,
+        /// Steps that would take.
         steps: f64,
+        /// The budget.
         max_steps: usize,
     },
 }
@@ -19,11 +22,23 @@ pub enum KeptBecause {
 /// Which input lies outside the validated box.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Outside {
+    /// Contact stiffness outside 1e4 to 1e16.
     Stiffness(f64),
+    /// Approach velocity outside 1e-6 to 1e3 m/s.
     ApproachVelocity(f64),
+    /// Length ratio above 1e4.
     LengthRatio(f64),
+    /// Zone scale outside 1e-4 to 10.
     ZoneScale(f64),
-    AddedMass { bar: usize, kg: f64, times_own: f64 },
+    /// Added mass above 1000 times the bar's own.
+    AddedMass {
+        /// Which bar (1 or 2).
+        bar: usize,
+        /// The added mass [kg].
+        kg: f64,
+        /// How many times the bar's own mass it is.
+        times_own: f64,
+    },
 }
 
 impl fmt::Display for Outside {
@@ -46,46 +61,83 @@ impl fmt::Display for Outside {
 pub enum Warning {
     /// `solver.dt` was coarser than the contact's time scale and was refined.
     StepRefined {
+        /// The step asked for [s].
         dt_s: f64,
+        /// The contact's time scale [s].
         scale_s: f64,
+        /// The step used [s].
         refined_s: f64,
     },
     /// `solver.dt` was coarser than the contact's time scale and was kept: stable, but the rise
     /// of the force is not resolved.
     StepKept {
+        /// The step asked for and used [s].
         dt_s: f64,
+        /// The contact's time scale [s].
         scale_s: f64,
+        /// Why it was kept.
         because: KeptBecause,
     },
     /// The contact was still on when the simulated span ended.
-    ContactOpenAtEnd { end_s: f64 },
+    ContactOpenAtEnd {
+        /// The end of the span [s].
+        end_s: f64,
+    },
     /// In the paper reading, a bar's zone d is longer than the bar itself.
     ZoneLongerThanBar {
+        /// Which bar (1 or 2).
         bar: usize,
+        /// Its zone length d [m].
         zone_m: f64,
+        /// Its length [m].
         length_m: f64,
     },
     /// How the Kelvin-Voigt damping was calibrated, against Anagnostopoulos' formula.
     KelvinCalibration {
+        /// The damping ratio used.
         xi: f64,
+        /// The dashpot's coefficient [N s/m].
         damping_n_s_m: f64,
+        /// The restitution asked for.
         restitution: f64,
+        /// Anagnostopoulos' damping ratio for a link that may pull.
         anagnostopoulos_xi: f64,
     },
     /// Stereomechanics has no force history.
     Instantaneous,
     /// FE: the step does not resolve the link's oscillation and refining would exceed the budget.
-    FeLinkUnresolved { dt_s: f64, link_step_s: f64 },
+    FeLinkUnresolved {
+        /// The step used [s].
+        dt_s: f64,
+        /// The step the link needs [s].
+        link_step_s: f64,
+    },
     /// FE: the contact link is much stiffer than the end elements, so the end nodes chatter.
-    FeLinkChatter { link_n_m: f64, element_n_m: f64 },
+    FeLinkChatter {
+        /// The link's tangent stiffness [N/m].
+        link_n_m: f64,
+        /// An end element's stiffness [N/m].
+        element_n_m: f64,
+    },
     /// An input lies outside the box the stability suite covers.
     OutsideValidated(Outside),
     /// The bars do not approach: no impact.
-    NotApproaching { approach_m_s: f64 },
+    NotApproaching {
+        /// v1 - v2 [m/s].
+        approach_m_s: f64,
+    },
     /// The paper reading created energy.
-    PaperCreatesEnergy { percent: f64, a_tau: f64 },
+    PaperCreatesEnergy {
+        /// How much, in percent of the relative kinetic energy.
+        percent: f64,
+        /// The reading's validity number.
+        a_tau: f64,
+    },
     /// The paper reading is in its overshoot regime (a tau > 1/e).
-    PaperOvershoots { a_tau: f64 },
+    PaperOvershoots {
+        /// The reading's validity number.
+        a_tau: f64,
+    },
 }
 
 /// The box the stability suite (tests/stability.rs) covers; a run outside it says so.

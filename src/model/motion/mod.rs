@@ -9,18 +9,24 @@ pub const G: f64 = 9.80665;
 /// Ground acceleration sampled at t = n dt.
 #[derive(Debug, Clone, PartialEq)]
 pub struct GroundMotion {
+    /// What the record is (shown with results).
     pub name: String,
+    /// Sampling step [s].
     pub dt_s: f64,
+    /// Ground acceleration at t = n dt [m/s^2].
     pub accel_m_s2: Vec<f64>,
 }
 
 /// Summary numbers of a record.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct MotionStats {
+    /// Number of samples.
     pub points: usize,
+    /// Length [s].
     pub duration_s: f64,
     /// Peak ground acceleration [m/s^2] and when.
     pub pga_m_s2: f64,
+    /// When the peak ground acceleration occurs [s].
     pub pga_time_s: f64,
     /// Peak ground velocity [m/s] (trapezoid, no baseline correction).
     pub pgv_m_s: f64,
@@ -35,6 +41,7 @@ pub struct MotionStats {
 }
 
 impl GroundMotion {
+    /// Length of the record [s].
     pub fn duration_s(&self) -> f64 {
         self.dt_s * self.accel_m_s2.len().saturating_sub(1) as f64
     }
@@ -73,6 +80,7 @@ impl GroundMotion {
         self
     }
 
+    /// Peak values, intensity and durations of the record.
     pub fn stats(&self) -> MotionStats {
         let a = &self.accel_m_s2;
         let dt = self.dt_s;

@@ -9,13 +9,21 @@ use super::{G, GroundMotion};
 /// record of El Centro's size (0.32 g) that needs no file.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SyntheticSpec {
+    /// Random seed.
     pub seed: u64,
+    /// Peak ground acceleration the record is scaled to [g].
     pub pga_g: f64,
+    /// Length [s].
     pub duration_s: f64,
+    /// Sampling step [s].
     pub dt_s: f64,
+    /// Kanai-Tajimi ground frequency [Hz].
     pub ground_frequency_hz: f64,
+    /// Kanai-Tajimi ground damping ratio.
     pub ground_damping: f64,
+    /// Envelope: rise time [s].
     pub rise_s: f64,
+    /// Envelope: strong-motion duration [s].
     pub strong_s: f64,
     /// Decay rate of the envelope's tail [1/s].
     pub decay_per_s: f64,
@@ -58,6 +66,7 @@ impl SplitMix64 {
 }
 
 impl SyntheticSpec {
+    /// The envelope at `t`: a quadratic rise, a plateau, an exponential decay.
     pub fn envelope(&self, t: f64) -> f64 {
         if t < self.rise_s {
             (t / self.rise_s).powi(2)
@@ -68,6 +77,7 @@ impl SyntheticSpec {
         }
     }
 
+    /// The record: filtered white noise under the envelope, scaled to the PGA.
     pub fn generate(&self) -> GroundMotion {
         let n = (self.duration_s / self.dt_s).round() as usize + 1;
         let mut rng = SplitMix64(self.seed);
