@@ -1,0 +1,320 @@
+//! The contact step: Newmark's average acceleration with the contact forces implicit, the
+//! levels in contact solved together.
+
+use super::*;
+
+impl Stepper<'_> {
+    /// One implicit step of every level in contact, to the next grid point (or a Kelvin-Voigt
+    /// link's release inside it).
+    pub(super) fn contact_step(&mut self) -> Result<(), SolveError> {
+        self.contact_step_of(self.grid.h - self.offset)
+    }
+
+    /// A contact step of length hh (the last one of a graded start lands on the grid).
+    pub(super) fn contact_step_of(&mut self, hh: f64) -> Result<(), SolveError> {
+        self.count_step()?;
+        if !self.newmark {
+            self.equilibrium_accelerations();
+            self.newmark = true;
+        }
+        // A level out of contact follows the motion: its overlap and rate are the kinematics
+        // now, not what they were when it last let go.
+        for i in 0..self.points.len() {
+            if self.points[i].force <= 0.0 {
+                let (c, w) = self.point_now(i);
+                let p = &mut self.points[i];
+                p.delta = c - self.sc.gap_m - p.elastic();
+                p.rate = w;
+            }
+        }
+        let trial = self.trial(hh);
+        // A Kelvin-Voigt link lets go where k delta + c delta' reaches zero, inside the step.
+        let released = (0..self.points.len()).find(|&i| {
+            self.sc.contact == ContactModel::Kelvin
+                && self.points[i].force > 0.0
+                && trial.forces[i] <= 0.0
+                && trial.deltas[i] > 0.0
+        });
+        let trial = match released {
+            Some(i) => {
+                let push = |x: f64| {
+                    let t = self.trial(x * hh);
+                    let p = &self.points[i];
+                    p.element.push(t.deltas[i], t.rates[i], p.v0)
+                };
+                let x = bracket(push, 0.0, 1.0, 1e-12).second_side.max(1e-9);
+                let mut t = self.trial(x * hh);
+                t.forces[i] = 0.0;
+                t.released = Some(i);
+                t
+            }
+            None => trial,
+        };
+        self.commit_contact(trial);
+        Ok(())
+    }
+
+    /// Newmark's step needs accelerations that satisfy the equations of motion where it starts:
+    /// q'' = g - 2 zeta w q' - w^2 q with the ground's and the contact forces at this instant.
+    pub(super) fn equilibrium_accelerations(&mut self) {
+        let ground = self.motion.at(self.time());
+        for s in 0..2 {
+            let sign = if s == 0 { -1.0 } else { 1.0 };
+            for k in 0..self.sides[s].modes() {
+                let contact: f64 = self.points.iter().map(|p| sign * p.r[s][k] * p.force).sum();
+                let side = &mut self.sides[s];
+                side.a[k] = -side.gamma[k] * ground + contact
+                    - 2.0 * side.zeta[k] * side.omega[k] * side.v[k]
+                    - side.omega[k].powi(2) * side.q[k];
+            }
+        }
+    }
+
+    /// A contact step of length hh, not yet taken.
+    pub(super) fn trial(&self, hh: f64) -> Trial {
+        let t0 = self.time();
+        let t1 = t0 + hh;
+        let ground = self.motion.at(t1);
+        let ground_change = ground - self.motion.at(t0);
+        let full = (hh - self.grid.h).abs() <= 1e-12 * hh;
+        // Newmark's step in incremental form, k_hat dq = dp + (4/h + 2c) v + 2a, so that short
+        // steps lose nothing to cancellation; its increment without a change of contact forces.
+        let mut k_hat: [Vec<f64>; 2] = [vec![], vec![]];
+        let mut step: [Vec<f64>; 2] = [vec![], vec![]];
+        for s in 0..2 {
+            let side = &self.sides[s];
+            let sign = if s == 0 { -1.0 } else { 1.0 };
+            for k in 0..side.modes() {
+                let kh = if full {
+                    side.k_hat[k]
+                } else {
+                    newmark_k_hat(side.omega[k], side.zeta[k], hh)
+                };
+                let c = 2.0 * side.zeta[k] * side.omega[k];
+                let contact_now: f64 = self.points.iter().map(|p| sign * p.r[s][k] * p.force).sum();
+                let load = -side.gamma[k] * ground_change - contact_now
+                    + (4.0 / hh + 2.0 * c) * side.v[k]
+                    + 2.0 * side.a[k];
+                k_hat[s].push(kh);
+                step[s].push(load / kh);
+            }
+        }
+        let pred: [Vec<f64>; 2] = std::array::from_fn(|s| {
+            self.sides[s]
+                .q
+                .iter()
+                .zip(&step[s])
+                .map(|(q, dq)| q + dq)
+                .collect()
+        });
+        let np = self.points.len();
+        // delta_p = predicted - sum_q G_pq F_q, with the slabs' part.
+        let mut predicted = vec![0.0; np];
+        let mut g = vec![vec![0.0; np]; np];
+        for (i, p) in self.points.iter().enumerate() {
+            let (e0, e1) = if self.sears {
+                p.predict_elastic()
+            } else {
+                (0.0, 0.0)
+            };
+            predicted[i] = dotv(&p.r[0], &pred[0]) - dotv(&p.r[1], &pred[1]) - self.sc.gap_m - e0;
+            for (j, o) in self.points.iter().enumerate() {
+                g[i][j] = (0..2)
+                    .map(|s| {
+                        (0..k_hat[s].len())
+                            .map(|k| p.r[s][k] * o.r[s][k] / k_hat[s][k])
+                            .sum::<f64>()
+                    })
+                    .sum();
+            }
+            // The slabs' instantaneous compliance minus their rigid part can be a hair below
+            // zero (the storeys' springs and dampers stiffen the rigid response): clamp.
+            g[i][i] = (g[i][i] + e1).max(0.0);
+        }
+        // Nonlinear Gauss-Seidel: each level's monotone scalar equation with the others' forces
+        // fixed, swept until the forces settle (one sweep for one level; the levels couple
+        // through the storeys only, weakly over a fine step).
+        let mut forces: Vec<f64> = self.points.iter().map(|p| p.force).collect();
+        let mut deltas = vec![0.0; np];
+        let mut rates = vec![0.0; np];
+        for _sweep in 0..200 {
+            let mut change = 0.0f64;
+            let mut scale = 0.0f64;
+            for i in 0..np {
+                let p = &self.points[i];
+                let others: f64 = (0..np)
+                    .filter(|&j| j != i)
+                    .map(|j| g[i][j] * forces[j])
+                    .sum();
+                let rhs = predicted[i] - others;
+                // A damped link that let go with the floors still overlapping takes hold again
+                // only when they approach each other (as a free step starts a contact).
+                let held =
+                    p.force > 0.0 || p.delta <= 0.0 || p.rate > 0.0 || !self.needs_approach();
+                let d = if held {
+                    p.element
+                        .solve_step(g[i][i], rhs, hh, p.delta, p.rate, p.v0)
+                } else {
+                    rhs
+                };
+                let rate = p.element.rate(hh, d, p.delta, p.rate);
+                let f = if self.sears {
+                    p.element.stiffness() * d.max(0.0)
+                } else if held {
+                    p.element.force(d, rate, p.v0)
+                } else {
+                    0.0
+                };
+                change = change.max((f - forces[i]).abs());
+                scale = scale.max(f.abs());
+                forces[i] = f;
+                deltas[i] = d;
+                rates[i] = rate;
+            }
+            if np == 1 || change <= 1e-13 * scale {
+                break;
+            }
+        }
+        let dq: [Vec<f64>; 2] = std::array::from_fn(|s| {
+            let sign = if s == 0 { -1.0 } else { 1.0 };
+            (0..step[s].len())
+                .map(|k| {
+                    let f: f64 = self
+                        .points
+                        .iter()
+                        .zip(&forces)
+                        .map(|(p, f)| p.r[s][k] * f)
+                        .sum();
+                    step[s][k] + sign * f / k_hat[s][k]
+                })
+                .collect()
+        });
+        Trial {
+            hh,
+            ground,
+            dq,
+            forces,
+            deltas,
+            rates,
+            released: None,
+        }
+    }
+
+    /// Takes a trial step: the modes, the slabs, the ledger and the contacts.
+    pub(super) fn commit_contact(&mut self, tr: Trial) {
+        let hh = tr.hh;
+        let t0 = self.time();
+        let ground0 = self.motion.at(t0);
+        let before: Vec<f64> = self.points.iter().map(|p| p.force).collect();
+        let u_before: Vec<(f64, f64)> = self.points.iter().map(|p| self.point_now_of(p)).collect();
+        for s in 0..2 {
+            let side = &mut self.sides[s];
+            for k in 0..side.modes() {
+                let (v0, a0) = (side.v[k], side.a[k]);
+                let dq = tr.dq[s][k];
+                let dv = 2.0 * dq / hh - 2.0 * v0;
+                let da = 4.0 * (dq - hh * v0) / (hh * hh) - 2.0 * a0;
+                let v1 = v0 + dv;
+                // Newmark's discrete energy identity: the work of the ground is half the sum of
+                // its forces times the displacement; the damping takes h/4 c (v0 + v1)^2.
+                self.ledger.input_j += 0.5 * dq * (-side.gamma[k]) * (ground0 + tr.ground);
+                self.ledger.damping_j +=
+                    0.25 * hh * 2.0 * side.zeta[k] * side.omega[k] * (v0 + v1).powi(2);
+                side.q[k] += dq;
+                side.v[k] = v1;
+                side.a[k] = a0 + da;
+            }
+        }
+        self.advance(hh);
+        let t1 = self.time();
+        for (i, p) in self.points.iter_mut().enumerate() {
+            let f1 = tr.forces[i];
+            for slab in p.slabs.iter_mut().flatten() {
+                slab.push(f1);
+            }
+        }
+        let u_after: Vec<(f64, f64)> = self.points.iter().map(|p| self.point_now_of(p)).collect();
+        for (i, p) in self.points.iter_mut().enumerate() {
+            let (f0, f1) = (before[i], tr.forces[i]);
+            // The contact's work on the buildings: -(F0 + F1)/2 times the closing displacement.
+            self.ledger.contact_work_j -= 0.5 * (f0 + f1) * (u_after[i].0 - u_before[i].0);
+            let delta0 = p.delta;
+            p.delta = if self.sears {
+                u_after[i].0
+                    - self.sc.gap_m
+                    - p.slabs.iter().flatten().map(|s| s.elastic_m()).sum::<f64>()
+            } else {
+                tr.deltas[i]
+            };
+            p.rate = tr.rates[i];
+            p.force = f1;
+            p.max_force = p.max_force.max(f1);
+            if f0 <= 0.0 && f1 > 0.0 {
+                // Opened inside this step: where the overlap crossed zero.
+                let start = if delta0 < 0.0 && p.delta > delta0 {
+                    t0 + hh * (-delta0 / (p.delta - delta0)).clamp(0.0, 1.0)
+                } else {
+                    t0
+                };
+                if p.v0 <= 0.0 {
+                    p.v0 = u_after[i].1.max(1e-12);
+                }
+                p.open = Some(self.contacts.len());
+                self.contacts.push(RawContact {
+                    level: i,
+                    start_s: start,
+                    end_s: start,
+                    peak_force_n: 0.0,
+                    impulse_ns: 0.0,
+                    approach_velocity_m_s: p.v0,
+                });
+            }
+            if let Some(c) = p.open {
+                let contact = &mut self.contacts[c];
+                contact.impulse_ns += 0.5 * hh * (f0 + f1);
+                contact.peak_force_n = contact.peak_force_n.max(f1);
+                if f1 <= 0.0 {
+                    contact.end_s = if tr.released == Some(i) || p.delta > 0.0 {
+                        t1
+                    } else {
+                        t0 + hh
+                            * (delta0.max(0.0) / (delta0.max(0.0) - p.delta).max(f64::MIN_POSITIVE))
+                                .clamp(0.0, 1.0)
+                    };
+                    p.open = None;
+                    p.v0 = 0.0;
+                    if contact.impulse_ns <= 0.0 {
+                        // The touch carried no force (a grazing approach): not a contact.
+                        self.contacts.pop();
+                    }
+                } else {
+                    contact.end_s = t1;
+                }
+            }
+        }
+        self.contact_steps += 1;
+        // Accelerations stay Newmark's inside contacts; leaving one, the free steps need none.
+        self.record();
+    }
+
+    pub(super) fn point_now_of(&self, p: &Point) -> (f64, f64) {
+        self.point_state(
+            p,
+            [&self.sides[0].q, &self.sides[1].q],
+            [&self.sides[0].v, &self.sides[1].v],
+        )
+    }
+}
+
+/// A contact step computed but not taken.
+pub(super) struct Trial {
+    hh: f64,
+    ground: f64,
+    /// The modal displacements' increments.
+    dq: [Vec<f64>; 2],
+    forces: Vec<f64>,
+    deltas: Vec<f64>,
+    rates: Vec<f64>,
+    /// The level whose Kelvin-Voigt link let go at the end of this (shortened) step.
+    released: Option<usize>,
+}

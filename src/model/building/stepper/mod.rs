@@ -1,0 +1,528 @@
+//! The pounding run as named stages over both buildings' modes and every contact point:
+//!
+//! - **free step**: between contacts each mode is propagated exactly to the next sample of the
+//!   record (the ground acceleration is linear between samples), and the motion is checked at
+//!   every point of a fine grid for an onset at any level;
+//! - **onset location**: the touching instant inside its fine step, on the cubic through the
+//!   exact states at both ends (exact to round-off at these steps), or, for the Sears slabs, whose
+//!   waves live on the grid, the grid point before it;
+//! - **contact step**: Newmark's average acceleration on the modes with the contact forces
+//!   implicit (stable for any stiffness), one coupled set of monotone equations for the levels in
+//!   contact, solved by nonlinear Gauss-Seidel;
+//! - **impact bookkeeping**: contacts opened and closed per level, their impulse and peak.
+//!
+//! Every stage writes to one energy [`Ledger`]: the free steps with the exact integrals of the
+//! modal power, the contact steps with Newmark's discrete energy identity, so the ledger balances
+//! to round-off and what it reports (work of the ground, damping, energy taken by the contact)
+//! is exact for the discrete solution.
+
+mod contact;
+mod free;
+mod onset;
+mod record;
+
+use record::Peaks;
+
+use super::elements::Element;
+use super::levels::Level;
+use super::modal::{Modes, Propagator, StepIntegrals, propagator, step_integrals};
+use super::result::{BuildingEnergy, RawContact};
+use super::slab::{SlabMark, SlabWaves};
+use super::{BuildingScenario, ContactModel, SlabReading};
+use crate::model::control::{CHECK_EVERY, Control};
+use crate::model::impact::SolveError;
+use crate::model::motion::GroundMotion;
+use crate::model::root::bracket;
+
+/// The time grid. The fine step h divides the record's step, so every sample of the record is a
+/// grid point and the ground acceleration is linear over every free step.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Grid {
+    pub h: f64,
+    /// Fine steps per free step at most (a free step divides the record's step).
+    pub per_free_step: usize,
+    /// Fine steps over the record.
+    pub total: usize,
+}
+
+/// One building in modal coordinates, with its precomputed exact steps.
+struct Side {
+    omega: Vec<f64>,
+    zeta: Vec<f64>,
+    gamma: Vec<f64>,
+    /// `shapes[k][f]`: mode k at floor f.
+    shapes: Vec<Vec<f64>>,
+    heights: Vec<f64>,
+    q: Vec<f64>,
+    v: Vec<f64>,
+    /// Modal accelerations, kept inside contacts (Newmark).
+    a: Vec<f64>,
+    /// `sub[j][k]`: mode k's exact step over (j + 1) h.
+    sub: Vec<Vec<Propagator>>,
+    /// Integrals over a whole free step, per mode.
+    full: Vec<StepIntegrals>,
+    /// Integrals over j fine steps, per mode, computed when first needed.
+    part: Vec<Option<Vec<StepIntegrals>>>,
+    /// Newmark's effective stiffness over h, per mode.
+    k_hat: Vec<f64>,
+}
+
+impl Side {
+    fn new(modes: &Modes, heights: Vec<f64>, v0: f64, grid: &Grid) -> Self {
+        let n = modes.count();
+        let h = grid.h;
+        let first: Vec<[[f64; 4]; 4]> = (0..n)
+            .map(|k| full_map(modes.omega_rad_s[k], modes.damping[k], h))
+            .collect();
+        // E((j + 1) h) = E(j h) E(h): one product per point instead of an exponential.
+        let mut sub = Vec::with_capacity(grid.per_free_step);
+        let mut current = first.clone();
+        for j in 0..grid.per_free_step {
+            if j > 0 {
+                for k in 0..n {
+                    current[k] = mul4(&current[k], &first[k]);
+                }
+            }
+            sub.push(
+                current
+                    .iter()
+                    .map(|e| Propagator { q: e[0], v: e[1] })
+                    .collect(),
+            );
+        }
+        let free_len = grid.per_free_step as f64 * h;
+        Side {
+            full: (0..n)
+                .map(|k| step_integrals(modes.omega_rad_s[k], modes.damping[k], free_len))
+                .collect(),
+            k_hat: (0..n)
+                .map(|k| newmark_k_hat(modes.omega_rad_s[k], modes.damping[k], h))
+                .collect(),
+            part: vec![None; grid.per_free_step + 1],
+            omega: modes.omega_rad_s.clone(),
+            zeta: modes.damping.clone(),
+            gamma: modes.participation.clone(),
+            shapes: modes.shapes.clone(),
+            heights,
+            q: vec![0.0; n],
+            v: modes.participation.iter().map(|g| g * v0).collect(),
+            a: vec![0.0; n],
+            sub,
+        }
+    }
+
+    fn modes(&self) -> usize {
+        self.omega.len()
+    }
+
+    fn energy(&self) -> f64 {
+        (0..self.modes())
+            .map(|k| 0.5 * (self.v[k].powi(2) + (self.omega[k] * self.q[k]).powi(2)))
+            .sum()
+    }
+
+    /// Floor f's displacement from modal coordinates `q`.
+    fn floor(&self, q: &[f64], f: usize) -> f64 {
+        (0..q.len()).map(|k| self.shapes[k][f] * q[k]).sum()
+    }
+}
+
+/// The exact step's full 4 x 4 map in y = [q, q', g, g'].
+fn full_map(omega: f64, zeta: f64, h: f64) -> [[f64; 4]; 4] {
+    let p = propagator(omega, zeta, h);
+    // g(s) = g + g' s, g' constant.
+    [p.q, p.v, [0.0, 0.0, 1.0, h], [0.0, 0.0, 0.0, 1.0]]
+}
+
+fn mul4(a: &[[f64; 4]; 4], b: &[[f64; 4]; 4]) -> [[f64; 4]; 4] {
+    std::array::from_fn(|i| std::array::from_fn(|j| (0..4).map(|k| a[i][k] * b[k][j]).sum()))
+}
+
+fn newmark_k_hat(omega: f64, zeta: f64, h: f64) -> f64 {
+    omega * omega + 4.0 * zeta * omega / h + 4.0 / (h * h)
+}
+
+/// The energy ledger every stage writes to.
+#[derive(Debug, Clone, Copy, Default)]
+pub(super) struct Ledger {
+    pub initial_j: f64,
+    pub input_j: f64,
+    pub damping_j: f64,
+    /// Work of the contact forces on the buildings (negative: energy taken from them).
+    pub contact_work_j: f64,
+    /// Energy the stereomechanical exchanges took.
+    pub exchanged_j: f64,
+}
+
+/// A contact point: its element, projections onto the modes, slabs and state.
+struct Point {
+    element: Element,
+    /// `r[side][k]`: the point's displacement per unit of mode k.
+    r: [Vec<f64>; 2],
+    slabs: [Option<SlabWaves>; 2],
+    force: f64,
+    delta: f64,
+    rate: f64,
+    v0: f64,
+    /// The open contact (an index into the contact list).
+    open: Option<usize>,
+    /// The grid step of the last stereomechanical exchange here: a sequence of exchanges that
+    /// accumulates at an instant (floors pressed together, each rebound shorter by e) is cut at
+    /// one exchange per level per step.
+    exchanged_in: Option<usize>,
+    max_closing: f64,
+    max_force: f64,
+}
+
+impl Point {
+    fn elastic(&self) -> f64 {
+        self.slabs.iter().flatten().map(|s| s.elastic_m()).sum()
+    }
+
+    /// e0 + e1 F: the slabs' elastic displacement after one more step.
+    fn predict_elastic(&self) -> (f64, f64) {
+        self.slabs
+            .iter()
+            .flatten()
+            .map(|s| s.predict())
+            .fold((0.0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1))
+    }
+}
+
+fn dotv(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+
+/// The first fine step after an onset is split into steps of 1/2^G, 1/2^G, 1/2^(G-1), ... 1/2 of
+/// it.
+const ONSET_GRADING: u32 = 8;
+
+/// Memory the recorded histories may take [bytes].
+pub const SAMPLE_MEMORY_BUDGET: f64 = 2.0e9;
+
+/// One sample of the histories.
+pub(super) struct Sample {
+    pub t: f64,
+    pub ground: f64,
+    /// Floors of each side, and their velocities.
+    pub floors: [Vec<f64>; 2],
+    pub floor_v: [Vec<f64>; 2],
+    pub roof_v: [f64; 2],
+    /// Roof acceleration relative to the ground.
+    pub roof_a: [f64; 2],
+    pub forces: Vec<f64>,
+}
+
+/// The run in progress.
+pub(super) struct Stepper<'a> {
+    sc: &'a BuildingScenario,
+    motion: &'a GroundMotion,
+    pub grid: Grid,
+    sides: [Side; 2],
+    points: Vec<Point>,
+    /// Grid index of the current time, and how far past it the time is (after an event located
+    /// inside a step).
+    n: usize,
+    offset: f64,
+    pub ledger: Ledger,
+    pub contacts: Vec<RawContact>,
+    pub samples: Vec<Sample>,
+    peaks: Peaks,
+    pub steps: usize,
+    pub contact_steps: usize,
+    sears: bool,
+    /// The modal accelerations are Newmark's (the last step was a contact step).
+    newmark: bool,
+    scratch: Scratch,
+}
+
+/// Buffers the free stretch reuses, so its grid points allocate nothing.
+#[derive(Default)]
+struct Scratch {
+    q: [Vec<f64>; 2],
+    v: [Vec<f64>; 2],
+    prev: Vec<(f64, f64)>,
+    marks: Vec<[Option<SlabMark>; 2]>,
+    signals: Vec<(f64, f64)>,
+}
+
+/// What a free stretch ended with.
+enum Free {
+    /// It reached its end.
+    Done,
+    /// A contact starts at `level` inside (grid j - 1, grid j] of the stretch.
+    Onset { j: usize, level: usize },
+}
+
+impl<'a> Stepper<'a> {
+    pub fn new(
+        sc: &'a BuildingScenario,
+        motion: &'a GroundMotion,
+        grid: Grid,
+        levels: &[Level],
+        modes: [Modes; 2],
+    ) -> Self {
+        let sides = [
+            Side::new(
+                &modes[0],
+                sc.left.heights(),
+                sc.initial_velocity_m_s[0],
+                &grid,
+            ),
+            Side::new(
+                &modes[1],
+                sc.right.heights(),
+                sc.initial_velocity_m_s[1],
+                &grid,
+            ),
+        ];
+        let sears = sc.contact == ContactModel::Sears;
+        let points = levels
+            .iter()
+            .map(|level| {
+                let attach = [level.left, level.right];
+                let r: [Vec<f64>; 2] = std::array::from_fn(|s| {
+                    let w = attach[s].weights();
+                    (0..sides[s].modes())
+                        .map(|k| w.iter().map(|(f, x)| x * sides[s].shapes[k][*f]).sum())
+                        .collect()
+                });
+                // The point's effective mass: the inverse of its velocity change per unit impulse.
+                let inverse_mass: f64 = r.iter().flatten().map(|x| x * x).sum();
+                let element = Element::new(
+                    sc.contact,
+                    sc.level_stiffness(level),
+                    sc.restitution,
+                    1.0 / inverse_mass,
+                );
+                let zone = if sc.reading == SlabReading::Paper {
+                    sc.level_zone_length(level)
+                } else {
+                    0.0
+                };
+                let slabs = sc.level_slabs(level);
+                let slab = |i: usize| {
+                    slabs[i].filter(|_| sears).map(|(slab, mass)| {
+                        SlabWaves::new(
+                            &slab,
+                            mass,
+                            zone,
+                            sc.slab_damping,
+                            grid.h,
+                            grid.total + 2,
+                            if i == 0 { -1.0 } else { 1.0 },
+                        )
+                    })
+                };
+                Point {
+                    element,
+                    r,
+                    slabs: [slab(0), slab(1)],
+                    force: 0.0,
+                    delta: -sc.gap_m,
+                    rate: 0.0,
+                    v0: 0.0,
+                    open: None,
+                    exchanged_in: None,
+                    max_closing: f64::NEG_INFINITY,
+                    max_force: 0.0,
+                }
+            })
+            .collect();
+        let mut s = Stepper {
+            sc,
+            motion,
+            grid,
+            peaks: Peaks::default(),
+            sides,
+            points,
+            n: 0,
+            offset: 0.0,
+            ledger: Ledger::default(),
+            contacts: Vec::new(),
+            samples: Vec::new(),
+            steps: 0,
+            contact_steps: 0,
+            sears,
+            newmark: false,
+            scratch: Scratch::default(),
+        };
+        s.ledger.initial_j = s.sides[0].energy() + s.sides[1].energy();
+        for p in s.points.iter_mut() {
+            p.max_closing = 0.0;
+        }
+        s.record();
+        s
+    }
+
+    fn time(&self) -> f64 {
+        self.n as f64 * self.grid.h + self.offset
+    }
+
+    /// The modal ground forcing at `t`: g_k = -Gamma_k a_g(t), and its slope over the record
+    /// interval that starts at or before t.
+    fn ground(&self, t: f64) -> (f64, f64) {
+        let dt = self.motion.dt_s;
+        let i = ((t / dt) + 1e-9).floor();
+        let t0 = i * dt;
+        let slope = (self.motion.at(t0 + dt) - self.motion.at(t0)) / dt;
+        (self.motion.at(t), slope)
+    }
+
+    fn count_step(&mut self) -> Result<(), SolveError> {
+        self.steps += 1;
+        if self.steps > self.sc.max_steps {
+            return Err(SolveError::Budget {
+                max_steps: self.sc.max_steps,
+                dt_s: self.grid.h,
+                reached_s: self.time(),
+            });
+        }
+        Ok(())
+    }
+
+    /// Runs to the end of the record, telling `control` how far it got.
+    pub fn run(&mut self, control: &Control) -> Result<(), SolveError> {
+        let end = self.grid.total;
+        let mut looked_at = 0;
+        while self.n < end {
+            // Free steps advance many grid steps at once: look every CHECK_EVERY grid steps.
+            if self.n >= looked_at {
+                control.report(self.n as f64 / end.max(1) as f64)?;
+                self.check_bounded()?;
+                self.check_memory()?;
+                looked_at = self.n + CHECK_EVERY;
+            }
+            if self.points.iter().any(|p| p.force > 0.0) {
+                self.contact_step()?;
+                continue;
+            }
+            if self.offset > 0.0 {
+                // Back onto the grid after an event inside a step.
+                let rest = self.grid.h - self.offset;
+                if let Some(level) = self.free_partial(rest)? {
+                    self.onset_in_partial(level, rest)?;
+                }
+                continue;
+            }
+            match self.free_step()? {
+                Free::Done => {}
+                Free::Onset { j, level } => self.onset(j, level)?,
+            }
+        }
+        self.check_bounded()
+    }
+
+    /// Bytes one recorded sample takes: its numbers and its vectors' headers and allocations.
+    fn sample_bytes(&self) -> f64 {
+        let floors = self.sides[0].heights.len() + self.sides[1].heights.len();
+        let numbers = 2 + 2 * floors + 4 + self.points.len();
+        (8 * numbers + 5 * (24 + 16)) as f64
+    }
+
+    /// Stops a run whose histories outgrow [`SAMPLE_MEMORY_BUDGET`] (checked every few thousand
+    /// steps, so at most that many samples past it are ever held).
+    fn check_memory(&self) -> Result<(), SolveError> {
+        let bytes = self.samples.len() as f64 * self.sample_bytes();
+        if bytes <= SAMPLE_MEMORY_BUDGET {
+            return Ok(());
+        }
+        Err(SolveError::Memory {
+            at_s: self.time(),
+            bytes: SAMPLE_MEMORY_BUDGET,
+        })
+    }
+
+    /// Stops a run whose contacts have handed the buildings more than ten times the energy that
+    /// ever entered them (or an infinite amount): no element does that, so the numbers that
+    /// would follow are meaningless. The Sears paper reading does it beyond a tau = pi/2.
+    fn check_bounded(&self) -> Result<(), SolveError> {
+        let l = &self.ledger;
+        let entered = l.initial_j + l.input_j.abs();
+        if l.contact_work_j.is_finite() && l.contact_work_j <= 10.0 * entered {
+            return Ok(());
+        }
+        Err(SolveError::Diverged {
+            at_s: self.time(),
+            why: format!(
+                "the contacts handed the buildings {:.3e} J against {:.3e} J that entered",
+                l.contact_work_j, entered
+            ),
+        })
+    }
+
+    /// The contact elements' energy at the end, and the buildings'.
+    pub fn finish(&mut self, end_s: f64) -> (BuildingEnergy, bool) {
+        let stored: f64 = self
+            .points
+            .iter()
+            .filter(|p| p.force > 0.0)
+            .map(|p| p.element.stored_energy(p.delta))
+            .sum();
+        let still = self.points.iter().any(|p| p.force > 0.0);
+        for p in self.points.iter_mut() {
+            if let Some(c) = p.open.take() {
+                self.contacts[c].end_s = end_s;
+            }
+        }
+        let final_j = self.sides[0].energy() + self.sides[1].energy();
+        let l = self.ledger;
+        (
+            BuildingEnergy {
+                initial_j: l.initial_j,
+                input_j: l.input_j,
+                building_damping_j: l.damping_j,
+                contact_j: -l.contact_work_j - stored + l.exchanged_j,
+                final_j,
+                stored_contact_j: stored,
+            },
+            still,
+        )
+    }
+
+    pub fn max_closing(&self) -> Vec<f64> {
+        self.points.iter().map(|p| p.max_closing).collect()
+    }
+
+    pub fn max_forces(&self) -> Vec<f64> {
+        self.points.iter().map(|p| p.max_force).collect()
+    }
+
+    pub fn slab_waves(&self) -> Vec<[Option<crate::model::field::BarWaves>; 2]> {
+        if !self.sears {
+            return vec![];
+        }
+        self.points
+            .iter()
+            .map(|p| std::array::from_fn(|i| p.slabs[i].as_ref().map(|s| s.waves())))
+            .collect()
+    }
+}
+
+/// The cubic through (0, y0) and (l, y1) with slopes v0 and v1, at x.
+fn hermite(y0: f64, v0: f64, y1: f64, v1: f64, l: f64, x: f64) -> f64 {
+    let s = x / l;
+    let (s2, s3) = (s * s, s * s * s);
+    (2.0 * s3 - 3.0 * s2 + 1.0) * y0
+        + (s3 - 2.0 * s2 + s) * l * v0
+        + (-2.0 * s3 + 3.0 * s2) * y1
+        + (s3 - s2) * l * v1
+}
+
+/// Where that cubic has an interior maximum, if it has one (slope falling through zero).
+fn hermite_argmax(y0: f64, v0: f64, y1: f64, v1: f64, l: f64) -> Option<f64> {
+    if !(v0 > 0.0 && v1 < 0.0) {
+        return None;
+    }
+    // The derivative is a quadratic in s with a root in (0, 1) (it changes sign).
+    let d = |s: f64| {
+        let (a, b) = (6.0 * s * s - 6.0 * s, 3.0 * s * s - 4.0 * s + 1.0);
+        (a * y0 + b * l * v0 - a * y1 + (3.0 * s * s - 2.0 * s) * l * v1) / l
+    };
+    Some(bracket(d, 0.0, 1.0, 1e-14).mid() * l)
+}
+
+/// The cubic's largest value inside the step (or minus infinity).
+fn hermite_max(y0: f64, v0: f64, y1: f64, v1: f64, l: f64) -> f64 {
+    hermite_argmax(y0, v0, y1, v1, l).map_or(f64::NEG_INFINITY, |x| hermite(y0, v0, y1, v1, l, x))
+}
