@@ -150,34 +150,30 @@ fn check_buildings(key: &str, value: f64) -> Result<(), String> {
     Ok(())
 }
 
-#[test]
-fn every_impact_key_at_its_extremes_is_refused_by_name_or_runs_finite() {
-    let mut failures = vec![];
-    for s in IMPACT_SETTINGS.iter().filter(|s| numeric(s)) {
-        for key in concrete_keys(std::slice::from_ref(s)) {
-            for v in extremes(s) {
-                if let Err(e) = check_impact(&key, v) {
-                    failures.push(e);
-                }
-            }
-        }
-    }
+/// Every numeric key of `table` at each of its extremes through `check`; the failures, all of
+/// them at once.
+fn at_extremes(table: &'static [Setting], check: fn(&str, f64) -> Result<(), String>) {
+    let failures: Vec<String> = table
+        .iter()
+        .filter(|s| numeric(s))
+        .flat_map(|s| {
+            concrete_keys(std::slice::from_ref(s))
+                .into_iter()
+                .flat_map(move |key| extremes(s).into_iter().map(move |v| (key.clone(), v)))
+        })
+        .filter_map(|(key, v)| check(&key, v).err())
+        .collect();
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
 #[test]
+fn every_impact_key_at_its_extremes_is_refused_by_name_or_runs_finite() {
+    at_extremes(IMPACT_SETTINGS, check_impact);
+}
+
+#[test]
 fn every_building_key_at_its_extremes_is_refused_by_name_or_runs_finite() {
-    let mut failures = vec![];
-    for s in BUILDING_SETTINGS.iter().filter(|s| numeric(s)) {
-        for key in concrete_keys(std::slice::from_ref(s)) {
-            for v in extremes(s) {
-                if let Err(e) = check_buildings(&key, v) {
-                    failures.push(e);
-                }
-            }
-        }
-    }
-    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    at_extremes(BUILDING_SETTINGS, check_buildings);
 }
 
 /// A value anywhere in a setting's accepted range: log-uniform where the range is positive,
