@@ -152,12 +152,16 @@ proptest! {
                 let after: f64 = (0..2).map(|i| field_momentum(&waves[i], bars[i].effective_density_kg_m3(), r.end_s, points(&waves[i]))).sum();
                 (after - (m1 * sc.bar1.velocity_m_s + m2 * sc.bar2.velocity_m_s)).abs()
             };
-            let mut finer = sc;
-            finer.solver.dt_s = r.stats.dt_s / 16.0;
-            let rf = solve(ModelKind::Sears, &finer).map_err(|e| TestCaseError::fail(e.to_string()))?;
-            let (coarse, fine) = (defect(&r), defect(&rf));
+            let coarse = defect(&r);
             prop_assert!(coarse <= 2e-3 * r.impulse_ns, "momentum defect {coarse:e} against impulse {:e}", r.impulse_ns);
-            prop_assert!(fine <= coarse / 16.0 + 1e-6 * r.impulse_ns, "momentum defect {coarse:e} at dt, {fine:e} at dt/16");
+            // The convergence half, where sixteen times the steps fit the budget.
+            if 16 * r.stats.steps <= sc.solver.max_steps {
+                let mut finer = sc;
+                finer.solver.dt_s = r.stats.dt_s / 16.0;
+                let rf = solve(ModelKind::Sears, &finer).map_err(|e| TestCaseError::fail(e.to_string()))?;
+                let fine = defect(&rf);
+                prop_assert!(fine <= coarse / 16.0 + 1e-6 * r.impulse_ns, "momentum defect {coarse:e} at dt, {fine:e} at dt/16");
+            }
         }
     }
 }
