@@ -2,7 +2,7 @@
 //! bar length, and FE with 1000 segments per bar.
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
-use pounding::model::impact::{ModelKind, solve};
+use pounding::model::impact::{ModelKind, Workspace, solve, summary_with};
 use pounding::model::scenario::{ImpactScenario, Reading};
 use std::hint::black_box;
 
@@ -19,6 +19,15 @@ fn base_case(c: &mut Criterion) {
         sc.reading = reading;
         g.bench_function(format!("sears-{}", reading.name()), |b| {
             b.iter(|| solve(ModelKind::Sears, black_box(&sc)).expect("solves"))
+        });
+    }
+    // The summary path sweeps take: no histories, one workspace reused.
+    let mut ws = Workspace::default();
+    for reading in Reading::ALL {
+        let mut sc = base;
+        sc.reading = reading;
+        g.bench_function(format!("sears-{}-summary", reading.name()), |b| {
+            b.iter(|| summary_with(ModelKind::Sears, black_box(&sc), &mut ws).expect("solves"))
         });
     }
     g.finish();

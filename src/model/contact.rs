@@ -124,7 +124,9 @@ impl ContactLaw {
             LawKind::Hertz => {
                 // With s = sqrt(delta) the equation is the cubic bk s^3 + s^2 = rhs: convex and
                 // increasing for s >= 0, so Newton from above converges monotonically, without
-                // a square root per iteration.
+                // a square root per iteration. Iterated to round-off (the building elements and
+                // FE rely on this exact sequence; the Sears loop takes the quicker
+                // `solve_implicit_sqrt` from a close guess).
                 let upper = rhs.sqrt().min((rhs / bk).cbrt());
                 let mut s = if guess > 0.0 {
                     guess.sqrt().min(upper)
@@ -149,6 +151,49 @@ impl ContactLaw {
                 s * s
             }
         }
+    }
+
+    /// For the Hertz law: sqrt of the root of `delta + beta f(delta) = rhs`, from a guess `s0`
+    /// of it (negative: none). With s = sqrt(delta) the equation is the cubic
+    /// `bk s^3 + s^2 = rhs`: convex and increasing for s >= 0, so Newton from any start lands at
+    /// or above the root after one step and then falls monotonically, without a square root per
+    /// iteration. It stops once a step is below 1e-8 of s: Newton's error is then of the order
+    /// of that step squared relative to s, 1e-16, below the rounding of s.
+    #[inline]
+    pub fn solve_implicit_sqrt(&self, beta: f64, rhs: f64, s0: f64) -> f64 {
+        if rhs <= 0.0 {
+            return 0.0;
+        }
+        let bk = beta * self.stiffness;
+        if bk == 0.0 {
+            return rhs.sqrt();
+        }
+        let mut s = if s0 > 0.0 {
+            s0
+        } else if rhs * bk * bk <= 1.0 {
+            // Both sqrt(rhs) and cbrt(rhs / bk) bound the root from above; this one is the
+            // smaller here, and the cube root is not needed.
+            rhs.sqrt()
+        } else {
+            (rhs / bk).cbrt()
+        };
+        for _ in 0..60 {
+            let s2 = s * s;
+            let g = bk * s2 * s + s2 - rhs;
+            let dg = 3.0 * bk * s2 + 2.0 * s;
+            if dg <= 0.0 {
+                // s = 0 with rhs > 0: restart from an upper bound.
+                s = rhs.sqrt();
+                continue;
+            }
+            let next = (s - g / dg).max(0.0);
+            let small = (next - s).abs() <= 1e-8 * next;
+            s = next;
+            if small {
+                break;
+            }
+        }
+        s
     }
 }
 

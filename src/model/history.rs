@@ -73,6 +73,16 @@ impl Series {
         self.data
     }
 
+    /// Forgets every sample, keeping the room.
+    pub fn clear(&mut self) {
+        self.data.clear();
+    }
+
+    /// Room for `additional` more samples.
+    pub fn reserve(&mut self, additional: usize) {
+        self.data.reserve(additional);
+    }
+
     /// Drops samples after the first `len` (to undo a trial step).
     pub fn truncate(&mut self, len: usize) {
         self.data.truncate(len);
@@ -171,31 +181,36 @@ impl Tap {
         // The newest sample would sit at raw.len(); the stencil starts `first` before it.
         let base = raw.len() as isize + self.first;
         let w = &self.weights;
-        let stored = if self.first == -3 { 3 } else { 4 };
         if base >= 0 {
             let b = base as usize;
-            if stored == 3 {
-                let s: &[f64; 3] = raw[b..b + 3]
-                    .try_into()
-                    .expect("stencil inside the history");
+            // A stencil of four stored samples starts at least four before the newest
+            // (first <= -4), one of three exactly three before it: inside `raw` either way.
+            if self.first == -3 {
+                debug_assert!(b + 3 <= raw.len());
+                // SAFETY: b + 3 = raw.len() (first = -3).
+                let s = unsafe { raw.get_unchecked(b..b + 3) };
                 w[0] * s[0] + w[1] * s[1] + w[2] * s[2]
             } else {
-                let s: &[f64; 4] = raw[b..b + 4]
-                    .try_into()
-                    .expect("stencil inside the history");
+                debug_assert!(b + 4 <= raw.len());
+                // SAFETY: b + 4 = raw.len() + first + 4 <= raw.len() (first <= -4).
+                let s = unsafe { raw.get_unchecked(b..b + 4) };
                 (w[0] * s[0] + w[1] * s[1]) + (w[2] * s[2] + w[3] * s[3])
             }
-        } else if base + stored as isize <= 0 {
+        } else if base + 4 <= 0 {
             // The whole stencil lies before t = 0, where the history is zero.
             0.0
         } else {
-            // A few early steps: the stencil straddles t = 0.
-            let mut sum = 0.0;
-            for k in (-base) as usize..stored {
-                sum += w[k] * raw[(base + k as isize) as usize];
-            }
-            sum
+            self.straddling(raw, base)
         }
+    }
+
+    /// A few early steps: the stencil straddles t = 0.
+    #[cold]
+    fn straddling(&self, raw: &[f64], base: isize) -> f64 {
+        let stored = if self.first == -3 { 3 } else { 4 };
+        (((-base).max(0) as usize)..stored)
+            .map(|k| self.weights[k] * raw[(base + k as isize) as usize])
+            .sum()
     }
 }
 

@@ -170,26 +170,97 @@ fn check(field: &str, value: f64) -> Result<(), InputError> {
 }
 
 fn validate_bar(prefix: &str, bar: &Bar) -> Result<(), InputError> {
-    let f = |name: &str| format!("{prefix}.{name}");
-    check(&f("youngs_modulus"), bar.material.youngs_modulus_pa)?;
-    check(&f("poisson_ratio"), bar.material.poisson_ratio)?;
-    check(&f("density"), bar.material.density_kg_m3)?;
-    check(&f("length"), bar.length_m)?;
+    let f = |name: &str, value: f64| {
+        super::settings::check_of(super::settings::IMPACT_SETTINGS, prefix, name, value)
+    };
+    f("youngs_modulus", bar.material.youngs_modulus_pa)?;
+    f("poisson_ratio", bar.material.poisson_ratio)?;
+    f("density", bar.material.density_kg_m3)?;
+    f("length", bar.length_m)?;
     match bar.section {
-        Section::Circular { radius_m } => check(&f("radius"), radius_m)?,
-        Section::Area { area_m2 } => check(&f("area"), area_m2)?,
+        Section::Circular { radius_m } => f("radius", radius_m)?,
+        Section::Area { area_m2 } => f("area", area_m2)?,
     }
-    check(&f("added_mass"), bar.added_mass_kg)?;
-    check(&f("velocity"), bar.velocity_m_s)?;
+    f("added_mass", bar.added_mass_kg)?;
+    f("velocity", bar.velocity_m_s)?;
     if let EndShape::Rounded { radius_m } = bar.end {
-        check(&f("end_radius"), radius_m)?;
+        f("end_radius", radius_m)?;
     }
     Ok(())
 }
 
+/// The keys [`ImpactScenario::in_range`] checks, in its order.
+const CHECKED: [&str; 16] = [
+    "barN.youngs_modulus",
+    "barN.poisson_ratio",
+    "barN.density",
+    "barN.length",
+    "barN.radius",
+    "barN.area",
+    "barN.added_mass",
+    "barN.velocity",
+    "barN.end_radius",
+    "contact.stiffness",
+    "contact.zone_scale",
+    "contact.zone_length",
+    "contact.divisions",
+    "contact.restitution",
+    "solver.dt",
+    "solver.window",
+];
+
+/// Their ranges, read from the settings table once per process.
+fn checked_ranges() -> &'static [super::settings::Range; 16] {
+    static RANGES: std::sync::OnceLock<[super::settings::Range; 16]> = std::sync::OnceLock::new();
+    RANGES.get_or_init(|| {
+        CHECKED.map(|key| {
+            super::settings::find(super::settings::IMPACT_SETTINGS, key)
+                .and_then(|s| s.range())
+                .unwrap_or_else(|| panic!("the settings table gives {key} a range"))
+        })
+    })
+}
+
 impl ImpactScenario {
+    /// Whether every value lies in its range: the quick look a sweep's thousand solves take,
+    /// before the key-naming check that runs only where it fails.
+    fn in_range(&self) -> bool {
+        let r = checked_ranges();
+        let bar_ok = |b: &Bar| {
+            r[0].contains(b.material.youngs_modulus_pa)
+                && r[1].contains(b.material.poisson_ratio)
+                && r[2].contains(b.material.density_kg_m3)
+                && r[3].contains(b.length_m)
+                && match b.section {
+                    Section::Circular { radius_m } => r[4].contains(radius_m),
+                    Section::Area { area_m2 } => r[5].contains(area_m2),
+                }
+                && r[6].contains(b.added_mass_kg)
+                && r[7].contains(b.velocity_m_s)
+                && match b.end {
+                    EndShape::Rounded { radius_m } => r[8].contains(radius_m),
+                    EndShape::Flat => true,
+                }
+        };
+        bar_ok(&self.bar1)
+            && bar_ok(&self.bar2)
+            && self.contact.stiffness.is_none_or(|k| r[9].contains(k))
+            && r[10].contains(self.contact.zone_scale)
+            && self.contact.zone_length_m.is_none_or(|d| r[11].contains(d))
+            && r[12].contains(self.contact.divisions)
+            && r[13].contains(self.contact.restitution)
+            && r[14].contains(self.solver.dt_s)
+            && r[15].contains(self.solver.window_s)
+    }
+
     /// Checks every value against its range in the settings table; the error names the key.
     pub fn validate(&self) -> Result<(), InputError> {
+        if self.in_range() {
+            // The counts' checks are integer compares; keep them in the one path below.
+            check("solver.max_steps", self.solver.max_steps as f64)?;
+            check("fe.segments", self.fe.segments as f64)?;
+            return check("fe.courant", self.fe.courant);
+        }
         validate_bar("bar1", &self.bar1)?;
         validate_bar("bar2", &self.bar2)?;
         if let Some(k) = self.contact.stiffness {

@@ -252,8 +252,17 @@ pub fn generic(key: &str) -> String {
 
 /// The setting of `key` in `table`.
 pub fn find(table: &'static [Setting], key: &str) -> Option<&'static Setting> {
-    let g = generic(key);
-    table.iter().find(|s| s.key == g)
+    // Without building the generic key: validation runs this for every solve of a sweep.
+    let (prefix, rest) = key.split_once('.').unwrap_or(("", key));
+    let general = match prefix {
+        "bar1" | "bar2" => Some("barN"),
+        "left" | "right" => Some("SIDE"),
+        _ => None,
+    };
+    table.iter().find(|s| match general {
+        Some(g) => s.key.split_once('.') == Some((g, rest)),
+        None => s.key == key,
+    })
 }
 
 /// Checks `value` of `field` against its row of `table`.
@@ -261,6 +270,30 @@ pub fn check(table: &'static [Setting], field: &str, value: f64) -> Result<(), I
     match find(table, field) {
         Some(s) => s.check(field, value),
         None => Ok(()),
+    }
+}
+
+/// Checks `value` of `owner.name` (`bar1.length`) against its row of `table`; the key is only
+/// spelled out for an error.
+pub fn check_of(
+    table: &'static [Setting],
+    owner: &str,
+    name: &str,
+    value: f64,
+) -> Result<(), InputError> {
+    let general = match owner {
+        "bar1" | "bar2" => "barN",
+        "left" | "right" => "SIDE",
+        other => other,
+    };
+    let row = table
+        .iter()
+        .find(|s| s.key.split_once('.') == Some((general, name)));
+    match row {
+        Some(s) if s.range().is_some_and(|r| !r.contains(value)) => {
+            s.check(&format!("{owner}.{name}"), value)
+        }
+        _ => Ok(()),
     }
 }
 

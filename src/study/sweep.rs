@@ -3,7 +3,7 @@
 
 use super::{Cancelled, Progress, par_map};
 use crate::io::settings::ImpactSetup;
-use crate::model::impact::{ModelKind, solve};
+use crate::model::impact::{ModelKind, Workspace, summary_with};
 use crate::model::scenario::InputError;
 use crate::model::settings::{IMPACT_SETTINGS, Kind, concrete_keys};
 use serde::Serialize;
@@ -127,6 +127,11 @@ pub fn setups(
         .collect()
 }
 
+thread_local! {
+    /// Each worker thread's Sears workspace, kept from one point to the next.
+    static WORKSPACE: std::cell::RefCell<Workspace> = std::cell::RefCell::new(Workspace::default());
+}
+
 /// Every (model, value) point solved in parallel; a point whose solve fails carries the error.
 pub fn run(
     setups: &[ImpactSetup],
@@ -141,14 +146,18 @@ pub fn run(
     par_map(progress, &jobs, |&(model, i)| {
         let value = values[i];
         let name = model.name().to_string();
-        match solve(model, &setups[i].scenario) {
+        // The summary path, through this thread's workspace: no histories, and no allocation
+        // once the thread has solved a run as long.
+        let outcome =
+            WORKSPACE.with(|ws| summary_with(model, &setups[i].scenario, &mut ws.borrow_mut()));
+        match outcome {
             Ok(r) => Point {
                 model: name,
                 value,
                 peak_force_n: r.peak_force_n,
                 contact_duration_s: Some(r.contact_duration_s),
                 restitution: Some(r.restitution),
-                contacts: Some(r.contacts.len()),
+                contacts: Some(r.contacts),
                 error: None,
             },
             Err(e) => Point {

@@ -11,6 +11,7 @@ pub mod timestep;
 pub mod warning;
 pub mod wave;
 
+pub use sears::Workspace;
 pub use warning::{KeptBecause, Outside, VALIDATED, Warning};
 
 use crate::model::control::{Cancelled, Control};
@@ -131,27 +132,27 @@ impl ContactEvent {
 /// `peak`, crossings interpolated linearly and snapped to the touching ends by
 /// [`SNAP_FRACTION`].
 pub(crate) fn loaded_interval(
-    time: &[f64],
+    time: Times,
     force: &[f64],
     start: f64,
     end: Option<f64>,
     peak: f64,
 ) -> (f64, Option<f64>) {
-    let lo = time.partition_point(|&t| t < start);
+    let lo = time.partition_point(|t| t < start);
     let hi = time
-        .partition_point(|&t| t <= end.unwrap_or(f64::INFINITY))
+        .partition_point(|t| t <= end.unwrap_or(f64::INFINITY))
         .min(force.len());
     let threshold = LOADED_FRACTION * peak;
-    let above: Vec<usize> = (lo..hi).filter(|&i| force[i] > threshold).collect();
-    let (Some(&first), Some(&last)) = (above.first(), above.last()) else {
+    let above = |i: &usize| force[*i] > threshold;
+    let (Some(first), Some(last)) = ((lo..hi).find(above), (lo..hi).rfind(above)) else {
         return (start, end);
     };
     let cross = |a: usize, b: usize| {
         let (fa, fb) = (force[a], force[b]);
         if fa == fb {
-            time[a]
+            time.at(a)
         } else {
-            time[a] + (threshold - fa) / (fb - fa) * (time[b] - time[a])
+            time.at(a) + (threshold - fa) / (fb - fa) * (time.at(b) - time.at(a))
         }
     };
     let mut loaded_start = if first > lo {
@@ -164,7 +165,7 @@ pub(crate) fn loaded_interval(
     } else {
         end
     };
-    let length = loaded_end.unwrap_or(time[last]) - loaded_start;
+    let length = loaded_end.unwrap_or(time.at(last)) - loaded_start;
     if loaded_start - start <= SNAP_FRACTION * length {
         loaded_start = start;
     }
@@ -414,6 +415,102 @@ pub(crate) fn close_open_contact(
     }
 }
 
+/// What a sweep reports of one impact: the numbers of [`ImpactResult`] without its histories.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ImpactSummary {
+    /// Whether the bars met at all.
+    pub impact: bool,
+    /// Peak force of the run [N]; `None` for stereomechanics.
+    pub peak_force_n: Option<f64>,
+    /// The first contact's duration (force above [`LOADED_FRACTION`] of its peak) [s].
+    pub contact_duration_s: f64,
+    /// How long the bars touch in the first contact [s].
+    pub touching_duration_s: f64,
+    /// Effective restitution at the end of the run.
+    pub restitution: f64,
+    /// The same after the first contact alone.
+    pub restitution_first_contact: f64,
+    /// Total impulse [N s].
+    pub impulse_ns: f64,
+    /// Contact intervals in the simulated span.
+    pub contacts: usize,
+    /// Start of the second contact, if any [s].
+    pub recontact_s: Option<f64>,
+}
+
+impl ImpactResult {
+    /// The numbers a sweep reports.
+    pub fn summary(&self) -> ImpactSummary {
+        ImpactSummary {
+            impact: self.impact,
+            peak_force_n: self.peak_force_n,
+            contact_duration_s: self.contact_duration_s,
+            touching_duration_s: self.touching_duration_s,
+            restitution: self.restitution,
+            restitution_first_contact: self.restitution_first_contact,
+            impulse_ns: self.impulse_ns,
+            contacts: self.contacts.len(),
+            recontact_s: self.recontact_s(),
+        }
+    }
+}
+
+/// The summary from a run's contacts and force samples, by the same arithmetic as [`finish`]
+/// (so a summary and a full result agree bit for bit).
+pub(crate) fn summarize(
+    sc: &ImpactScenario,
+    contacts: &[(f64, Option<f64>, f64)],
+    time: Times,
+    force: &[f64],
+    impulse_ns: f64,
+    [m1, m2]: [f64; 2],
+) -> ImpactSummary {
+    let (v1, v2) = (sc.bar1.velocity_m_s, sc.bar2.velocity_m_s);
+    let w = v1 - v2;
+    let restitution_of = |j: f64| {
+        let [a, b] = [v1 - j / m1, v2 + j / m2];
+        if w > 0.0 { (b - a) / w } else { 1.0 }
+    };
+    let mut peak = 0.0;
+    let (mut duration, mut touching, mut first_j) = (0.0, 0.0, 0.0);
+    for (k, &(start, end, j)) in contacts.iter().enumerate() {
+        let p = peak_between(time, force, start, end.unwrap_or(f64::INFINITY));
+        peak = f64::max(peak, p);
+        if k == 0 {
+            let (loaded_start, loaded_end) = loaded_interval(time, force, start, end, p);
+            duration = loaded_end.map_or(0.0, |e| e - loaded_start);
+            touching = end.map_or(0.0, |e| e - start);
+            first_j = j;
+        }
+    }
+    ImpactSummary {
+        impact: w > 0.0,
+        peak_force_n: Some(peak),
+        contact_duration_s: duration,
+        touching_duration_s: touching,
+        restitution: restitution_of(impulse_ns),
+        restitution_first_contact: restitution_of(first_j),
+        impulse_ns,
+        contacts: contacts.len(),
+        recontact_s: contacts.get(1).map(|c| c.0),
+    }
+}
+
+/// [`solve`] reduced to its summary, through a workspace kept between calls: the Sears model
+/// keeps no histories and, once `ws` has seen a run as long, allocates nothing; the other
+/// models solve in full and summarise.
+pub fn summary_with(
+    model: ModelKind,
+    scenario: &ImpactScenario,
+    ws: &mut Workspace,
+) -> Result<ImpactSummary, SolveError> {
+    if model != ModelKind::Sears || scenario.approach_velocity_m_s() <= 0.0 {
+        return solve(model, scenario).map(|r| r.summary());
+    }
+    scenario.validate_for(model)?;
+    sears::summary(scenario, Control::never(), ws)
+}
+
 /// Solve one impact with the chosen model.
 pub fn solve(model: ModelKind, scenario: &ImpactScenario) -> Result<ImpactResult, SolveError> {
     solve_with(model, scenario, Control::never())
@@ -482,11 +579,49 @@ fn no_impact(model: ModelKind, sc: &ImpactScenario) -> Raw {
     }
 }
 
+/// Sample times: stored, or the uniform grid k h of a solve that keeps no time array (the same
+/// numbers either way, so a summary and a full result agree bit for bit).
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Times<'a> {
+    Stored(&'a [f64]),
+    Uniform { h: f64, len: usize },
+}
+
+impl Times<'_> {
+    fn len(&self) -> usize {
+        match self {
+            Times::Stored(t) => t.len(),
+            Times::Uniform { len, .. } => *len,
+        }
+    }
+
+    fn at(&self, k: usize) -> f64 {
+        match self {
+            Times::Stored(t) => t[k],
+            Times::Uniform { h, .. } => k as f64 * h,
+        }
+    }
+
+    /// The first index whose time fails `pred` (which holds on a prefix).
+    fn partition_point(&self, pred: impl Fn(f64) -> bool) -> usize {
+        let (mut lo, mut hi) = (0, self.len());
+        while lo < hi {
+            let mid = lo + (hi - lo) / 2;
+            if pred(self.at(mid)) {
+                lo = mid + 1;
+            } else {
+                hi = mid;
+            }
+        }
+        lo
+    }
+}
+
 /// Peak of sampled data between two times, refined by a parabola through the largest sample and
 /// its neighbours (the samples alone miss a smooth maximum by O(dt^2)).
-pub(crate) fn peak_between(time: &[f64], force: &[f64], start: f64, end: f64) -> f64 {
-    let lo = time.partition_point(|&t| t < start);
-    let hi = time.partition_point(|&t| t <= end);
+pub(crate) fn peak_between(time: Times, force: &[f64], start: f64, end: f64) -> f64 {
+    let lo = time.partition_point(|t| t < start);
+    let hi = time.partition_point(|t| t <= end);
     let hi = hi.min(force.len());
     let mut best = (0.0, usize::MAX);
     if lo < hi {
@@ -500,7 +635,7 @@ pub(crate) fn peak_between(time: &[f64], force: &[f64], start: f64, end: f64) ->
     if i == usize::MAX || i == 0 || i + 1 >= force.len() {
         return fmax;
     }
-    let (t0, t1, t2) = (time[i - 1], time[i], time[i + 1]);
+    let (t0, t1, t2) = (time.at(i - 1), time.at(i), time.at(i + 1));
     let (f0, f1, f2) = (force[i - 1], force[i], force[i + 1]);
     // Only on a uniform, strictly interior stencil; jumps (wave theory) keep the sample.
     let h = t1 - t0;
@@ -534,13 +669,18 @@ fn finish(model: ModelKind, sc: &ImpactScenario, raw: Raw) -> ImpactResult {
         .iter()
         .map(|&(start_s, end_s, impulse_ns)| {
             let peak_force_n = peak_between(
-                &raw.time_s,
+                Times::Stored(&raw.time_s),
                 &raw.force_n,
                 start_s,
                 end_s.unwrap_or(f64::INFINITY),
             );
-            let (loaded_start_s, loaded_end_s) =
-                loaded_interval(&raw.time_s, &raw.force_n, start_s, end_s, peak_force_n);
+            let (loaded_start_s, loaded_end_s) = loaded_interval(
+                Times::Stored(&raw.time_s),
+                &raw.force_n,
+                start_s,
+                end_s,
+                peak_force_n,
+            );
             ContactEvent {
                 start_s,
                 end_s,

@@ -24,8 +24,8 @@
 //! integrated up to (from) that instant, so durations are not quantised to the grid.
 
 use super::timestep::{choose_step, contact_time_scale};
-use super::{Raw, SearsDiagnostics, SolveError, Warning, peak_between};
-use crate::model::contact::ContactLaw;
+use super::{Raw, SearsDiagnostics, SolveError, Times, Warning, peak_between};
+use crate::model::contact::{ContactLaw, LawKind};
 use crate::model::control::{CHECK_EVERY, Control};
 use crate::model::field::{BarWaves, History};
 use crate::model::history::{Series, Tap};
@@ -35,7 +35,6 @@ struct Channel {
     inv_z: f64,
     recur: Tap,
     taps: [Tap; 2],
-    psi: Series,
     /// Psi_{n+1} = (Phi_{n+1} + known) * gain: 1 / (1 - weight of the newest sample in the
     /// recursion), 1 unless the round trip is shorter than a step.
     gain: f64,
@@ -47,11 +46,33 @@ impl Channel {
     /// The known part of this bar's contribution to delta_{n+1}, times Z, given the known part
     /// `a` of Psi_{n+1}.
     #[inline]
-    fn known_displacement(&self, a: f64) -> f64 {
-        self.taps[0].known_before_push(&self.psi)
-            + self.taps[1].known_before_push(&self.psi)
-            + self.top * a
+    fn known_displacement(&self, psi: &Series, a: f64) -> f64 {
+        self.taps[0].known_before_push(psi) + self.taps[1].known_before_push(psi) + self.top * a
     }
+}
+
+/// The buffers a Sears solve steps through. Repeated solves (sweeps, studies, the window's
+/// worker) keep one and reuse it: a solve clears and refills it, allocating only when its run is
+/// longer than every one before.
+#[derive(Debug, Default)]
+pub struct Workspace {
+    psi: [Series; 2],
+    phi: Series,
+    force: Vec<f64>,
+    delta: Vec<f64>,
+    contacts: Vec<(f64, Option<f64>, f64)>,
+}
+
+/// What a run leaves besides the workspace's histories.
+struct Run {
+    law: ContactLaw,
+    lay: Layout,
+    z: [f64; 2],
+    h: f64,
+    n: usize,
+    on: bool,
+    warnings: Vec<Warning>,
+    refined_from_s: Option<f64>,
 }
 
 /// The geometry of one reading: body lengths, lags, masses.
@@ -164,7 +185,8 @@ fn theta_for(z: f64) -> f64 {
     0.5 + 0.5 * (0.25 * z * z).min(1.0)
 }
 
-pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, SolveError> {
+/// Steps an impact through `ws`: its histories of Psi, Phi, force and approach, its contacts.
+fn run(sc: &ImpactScenario, control: &Control, ws: &mut Workspace) -> Result<Run, SolveError> {
     let law = sc.contact_law()?;
     let lay = layout(sc)?;
     let bars = [sc.bar1, sc.bar2];
@@ -201,36 +223,42 @@ pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, Solve
             Tap::linear(lag, h)
         }
     };
-    let mut channels: Vec<Channel> = (0..2)
-        .map(|i| {
-            let recur = tap(lay.round_trip_s[i]);
-            let taps = lay.lags_s[i].map(tap);
-            let mut psi = Series::with_capacity(capacity);
-            psi.push(0.0);
-            let gain = 1.0 / (1.0 - recur.newest_weight());
-            Channel {
-                inv_z: 1.0 / z[i],
-                recur,
-                taps,
-                psi,
-                gain,
-                top: taps[0].newest_weight() + taps[1].newest_weight(),
-            }
-        })
-        .collect();
-    let mut phi = Series::with_capacity(capacity);
-    phi.push(0.0);
-    let mut force: Vec<f64> = Vec::with_capacity(capacity);
-    force.push(0.0);
-    let mut delta: Vec<f64> = Vec::with_capacity(capacity);
-    delta.push(0.0);
+    let channels: [Channel; 2] = std::array::from_fn(|i| {
+        let recur = tap(lay.round_trip_s[i]);
+        let taps = lay.lags_s[i].map(tap);
+        let gain = 1.0 / (1.0 - recur.newest_weight());
+        Channel {
+            inv_z: 1.0 / z[i],
+            recur,
+            taps,
+            gain,
+            top: taps[0].newest_weight() + taps[1].newest_weight(),
+        }
+    });
+    let Workspace {
+        psi,
+        phi,
+        force,
+        delta,
+        contacts,
+    } = ws;
+    for series in psi.iter_mut().chain(std::iter::once(&mut *phi)) {
+        series.clear();
+        series.reserve(capacity);
+        series.push(0.0);
+    }
+    for v in [&mut *force, &mut *delta] {
+        v.clear();
+        v.reserve(capacity);
+        v.push(0.0);
+    }
+    contacts.clear();
 
     let n_stop = if sc.solver.window_s > 0.0 {
         (sc.solver.window_s / h).ceil() as usize
     } else {
         usize::MAX
     };
-    let mut contacts: Vec<(f64, Option<f64>, f64)> = Vec::new();
     let mut contact_phi0 = 0.0;
     let mut on = true;
     contacts.push((0.0, None, 0.0));
@@ -239,6 +267,8 @@ pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, Solve
     let c0: f64 = channels.iter().map(|ch| ch.inv_z * ch.top * ch.gain).sum();
 
     let expected_steps = (expected / h).max(1.0);
+    // sqrt(delta) at the last three steps (the Hertz Newton's starting point).
+    let (mut s_prev2, mut s_prev, mut s_now) = (0.0f64, 0.0f64, 0.0f64);
     while n < n_stop {
         if n.is_multiple_of(CHECK_EVERY) {
             control.report(n as f64 / expected_steps)?;
@@ -252,15 +282,16 @@ pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, Solve
         }
         let t1 = (n + 1) as f64 * h;
         let (r0, r1) = (
-            channels[0].recur.known_before_push(&channels[0].psi),
-            channels[1].recur.known_before_push(&channels[1].psi),
+            channels[0].recur.known_before_push(&psi[0]),
+            channels[1].recur.known_before_push(&psi[1]),
         );
         let wv = w * t1
-            - channels[0].inv_z * channels[0].known_displacement(r0 * channels[0].gain)
-            - channels[1].inv_z * channels[1].known_displacement(r1 * channels[1].gain);
+            - channels[0].inv_z * channels[0].known_displacement(&psi[0], r0 * channels[0].gain)
+            - channels[1].inv_z * channels[1].known_displacement(&psi[1], r1 * channels[1].gain);
         let (fn_, phin, dn) = (force[n], phi.last(), delta[n]);
         let free = wv - c0 * phin;
         let (mut d1, mut f1, mut phi1, theta);
+        let mut s_new = 0.0;
         if c0 == 0.0 {
             // Explicit: delta_{n+1} depends on history alone; Phi by the trapezoid rule.
             theta = 0.5;
@@ -268,10 +299,38 @@ pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, Solve
             f1 = law.force(d1);
             phi1 = phin + 0.5 * h * (fn_ + f1);
         } else {
-            theta = theta_for(c0 * h * law.tangent(dn.max(free)));
+            // sqrt(delta) at the end of the step, extrapolated from the last three steps (a
+            // quadratic: within (h / T)^3 of it, so one Newton iteration lands on the root). It
+            // is known before this step's look-ups, off the chain from one step to the next, and
+            // gives the step's stiffness for theta without a square root. Elsewhere (linear
+            // law, the first steps) the stiffness is the law's at the larger of the overlap now
+            // and the one the step heads for.
+            let guess = if law.kind != LawKind::Hertz {
+                -1.0
+            } else if s_prev2 > 0.0 && s_prev > 0.0 && s_now > 0.0 {
+                3.0 * (s_now - s_prev) + s_prev2
+            } else if s_prev > 0.0 && s_now > 0.0 {
+                2.0 * s_now - s_prev
+            } else {
+                -1.0
+            };
+            let tangent = if guess > 0.0 {
+                1.5 * law.stiffness * guess
+            } else {
+                law.tangent(dn.max(free))
+            };
+            theta = theta_for(c0 * h * tangent);
             let p = phin + (1.0 - theta) * h * fn_;
-            d1 = law.solve_implicit(c0 * theta * h, wv - c0 * p, dn);
-            f1 = law.force(d1);
+            let (beta, rhs) = (c0 * theta * h, wv - c0 * p);
+            if law.kind == LawKind::Hertz && rhs > 0.0 {
+                let s1 = law.solve_implicit_sqrt(beta, rhs, guess);
+                s_new = s1;
+                d1 = s1 * s1;
+                f1 = law.stiffness * d1 * s1;
+            } else {
+                d1 = law.solve_implicit(beta, rhs, dn);
+                f1 = law.force(d1);
+            }
             phi1 = p + theta * h * f1;
         }
         let local = || LocalPoly {
@@ -350,26 +409,58 @@ pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, Solve
             contacts.push((t_on, None, 0.0));
         }
         // Store the new samples: Psi_i(t_n+1) = Phi_n+1 + Psi_i(t_n+1 - T_i).
-        for (ch, r) in channels.iter_mut().zip([r0, r1]) {
-            let psi1 = (phi1 + r) * ch.gain;
-            ch.psi.push(psi1);
+        for ((ch, r), series) in channels.iter().zip([r0, r1]).zip(psi.iter_mut()) {
+            series.push((phi1 + r) * ch.gain);
         }
         phi.push(phi1);
         force.push(f1);
         delta.push(d1);
+        (s_prev2, s_prev, s_now) = (s_prev, s_now, s_new);
         n += 1;
         if separated && sc.solver.window_s == 0.0 && w - phi1 / m_eff <= 0.0 {
             break;
         }
     }
     super::close_open_contact(
-        &mut contacts,
+        contacts,
         phi.last(),
         contact_phi0,
         n as f64 * h,
         &mut warnings,
     );
+    Ok(Run {
+        law,
+        lay,
+        z,
+        h,
+        n,
+        on,
+        warnings,
+        refined_from_s: choice.refined_from_s,
+    })
+}
 
+/// One Sears solve, every history kept.
+pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, SolveError> {
+    let mut ws = Workspace::default();
+    let Run {
+        law,
+        lay,
+        z,
+        h,
+        n,
+        on,
+        mut warnings,
+        refined_from_s,
+    } = run(sc, control, &mut ws)?;
+    let Workspace {
+        phi,
+        force,
+        delta,
+        contacts,
+        ..
+    } = ws;
+    let bars = [sc.bar1, sc.bar2];
     let end_s = n as f64 * h;
     let time_s: Vec<f64> = (0..=n).map(|k| k as f64 * h).collect();
     let impulse = phi.last();
@@ -387,7 +478,12 @@ pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, Solve
     let c = bars.map(|b| b.wave_speed_m_s());
     let plane_delays_s = [zones[0] / c[0], zones[1] / c[1]];
     let first = contacts[0];
-    let peak = peak_between(&time_s, &force, first.0, first.1.unwrap_or(f64::INFINITY));
+    let peak = peak_between(
+        Times::Stored(&time_s),
+        &force,
+        first.0,
+        first.1.unwrap_or(f64::INFINITY),
+    );
     let kt = law.tangent_at_force(peak);
     let a_tau = kt * (plane_delays_s[0] / z[0] + plane_delays_s[1] / z[1]);
     if sc.reading == Reading::Paper {
@@ -423,12 +519,35 @@ pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, Solve
         warnings,
         steps: n,
         dt_s: h,
-        refined_from_s: choice.refined_from_s,
+        refined_from_s,
         ..Raw::default()
     })
 }
 
+/// One Sears solve through `ws`, reduced to what a sweep reports: no histories kept, nothing
+/// allocated once `ws` has seen a run as long.
+pub(crate) fn summary(
+    sc: &ImpactScenario,
+    control: &Control,
+    ws: &mut Workspace,
+) -> Result<super::ImpactSummary, SolveError> {
+    let run = run(sc, control, ws)?;
+    let times = Times::Uniform {
+        h: run.h,
+        len: run.n + 1,
+    };
+    Ok(super::summarize(
+        sc,
+        &ws.contacts,
+        times,
+        &ws.force,
+        ws.phi.last(),
+        run.lay.masses_kg,
+    ))
+}
+
 /// H_i on the grid from the force samples: H_n = F_n + H(t_n - T_i).
+#[inline(never)]
 fn build_waves(
     sc: &ImpactScenario,
     lay: &Layout,
