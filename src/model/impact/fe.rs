@@ -139,6 +139,7 @@ pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, Solve
         usize::MAX
     };
     let (mut time_s, mut force_n, mut approach_m) = (vec![0.0], vec![0.0], vec![0.0]);
+    let mut impulses = vec![0.0];
     let mut contacts: Vec<(f64, Option<f64>, f64)> = vec![(0.0, None, 0.0)];
     let (mut on, mut impulse, mut contact_j0, mut delta) = (true, 0.0, 0.0, 0.0);
     // delta at t = -h: the bars were approaching rigidly.
@@ -197,6 +198,7 @@ pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, Solve
         time_s.push(t);
         force_n.push(f);
         approach_m.push(d1);
+        impulses.push(impulse);
         if separated && sc.solver.window_s == 0.0 && w - impulse / m_eff <= 0.0 {
             break;
         }
@@ -233,6 +235,7 @@ pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, Solve
         approach_m,
         contacts,
         impulse_ns: impulse,
+        impulse_history_ns: impulses,
         masses_kg: masses,
         vibration_j,
         contact_j: law.energy(delta),

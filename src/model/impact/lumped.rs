@@ -117,6 +117,8 @@ fn integrate(sc: &ImpactScenario, link: Link, control: &Control) -> Result<Raw, 
     let mut y: State = [0.0, w, 0.0];
     let (mut time_s, mut force_n, mut approach_m) =
         (vec![0.0], vec![link.force(0.0, w)], vec![0.0]);
+    // The impulse m* (w - delta') and the dashpot's dissipation, as integrated.
+    let (mut impulses, mut dissipated) = (vec![0.0], vec![0.0]);
     let mut t = 0.0;
     let mut steps = 0usize;
     let expected_steps = (2.0 * scale.lumped_duration_s / h).max(1.0);
@@ -151,6 +153,15 @@ fn integrate(sc: &ImpactScenario, link: Link, control: &Control) -> Result<Raw, 
             time_s.push(t);
             force_n.push(0.0);
             approach_m.push(y[0]);
+            impulses.push(m * (w - y[1]));
+            // A Kelvin-Voigt link lets go with its spring still stretched: that energy is lost
+            // as the massless link relaxes.
+            let relaxed = if link.damping_n_s_m > 0.0 {
+                link.law.energy(y[0])
+            } else {
+                0.0
+            };
+            dissipated.push(y[2] + relaxed);
             break;
         }
         y = next;
@@ -158,12 +169,14 @@ fn integrate(sc: &ImpactScenario, link: Link, control: &Control) -> Result<Raw, 
         time_s.push(t);
         force_n.push(link.force(y[0], y[1]));
         approach_m.push(y[0]);
+        impulses.push(m * (w - y[1]));
+        dissipated.push(y[2]);
     }
     let end_contact = t;
     let impulse = m * (w - y[1]);
     // A Kelvin-Voigt link releases at delta > 0; its spring energy is lost as the massless link
     // relaxes.
-    let dissipated =
+    let dissipated_total =
         y[2] + link.law.energy(y[0]) * if link.damping_n_s_m > 0.0 { 1.0 } else { 0.0 };
     let contact_j = if link.damping_n_s_m > 0.0 {
         0.0
@@ -174,6 +187,8 @@ fn integrate(sc: &ImpactScenario, link: Link, control: &Control) -> Result<Raw, 
         time_s.push(sc.solver.window_s);
         force_n.push(0.0);
         approach_m.push(y[0] + y[1] * (sc.solver.window_s - end_contact));
+        impulses.push(impulse);
+        dissipated.push(dissipated.last().copied().unwrap_or(0.0));
     }
     Ok(Raw {
         end_s: *time_s.last().unwrap_or(&0.0),
@@ -182,8 +197,10 @@ fn integrate(sc: &ImpactScenario, link: Link, control: &Control) -> Result<Raw, 
         approach_m,
         contacts: vec![(0.0, Some(end_contact), impulse)],
         impulse_ns: impulse,
+        impulse_history_ns: impulses,
+        dissipated_history_j: dissipated,
         masses_kg: masses,
-        dissipated_j: dissipated,
+        dissipated_j: dissipated_total,
         contact_j,
         steps,
         dt_s: h,
@@ -241,6 +258,8 @@ pub(crate) fn solve_stereo(sc: &ImpactScenario) -> Raw {
         approach_m: vec![0.0, 0.0],
         contacts: vec![(0.0, Some(0.0), impulse)],
         impulse_ns: impulse,
+        impulse_history_ns: vec![0.0, impulse],
+        dissipated_history_j: vec![0.0, 0.5 * m * w * w * (1.0 - e * e)],
         masses_kg: [sc.bar1.mass_kg(), sc.bar2.mass_kg()],
         dissipated_j: 0.5 * m * w * w * (1.0 - e * e),
         peak_override_n: Some(None),

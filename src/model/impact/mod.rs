@@ -3,6 +3,7 @@
 //! Each model produces its raw histories and contact events; [`finish`] turns them into the
 //! quantities every front end reports (impulse, rigid-body velocities, restitution, energy split).
 
+pub mod energy;
 pub mod estimate;
 pub mod fe;
 pub mod lumped;
@@ -267,6 +268,11 @@ pub struct ImpactResult {
     pub sears: Option<SearsDiagnostics>,
     /// Wave histories of both bars, for stress and velocity anywhere (d'Alembert models).
     pub waves: Option<[BarWaves; 2]>,
+    /// Impulse so far at each of `time_s` [N s], as the model integrates it: it ends at
+    /// `impulse_ns`.
+    pub impulse_history_ns: Vec<f64>,
+    /// Energy the contact has dissipated by each of `time_s` [J] (zeros for elastic contacts).
+    pub dissipated_history_j: Vec<f64>,
     /// End of the simulated span [s].
     pub end_s: f64,
     /// What the reader must know besides the numbers.
@@ -358,6 +364,11 @@ pub(crate) struct Raw {
     pub contact_j: f64,
     pub end_s: f64,
     pub waves: Option<[BarWaves; 2]>,
+    /// Impulse so far at each sample, as the model integrates it (empty: [`finish`] takes the
+    /// trapezoid rule over the force samples).
+    pub impulse_history_ns: Vec<f64>,
+    /// Energy a damped contact has dissipated by each sample (empty: none).
+    pub dissipated_history_j: Vec<f64>,
     pub peak_override_n: Option<Option<f64>>,
     pub sears: Option<SearsDiagnostics>,
     pub warnings: Vec<Warning>,
@@ -655,6 +666,19 @@ pub(crate) fn peak_between(time: Times, force: &[f64], start: f64, end: f64) -> 
     f1 - 0.25 * (f0 - f2) * x
 }
 
+/// The integral of `y` over `t` from the start to each sample.
+fn cumulative_trapezoid(t: &[f64], y: &[f64]) -> Vec<f64> {
+    let mut out = Vec::with_capacity(t.len());
+    let mut sum = 0.0;
+    for i in 0..t.len() {
+        if i > 0 {
+            sum += 0.5 * (y[i] + y[i - 1]) * (t[i] - t[i - 1]);
+        }
+        out.push(sum);
+    }
+    out
+}
+
 fn finish(model: ModelKind, sc: &ImpactScenario, raw: Raw) -> ImpactResult {
     let [m1, m2] = raw.masses_kg;
     let (v1, v2) = (sc.bar1.velocity_m_s, sc.bar2.velocity_m_s);
@@ -709,6 +733,16 @@ fn finish(model: ModelKind, sc: &ImpactScenario, raw: Raw) -> ImpactResult {
         0.0
     };
     let first = contacts.first();
+    let impulse_history_ns = if raw.impulse_history_ns.len() == raw.time_s.len() {
+        raw.impulse_history_ns
+    } else {
+        cumulative_trapezoid(&raw.time_s, &raw.force_n)
+    };
+    let dissipated_history_j = if raw.dissipated_history_j.len() == raw.time_s.len() {
+        raw.dissipated_history_j
+    } else {
+        vec![0.0; raw.time_s.len()]
+    };
     ImpactResult {
         model,
         impact: w > 0.0,
@@ -734,6 +768,8 @@ fn finish(model: ModelKind, sc: &ImpactScenario, raw: Raw) -> ImpactResult {
             balance_error,
         },
         sears: raw.sears,
+        impulse_history_ns,
+        dissipated_history_j,
         waves: raw.waves,
         end_s: raw.end_s,
         warnings: raw.warnings,

@@ -508,6 +508,7 @@ pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, Solve
         contact_j,
         end_s,
         waves: Some(waves),
+        impulse_history_ns: phi.into_samples(),
         sears: Some(SearsDiagnostics {
             reading: sc.reading,
             zone_lengths_m: zones,

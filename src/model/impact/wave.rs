@@ -67,7 +67,7 @@ pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, Solve
             values: vec![],
         },
     ];
-    let (mut time_s, mut force_n, mut approach_m) = (vec![], vec![], vec![]);
+    let (mut time_s, mut force_n, mut approach_m, mut impulses) = (vec![], vec![], vec![], vec![]);
     let mut contacts: Vec<(f64, Option<f64>, f64)> = vec![(0.0, None, 0.0)];
     let mut queue = BinaryHeap::new();
     queue.push(At(0.0));
@@ -136,10 +136,12 @@ pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, Solve
             time_s.push(t);
             force_n.push(f_old);
             approach_m.push(delta);
+            impulses.push(impulse);
         }
         time_s.push(t);
         force_n.push(f);
         approach_m.push(delta);
+        impulses.push(impulse);
         for i in 0..2 {
             let v = f + echoes[i];
             if h[i].times.is_empty() || v != h[i].last() {
@@ -162,6 +164,7 @@ pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, Solve
         time_s.push(end_s);
         force_n.push(f);
         approach_m.push(delta);
+        impulses.push(impulse);
     }
     let mut warnings = vec![];
     super::close_open_contact(&mut contacts, impulse, contact_j0, end_s, &mut warnings);
@@ -193,6 +196,7 @@ pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, Solve
         vibration_j,
         end_s,
         waves: Some(waves),
+        impulse_history_ns: impulses,
         warnings,
         steps: events,
         dt_s: 0.0,
