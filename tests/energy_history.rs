@@ -12,8 +12,10 @@ fn cases() -> Vec<(String, ModelKind, ImpactScenario)> {
     let mut out = vec![];
     for reading in Reading::ALL {
         for l2 in [1.0, 2.0, 10.0] {
-            let mut sc = ImpactScenario::default();
-            sc.reading = reading;
+            let mut sc = ImpactScenario {
+                reading,
+                ..Default::default()
+            };
             sc.bar2.length_m = l2;
             out.push((
                 format!("sears {} 1 m on {l2} m", reading.name()),
