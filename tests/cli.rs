@@ -676,3 +676,77 @@ fn wave_theory_has_no_contact_law_so_flat_ends_run_while_hertz_models_name_the_m
         "{err}"
     );
 }
+
+#[test]
+fn xt_and_energy_exports_write_their_documented_columns_and_refuse_bad_requests() {
+    let dir = std::env::temp_dir().join(format!("pounding-xt-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (csv, png, energy) = (
+        dir.join("xt.csv"),
+        dir.join("xt.png"),
+        dir.join("energy.csv"),
+    );
+    let o = pounding(&[
+        "impact",
+        "--model",
+        "wave",
+        "--xt",
+        csv.to_str().unwrap(),
+        "--xt-grid",
+        "20x30",
+        "--energy",
+        energy.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some("bar,x_m,t_s,stress_pa,velocity_m_s"));
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 2 * 20 * 30);
+    // Bar 1's rows, then bar 2's; x from 0 at the contact face to L; at t = 0 at rest in bar 2,
+    // moving at 1 m/s in bar 1 (positive to the right).
+    assert!(rows[..600].iter().all(|r| r[0] == 1.0) && rows[600..].iter().all(|r| r[0] == 2.0));
+    assert_eq!((rows[0][1], rows[19][1]), (0.0, 1.0));
+    assert_eq!((rows[600][1], rows[619][1]), (0.0, 2.0));
+    assert!((rows[5][4] - 1.0).abs() < 1e-12 && rows[605][4].abs() < 1e-12);
+    // Wave theory's plateau is compression: negative stress somewhere, never tension above it.
+    assert!(rows.iter().any(|r| r[3] < -1e6));
+    let e = std::fs::read_to_string(&energy).unwrap();
+    assert!(e.starts_with(
+        "time_s,rigid_kinetic_j,wave_j,contact_j,dissipated_j,total_j,wave_bar1_j,wave_bar2_j\n"
+    ));
+    let o = pounding(&[
+        "impact",
+        "--xt",
+        png.to_str().unwrap(),
+        "--xt-field",
+        "velocity",
+        "--plot-size",
+        "600x400",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let (w, h, _, _) = common::read_png(&png);
+    assert_eq!((w, h), (600, 400));
+    for (args, want) in [
+        (vec!["--xt", "x.svg"], "--xt"),
+        (vec!["--xt", "x.png", "--xt-field", "strain"], "--xt-field"),
+        (vec!["--xt", "x.csv", "--xt-grid", "1x10"], "--xt-grid"),
+        (
+            vec!["--xt", "x.csv", "--xt-grid", "30000x30000"],
+            "--xt-grid",
+        ),
+    ] {
+        let mut all = vec!["impact"];
+        all.extend(args);
+        let o = pounding(&all);
+        assert!(!o.status.success(), "{all:?}");
+        let err = stderr(&o);
+        assert!(
+            err.contains(want) && !err.contains("panicked"),
+            "{all:?}: {err}"
+        );
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}

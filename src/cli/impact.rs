@@ -16,6 +16,104 @@ pub struct ImpactArgs {
     /// Model: sears|wave|lumped-hertz|lumped-linear|kelvin|stereo|fe [default: the preset's]
     #[arg(long, value_name = "MODEL")]
     pub model: Option<String>,
+    /// Write the space-time (x-t) diagram: an image (.png) or its grid (.csv, the rows
+    /// bar,x_m,t_s,stress_pa,velocity_m_s)
+    #[arg(long, value_name = "FILE")]
+    pub xt: Option<std::path::PathBuf>,
+    /// The field the x-t image shows: stress|velocity
+    #[arg(long, value_name = "FIELD", default_value = "stress")]
+    pub xt_field: String,
+    /// The x-t grid: NX points along each bar, NT times
+    #[arg(long, value_name = "NXxNT", default_value = "200x400", value_parser = parse_grid)]
+    pub xt_grid: (usize, usize),
+    /// Write the energy over time as CSV: time_s,rigid_kinetic_j,wave_j,contact_j,dissipated_j,total_j
+    #[arg(long, value_name = "FILE")]
+    pub energy: Option<std::path::PathBuf>,
+}
+
+/// NXxNT, each 2 to 20000, at most 4e7 points in all.
+fn parse_grid(text: &str) -> Result<(usize, usize), String> {
+    let bad = || {
+        format!(
+            "'{text}': expected NXxNT, each 2 to 20000 (NX points along each bar, NT times), at most 4e7 points"
+        )
+    };
+    let (a, b) = text.split_once(['x', 'X']).ok_or_else(bad)?;
+    let (nx, nt): (usize, usize) = (
+        a.trim().parse().map_err(|_| bad())?,
+        b.trim().parse().map_err(|_| bad())?,
+    );
+    if (2..=20_000).contains(&nx) && (2..=20_000).contains(&nt) && nx * nt <= 40_000_000 {
+        Ok((nx, nt))
+    } else {
+        Err(bad())
+    }
+}
+
+/// Writes the x-t diagram (`--xt`) and the energy history (`--energy`) asked for.
+fn write_instruments(
+    args: &ImpactArgs,
+    setup: &ImpactSetup,
+    preset_name: &str,
+    r: &pounding::model::impact::ImpactResult,
+    out: &mut dyn Write,
+) -> anyhow::Result<()> {
+    use pounding::model::xt::{XtField, XtGrid};
+    if let Some(path) = &args.xt {
+        let field = XtField::from_name(&args.xt_field).ok_or_else(|| {
+            anyhow::anyhow!(
+                "--xt-field: unknown field '{}': allowed stress|velocity",
+                args.xt_field
+            )
+        })?;
+        let sc = &setup.scenario;
+        let (nx, nt) = args.xt_grid;
+        let grid = XtGrid::of(
+            r,
+            [sc.bar1.area_m2(), sc.bar2.area_m2()],
+            [sc.bar1.length_m, sc.bar2.length_m],
+            nx,
+            nt,
+            r.view_span_s(),
+        );
+        let ext = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .unwrap_or("")
+            .to_ascii_lowercase();
+        match ext.as_str() {
+            "csv" => super::write_csv(out, path, |w| pounding::io::csv::write_xt(w, &grid))
+                .map_err(|e| anyhow::anyhow!("--xt: {e}"))?,
+            "png" => pounding::export::xt::XtImage {
+                grid: &grid,
+                field,
+                title: format!(
+                    "x-t diagram: {} ({}), {}",
+                    setup.model.name(),
+                    preset_name,
+                    field.name()
+                ),
+                size: args.common.plot_size.unwrap_or((1000, 700)),
+                scale: args.common.plot_scale.unwrap_or(1.0),
+                zones_m: r
+                    .sears
+                    .filter(|s| s.reading != pounding::model::scenario::Reading::End)
+                    .map(|s| s.zone_lengths_m),
+            }
+            .write_png(path)
+            .map_err(|e| anyhow::anyhow!("--xt: {e}"))?,
+            _ => anyhow::bail!(
+                "--xt: {}: the extension must be .png (the image) or .csv (the grid)",
+                path.display()
+            ),
+        }
+    }
+    if let Some(path) = &args.energy {
+        let h = pounding::model::impact::energy::energy_history(&setup.scenario, r, 1000);
+        super::write_csv(out, path, |w| pounding::io::csv::write_energy(w, &h))
+            .map_err(|e| anyhow::anyhow!("--energy: {e}"))?;
+    }
+    Ok(())
 }
 
 /// Answers --list-keys and --list-presets for impact commands; `true` when it did.
@@ -90,6 +188,7 @@ pub fn run(args: &ImpactArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             pounding::io::csv::write_impact_history(w, &result)
         })?;
     }
+    write_instruments(args, &setup, preset_name, &result, out)?;
     if args.common.json {
         let report = ImpactReport::new(&setup, preset_name, &result, estimate.as_ref());
         writeln!(out, "{}", serde_json::to_string_pretty(&report)?)?;

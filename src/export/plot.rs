@@ -45,7 +45,7 @@ pub enum PlotError {
 
 static FONT: Once = Once::new();
 
-fn register_font() {
+pub(crate) fn register_font() {
     FONT.call_once(|| {
         // The font egui ships (Ubuntu Light, Ubuntu Font Licence), registered for plotters.
         let _ = plotters::style::register_font(

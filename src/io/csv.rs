@@ -45,3 +45,63 @@ pub fn write_building_history(
     }
     Ok(())
 }
+
+/// Writes an x-t grid: `bar,x_m,t_s,stress_pa,velocity_m_s`, bar 1 or 2, x from the bar's
+/// contact face, stress positive in tension, velocity positive to the right.
+pub fn write_xt(
+    out: &mut (impl Write + ?Sized),
+    g: &crate::model::xt::XtGrid,
+) -> std::io::Result<()> {
+    writeln!(out, "bar,x_m,t_s,stress_pa,velocity_m_s")?;
+    for (b, bar) in g.bars.iter().enumerate() {
+        let nx = bar.x_m.len();
+        for (k, t) in g.times_s.iter().enumerate() {
+            for (i, x) in bar.x_m.iter().enumerate() {
+                writeln!(
+                    out,
+                    "{},{:.9e},{:.9e},{:.9e},{:.9e}",
+                    b + 1,
+                    x,
+                    t,
+                    bar.stress_pa[k * nx + i],
+                    bar.velocity_m_s[k * nx + i]
+                )?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Writes an energy history: `time_s,rigid_kinetic_j,wave_j,contact_j,dissipated_j,total_j`,
+/// then `wave_bar1_j,wave_bar2_j` where the model keeps each bar's waves.
+pub fn write_energy(
+    out: &mut (impl Write + ?Sized),
+    h: &crate::model::impact::energy::EnergyHistory,
+) -> std::io::Result<()> {
+    let by_bar = h.wave_by_bar_j.as_ref();
+    write!(
+        out,
+        "time_s,rigid_kinetic_j,wave_j,contact_j,dissipated_j,total_j"
+    )?;
+    if by_bar.is_some() {
+        write!(out, ",wave_bar1_j,wave_bar2_j")?;
+    }
+    writeln!(out)?;
+    for k in 0..h.time_s.len() {
+        write!(
+            out,
+            "{:.12e},{:.12e},{:.12e},{:.12e},{:.12e},{:.12e}",
+            h.time_s[k],
+            h.rigid_kinetic_j[k],
+            h.wave_j[k],
+            h.contact_j[k],
+            h.dissipated_j[k],
+            h.total_j(k)
+        )?;
+        if let Some(w) = by_bar {
+            write!(out, ",{:.12e},{:.12e}", w[0][k], w[1][k])?;
+        }
+        writeln!(out)?;
+    }
+    Ok(())
+}

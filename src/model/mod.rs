@@ -14,3 +14,4 @@ pub mod motion;
 pub mod root;
 pub mod scenario;
 pub mod settings;
+pub mod xt;

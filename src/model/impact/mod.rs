@@ -282,6 +282,16 @@ pub struct ImpactResult {
 }
 
 impl ImpactResult {
+    /// The span worth showing: the impact and a round trip of the waves after it (the whole
+    /// run where that is longer) [s].
+    pub fn view_span_s(&self) -> f64 {
+        let rt = self
+            .waves
+            .as_ref()
+            .map_or(0.0, |w| w[0].round_trip_s().max(w[1].round_trip_s()));
+        (self.end_s + rt).max(self.end_s * 1.5).max(1e-6)
+    }
+
     /// Start of the second contact, if the bars touched again within the simulated span.
     pub fn recontact_s(&self) -> Option<f64> {
         self.contacts.get(1).map(|c| c.start_s)
