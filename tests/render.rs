@@ -10,7 +10,7 @@ use eframe::egui_wgpu::wgpu;
 use pounding::io::preset::load_for;
 use pounding::io::settings::ImpactSetup;
 use pounding::model::impact::solve;
-use pounding::render::bars::{BarsLayout, BarsResources, GpuHistory, diverging};
+use pounding::render::bars::{BarsLayout, FieldResources, GpuHistory, View, diverging};
 use std::path::Path;
 
 mod common;
@@ -39,8 +39,15 @@ fn render(t: f64) -> Option<(Vec<u8>, BarsLayout, ImpactSetup)> {
     let waves = result.waves.as_ref().expect("Sears gives a wave field");
     let history = GpuHistory::from_waves(waves);
     let layout = BarsLayout::new(waves, setup.scenario.approach_velocity_m_s(), &history);
-    let mut bars = BarsResources::new(&device, FORMAT);
-    bars.upload(&device, &queue, &layout.uniforms(t), &layout.bars, &history);
+    let mut bars = FieldResources::new(&device, FORMAT);
+    bars.upload(
+        &device,
+        &queue,
+        0,
+        &layout.uniforms(t),
+        &layout.bars,
+        &history,
+    );
 
     let texture = device.create_texture(&wgpu::TextureDescriptor {
         label: Some("offscreen"),
@@ -86,7 +93,7 @@ fn render(t: f64) -> Option<(Vec<u8>, BarsLayout, ImpactSetup)> {
             occlusion_query_set: None,
             multiview_mask: None,
         });
-        bars.draw(&mut pass, 2);
+        bars.draw(&mut pass, 0, View::Bars, 2);
     }
     // W * 4 is a multiple of 256, so rows need no padding.
     encoder.copy_texture_to_buffer(

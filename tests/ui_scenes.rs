@@ -127,3 +127,41 @@ fn each_scene_draws_its_own_stress_field_after_edits_in_both_and_tab_switches() 
         );
     }
 }
+
+#[test]
+fn a_click_in_the_space_time_diagram_moves_the_animation_time_there() {
+    if common::adapter_or_skip().is_none() {
+        return;
+    }
+    let mut h = window(SceneKind::BarImpact);
+    assert_eq!(h.state().animation_time(), 0.0);
+    let diagram = h.get_by_label("x-t diagram").rect();
+    // A point 3/4 of the way up the plotting area (18 points of title above it, 16 of axis
+    // below): time runs upward from 0 to the span shown.
+    let (top, bottom) = (diagram.top() + 18.0, diagram.bottom() - 16.0);
+    let y = bottom - 0.75 * (bottom - top);
+    let at = egui::pos2(diagram.center().x, y);
+    h.hover_at(at);
+    h.run_steps(1);
+    h.event(egui::Event::PointerButton {
+        pos: at,
+        button: egui::PointerButton::Primary,
+        pressed: true,
+        modifiers: Default::default(),
+    });
+    h.run_steps(1);
+    h.event(egui::Event::PointerButton {
+        pos: at,
+        button: egui::PointerButton::Primary,
+        pressed: false,
+        modifiers: Default::default(),
+    });
+    h.run_steps(2);
+    let t = h.state().animation_time();
+    // The base case's span: the first separation (1.034 ms) and a round trip of bar 2 (0.773 ms).
+    let span = 1.034e-3 + 2.0 * 2.0 / 5172.2;
+    assert!(
+        (t - 0.75 * span).abs() < 0.02 * span,
+        "time {t:e} s after a click at 3/4 of the span {span:e} s"
+    );
+}

@@ -2,17 +2,22 @@
 //! with all its readouts, or through the Sears model and its peers overlaid.
 
 use super::bar_view::{self, Solved};
+use super::energy_view;
+use super::export::XtExport;
 use super::export::{Exporter, ShownPlot};
 use super::impact_params;
 use super::params::Fields;
 use super::playback::Playback;
 use super::worker::{Worker, internal_error};
+use super::xt_view::{XtDiagram, XtOptions, XtSource};
 use crate::io::preset;
 use crate::io::settings::ImpactSetup;
 use crate::model::control::Control;
 use crate::model::impact::estimate::{ErrorEstimate, estimate_error_with};
 use crate::model::impact::{ImpactResult, ModelKind, SolveError, solve_with};
 use crate::model::scenario::Reading;
+use crate::model::xt::XtField;
+use crate::render::bars::XtShown;
 use eframe::egui::{self, Color32};
 use egui_plot::{Legend, Line, Plot, VLine};
 use std::time::Duration;
@@ -38,7 +43,12 @@ pub struct BarScene {
     pub fields: Fields,
     worker: Worker<Job, Output>,
     solved: Option<Solved>,
-    peers: Vec<(ModelKind, ImpactResult)>,
+    /// Every model's run (the comparison), or the one model's.
+    peers: Vec<(ModelKind, Solved)>,
+    /// What the x-t diagrams show.
+    pub xt: XtOptions,
+    /// The model whose energy the comparison plots.
+    energy_model: ModelKind,
     estimate: Option<ErrorEstimate>,
     shown: [bool; 5],
     pub playback: Playback,
@@ -49,6 +59,7 @@ pub struct BarScene {
     pub view_rect: Option<egui::Rect>,
     shown_force: ShownPlot,
     shown_approach: ShownPlot,
+    shown_energy: ShownPlot,
 }
 
 fn run_job((setup, compare): Job, control: &Control) -> Output {
@@ -86,6 +97,8 @@ impl BarScene {
             worker: Worker::new(run_job, move || waker.request_repaint()),
             solved: None,
             peers: vec![],
+            xt: XtOptions::default(),
+            energy_model: ModelKind::Sears,
             estimate: None,
             shown: [true; 5],
             playback: Playback::default(),
@@ -95,6 +108,7 @@ impl BarScene {
             view_rect: None,
             shown_force: ShownPlot::default(),
             shown_approach: ShownPlot::default(),
+            shown_energy: ShownPlot::default(),
         };
         s.request();
         s
@@ -138,13 +152,13 @@ impl BarScene {
                     } else {
                         true
                     };
+                    let solved = Solved::new(self.setup, r);
                     if lead {
-                        let solved = Solved::new(self.setup, r.clone());
                         self.playback.t_max = solved.span_s();
                         self.playback.t = self.playback.t.min(self.playback.t_max);
-                        self.solved = Some(solved);
+                        self.solved = Some(Solved::new(self.setup, solved.result.clone()));
                     }
-                    self.peers.push((model, r));
+                    self.peers.push((model, solved));
                 }
                 // The last result stays on screen; the error says why this one failed.
                 Err(e) => self.error = Some(format!("{}: {e}", model.name())),
@@ -190,6 +204,7 @@ impl BarScene {
             if !self.compare {
                 plots.push(("approach", &self.shown_approach));
             }
+            plots.push(("energy", &self.shown_energy));
         }
         plots
     }
@@ -208,19 +223,29 @@ impl BarScene {
             egui::vec2(ui.available_width(), height),
             egui::Sense::hover(),
         );
-        bar_view::draw(ui, rect, solved, t);
+        let slot = if self.compare {
+            super::slots::COMPARE_VIEW
+        } else {
+            super::slots::BAR_VIEW
+        };
+        bar_view::draw(ui, rect, slot, solved, t);
         self.view_rect = Some(rect);
         if self.compare {
             let lumped = self
                 .peers
                 .iter()
                 .find(|(m, _)| *m == ModelKind::LumpedHertz)
-                .map(|(_, r)| r);
+                .map(|(_, s)| &s.result);
             let (rect, _) = ui
                 .allocate_exact_size(egui::vec2(ui.available_width(), 70.0), egui::Sense::hover());
             if let Some(r) = lumped {
                 draw_lumped(ui, rect, r, t);
             }
+        }
+        let clicked = self.xt_ui(ui, exporter);
+        if let Some(t) = clicked {
+            self.playback.t = t;
+            self.playback.playing = false;
         }
         if self.playback.ui(ui) {
             self.playback.playing = true;
@@ -243,6 +268,83 @@ impl BarScene {
         }
     }
 
+    /// The x-t diagrams: the run's (Bar impact), or Sears, wave theory and the lumped Hertz
+    /// bodies' uniform stress side by side on the same scales (Wave vs lumped). Returns a time
+    /// set by a click in one.
+    fn xt_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) -> Option<f64> {
+        let solved = self.solved.as_ref()?;
+        let t = self.playback.t;
+        let span = solved.span_s();
+        self.xt.ui(ui);
+        let shown: Vec<(ModelKind, &Solved)> = if self.compare {
+            [ModelKind::Sears, ModelKind::Wave, ModelKind::LumpedHertz]
+                .iter()
+                .filter_map(|m| self.peers.iter().find(|(p, _)| p == m))
+                .map(|(m, s)| (*m, s))
+                .collect()
+        } else {
+            vec![(self.setup.model, solved)]
+        };
+        let mut clicked = None;
+        let titles: Vec<String> = shown
+            .iter()
+            .map(|(m, s)| {
+                if s.result.waves.is_some() {
+                    format!("{}: space-time", m.name())
+                } else {
+                    format!("{}: uniform stress F/A", m.name())
+                }
+            })
+            .collect();
+        let diagram = |k: usize| {
+            let (_, s) = shown[k];
+            XtDiagram {
+                source: XtSource::Impact {
+                    sc: &s.setup.scenario,
+                    result: &s.result,
+                },
+                gpu: &s.gpu,
+                t_start: 0.0,
+                t_span: span,
+                title: &titles[k],
+                zones_m: s.zones_m(),
+            }
+        };
+        let options = self.xt;
+        if self.compare {
+            ui.columns(shown.len().max(1), |cols| {
+                for (k, col) in cols.iter_mut().enumerate().take(shown.len()) {
+                    let slot = super::slots::COMPARE_XT + k as u64;
+                    if let Some(t) = diagram(k).show(col, slot, 230.0, t, &options) {
+                        clicked = Some(t);
+                    }
+                }
+            });
+        } else if let Some(t) = diagram(0).show(ui, super::slots::BAR_XT, 250.0, t, &options) {
+            clicked = Some(t);
+        }
+        if !self.compare {
+            let sc = &solved.setup.scenario;
+            exporter.xt_buttons(
+                ui,
+                &XtExport {
+                    result: &solved.result,
+                    areas_m2: [sc.bar1.area_m2(), sc.bar2.area_m2()],
+                    lengths_m: [sc.bar1.length_m, sc.bar2.length_m],
+                    t_end: span,
+                    field: match options.field {
+                        XtShown::Stress => XtField::Stress,
+                        XtShown::Velocity => XtField::Velocity,
+                    },
+                    zones_m: solved.zones_m(),
+                    title: titles[0].clone(),
+                },
+                "xt",
+            );
+        }
+        clicked
+    }
+
     fn plots_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
         let t_ms = self.playback.t * 1e3;
         let h = ((ui.available_height() - 160.0) / 2.0).clamp(120.0, 260.0);
@@ -252,7 +354,8 @@ impl BarScene {
             super::series::decimate(&t, &y, 1.0)
         };
         let mut force_lines = vec![];
-        for (i, (m, r)) in self.peers.iter().enumerate() {
+        for (i, (m, s)) in self.peers.iter().enumerate() {
+            let r = &s.result;
             let k = COMPARED.iter().position(|c| c == m).unwrap_or(i);
             if !self.compare || self.shown[k] {
                 force_lines.push((m.name().to_string(), series(r, &|j| r.force_n[j] * 1e-3)));
@@ -308,6 +411,36 @@ impl BarScene {
                 bounds: Some((b.min(), b.max())),
             };
             exporter.buttons(ui, &self.shown_approach, "approach");
+        }
+        // Where the energy goes: the run's, or the chosen model's in the comparison.
+        if self.compare {
+            ui.horizontal(|ui| {
+                ui.label("energy of");
+                egui::ComboBox::from_id_salt("energy-model")
+                    .selected_text(self.energy_model.name())
+                    .show_ui(ui, |ui| {
+                        for (m, _) in &self.peers {
+                            ui.selectable_value(&mut self.energy_model, *m, m.name());
+                        }
+                    });
+            });
+        }
+        let model = if self.compare {
+            self.energy_model
+        } else {
+            self.setup.model
+        };
+        if let Some((_, s)) = self.peers.iter().find(|(m, _)| *m == model) {
+            self.shown_energy = energy_view::draw(
+                ui,
+                "energy",
+                &s.setup.scenario,
+                &s.result,
+                h,
+                t_ms,
+                format!("Energy: {}", model.name()),
+            );
+            exporter.buttons(ui, &self.shown_energy, "energy");
         }
     }
 }
@@ -443,7 +576,7 @@ fn readouts_ui(
     }
 }
 
-fn compare_table(ui: &mut egui::Ui, peers: &[(ModelKind, ImpactResult)]) {
+fn compare_table(ui: &mut egui::Ui, peers: &[(ModelKind, Solved)]) {
     egui::Grid::new("compare")
         .num_columns(5)
         .striped(true)
@@ -453,7 +586,8 @@ fn compare_table(ui: &mut egui::Ui, peers: &[(ModelKind, ImpactResult)]) {
                 ui.strong(h);
             }
             ui.end_row();
-            for (m, r) in peers {
+            for (m, s) in peers {
+                let r = &s.result;
                 ui.label(m.name());
                 ui.label(r.peak_force_n.map_or("-".into(), |p| format!("{p:.4e}")));
                 ui.label(format!("{:.4}", r.contact_duration_s * 1e3));

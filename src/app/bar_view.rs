@@ -4,7 +4,7 @@
 use crate::io::settings::ImpactSetup;
 use crate::model::impact::ImpactResult;
 use crate::model::scenario::Reading;
-use crate::render::bars::{BarsLayout, GpuHistory, Viewport};
+use crate::render::bars::{BarsLayout, GpuHistory, View, Viewport};
 use eframe::egui::{self, Color32, Pos2, Rect, Stroke};
 use std::sync::Arc;
 
@@ -19,13 +19,11 @@ pub struct Solved {
 
 impl Solved {
     pub fn new(setup: ImpactSetup, result: ImpactResult) -> Self {
-        let gpu = Arc::new(
-            result
-                .waves
-                .as_ref()
-                .map(GpuHistory::from_waves)
-                .unwrap_or_default(),
-        );
+        // The waves, or for a lumped model its force and impulse (its uniform-stress picture).
+        let gpu = Arc::new(match result.waves.as_ref() {
+            Some(w) => GpuHistory::from_waves(w),
+            None => GpuHistory::uniform(&result, 2000, result.view_span_s()),
+        });
         let mut impulse_ns = Vec::with_capacity(result.time_s.len());
         let mut j = 0.0;
         for i in 0..result.time_s.len() {
@@ -58,18 +56,21 @@ impl Solved {
 
     /// The time span worth animating: the impact and a round trip of the waves after it.
     pub fn span_s(&self) -> f64 {
-        let r = &self.result;
-        let rt = r
-            .waves
-            .as_ref()
-            .map_or(0.0, |w| w[0].round_trip_s().max(w[1].round_trip_s()));
-        (r.end_s + rt).max(r.end_s * 1.5).max(1e-6)
+        self.result.view_span_s()
+    }
+
+    /// The zones d to mark: the Sears model's, in the readings that have them.
+    pub fn zones_m(&self) -> Option<[f64; 2]> {
+        self.result
+            .sears
+            .filter(|s| s.reading != Reading::End)
+            .map(|s| s.zone_lengths_m)
     }
 }
 
 /// Draws the bars at animation time `t` into `rect`; `lumped` adds a pair of rigid blocks and a
 /// spring below (the lumped-mass reading of the same impact), given its approach history.
-pub fn draw(ui: &mut egui::Ui, rect: Rect, solved: &Solved, t: f64) {
+pub fn draw(ui: &mut egui::Ui, rect: Rect, slot: u64, solved: &Solved, t: f64) {
     let setup = &solved.setup;
     let r = &solved.result;
     let Some(waves) = r.waves.as_ref() else {
@@ -93,8 +94,10 @@ pub fn draw(ui: &mut egui::Ui, rect: Rect, solved: &Solved, t: f64) {
         bottom: layout.bottom,
         top: layout.top,
     };
-    vp.paint_bars(
+    vp.paint(
         ui,
+        slot,
+        View::Bars,
         layout.uniforms(t),
         layout.bars.to_vec(),
         solved.gpu.clone(),

@@ -10,6 +10,7 @@ use super::params::Fields;
 use super::playback::Playback;
 use super::series::decimate;
 use super::worker::{Worker, internal_error};
+use super::xt_view::{XtDiagram, XtOptions, XtSource};
 use crate::io::building_settings::BuildingSetup;
 use crate::model::building::gaps::{GapAssessment, assess};
 use crate::model::building::{
@@ -17,10 +18,13 @@ use crate::model::building::{
     solve_with,
 };
 use crate::model::control::Control;
+use crate::model::field::BarWaves;
 use crate::model::impact::SolveError;
 use crate::model::motion::{G, GroundMotion};
+use crate::render::bars::GpuHistory;
 use eframe::egui::{self, Color32};
 use egui_plot::{Legend, Line, Plot, PlotBounds, VLine};
+use std::sync::Arc;
 use std::time::Duration;
 
 /// A landed solve: the drawing (setup, record, run), the run without contact, the estimate.
@@ -41,6 +45,10 @@ type Output = Result<
     String,
 >;
 
+/// The slabs an x-t diagram shows: the run (its history id) and level they belong to, their
+/// waves, and those on the GPU.
+type SlabsShown = (u64, usize, Box<[BarWaves; 2]>, Arc<GpuHistory>);
+
 pub struct BuildingScene {
     pub setup: BuildingSetup,
     fields: Fields,
@@ -59,6 +67,13 @@ pub struct BuildingScene {
     pub view_rect: Option<egui::Rect>,
     shown_displacements: ShownPlot,
     shown_force: ShownPlot,
+    /// The impact whose slabs the x-t diagram shows (`None`: the strongest).
+    selected: Option<usize>,
+    /// What the x-t diagram shows.
+    xt: XtOptions,
+    /// The slabs of the level shown, and their histories on the GPU, kept while the result and
+    /// the level stay.
+    xt_slabs: Option<SlabsShown>,
 }
 
 /// What the scene says when its solve was cancelled.
@@ -108,6 +123,9 @@ impl BuildingScene {
             exaggeration: 20.0,
             zoom: None,
             level: None,
+            selected: None,
+            xt: XtOptions::default(),
+            xt_slabs: None,
             solve_time: Duration::ZERO,
             latency: Duration::ZERO,
             error: None,
@@ -154,6 +172,8 @@ impl BuildingScene {
                 if self.level.is_some_and(|l| l >= result.levels.len()) {
                     self.level = None;
                 }
+                // A new run has its own impacts: the diagram goes back to the strongest.
+                self.selected = None;
                 self.solved = Some(Solved {
                     gaps: assess(&baseline),
                     drawing: BuildingDrawing::new(self.setup.clone(), motion, result),
@@ -276,8 +296,75 @@ impl BuildingScene {
         }
         gap_ui(ui, &s.gaps, d.setup.scenario.gap_m, r.levels.len());
         self.plots_ui(ui, exporter);
+        self.slabs_xt_ui(ui);
         for w in &self.solved.as_ref().expect("shown").drawing.result.warnings {
             ui.colored_label(Color32::from_rgb(220, 140, 40), format!("warning: {w}"));
+        }
+    }
+
+    /// The x-t diagram of the two slabs at the level of the selected impact (the strongest
+    /// until one is picked), over that impact and a little either side.
+    fn slabs_xt_ui(&mut self, ui: &mut egui::Ui) {
+        let Some(s) = &self.solved else { return };
+        let r = &s.drawing.result;
+        let strongest = (0..r.impacts.len()).max_by(|&a, &b| {
+            r.impacts[a]
+                .peak_force_n
+                .total_cmp(&r.impacts[b].peak_force_n)
+        });
+        let Some(i) = self.selected.filter(|&i| i < r.impacts.len()).or(strongest) else {
+            return;
+        };
+        let e = &r.impacts[i];
+        let Some([Some(left), Some(right)]) = r.slab_waves.get(e.level) else {
+            ui.label(format!(
+                "impact {}: a floor meets a column at this level, so there is no pair of slabs to draw",
+                i + 1
+            ));
+            return;
+        };
+        let key = s.drawing.history_id();
+        if !matches!(&self.xt_slabs, Some((k, l, _, _)) if *k == key && *l == e.level) {
+            let waves = Box::new([left.clone(), right.clone()]);
+            let gpu = Arc::new(GpuHistory::from_waves(&waves));
+            self.xt_slabs = Some((key, e.level, waves, gpu));
+        }
+        let Some((_, _, waves, gpu)) = &self.xt_slabs else {
+            return;
+        };
+        // A slab round trip either side at least: the waves arriving and ringing on.
+        let trip = waves[0].round_trip_s().max(waves[1].round_trip_s());
+        let margin = (0.5 * e.duration_s()).max(trip);
+        let (t_start, t_end) = ((e.start_s - margin).max(0.0), e.end_s + margin);
+        self.xt.ui(ui);
+        let title = format!(
+            "slabs at level {} over impact {} ({:.4} s, {:.3e} N): space-time",
+            e.level + 1,
+            i + 1,
+            e.start_s,
+            e.peak_force_n
+        );
+        let clicked = XtDiagram {
+            source: XtSource::Slabs {
+                waves,
+                approach_m_s: e.approach_velocity_m_s,
+            },
+            gpu,
+            t_start,
+            t_span: t_end - t_start,
+            title: &title,
+            zones_m: None,
+        }
+        .show(
+            ui,
+            super::slots::BUILDING_XT,
+            260.0,
+            self.playback.t,
+            &self.xt,
+        );
+        if let Some(t) = clicked {
+            self.playback.t = t;
+            self.playback.playing = false;
         }
     }
 
@@ -406,39 +493,46 @@ impl BuildingScene {
                     .total_cmp(&(r.impacts[b].start_s - at).abs())
             });
         }
-        egui::Grid::new("impacts")
-            .striped(true)
-            .num_columns(8)
+        // A long list scrolls in its own box, so the slabs' diagram below stays in reach.
+        egui::ScrollArea::vertical()
+            .id_salt("impact-list")
+            .max_height(190.0)
             .show(ui, |ui| {
-                for h in [
-                    "#",
-                    "start [s]",
-                    "duration [ms]",
-                    "peak force [N]",
-                    "impulse [N s]",
-                    "approach [m/s]",
-                    "contacts",
-                    "level",
-                ] {
-                    ui.strong(h);
-                }
-                ui.end_row();
-                for &i in &shown {
-                    let e = &r.impacts[i];
-                    if ui.button(format!("{}", i + 1)).clicked() {
-                        clicked = Some(i);
-                    }
-                    ui.label(format!("{:.4}", e.start_s));
-                    ui.label(format!("{:.3}", e.duration_s() * 1e3));
-                    ui.label(format!("{:.4e}", e.peak_force_n));
-                    ui.label(format!("{:.4e}", e.impulse_ns));
-                    ui.label(format!("{:.4}", e.approach_velocity_m_s));
-                    ui.label(format!("{}", e.contacts.len()));
-                    ui.label(format!("{}", e.level + 1));
-                    ui.end_row();
-                }
+                egui::Grid::new("impacts")
+                    .striped(true)
+                    .num_columns(8)
+                    .show(ui, |ui| {
+                        for h in [
+                            "#",
+                            "start [s]",
+                            "duration [ms]",
+                            "peak force [N]",
+                            "impulse [N s]",
+                            "approach [m/s]",
+                            "contacts",
+                            "level",
+                        ] {
+                            ui.strong(h);
+                        }
+                        ui.end_row();
+                        for &i in &shown {
+                            let e = &r.impacts[i];
+                            if ui.button(format!("{}", i + 1)).clicked() {
+                                clicked = Some(i);
+                            }
+                            ui.label(format!("{:.4}", e.start_s));
+                            ui.label(format!("{:.3}", e.duration_s() * 1e3));
+                            ui.label(format!("{:.4e}", e.peak_force_n));
+                            ui.label(format!("{:.4e}", e.impulse_ns));
+                            ui.label(format!("{:.4}", e.approach_velocity_m_s));
+                            ui.label(format!("{}", e.contacts.len()));
+                            ui.label(format!("{}", e.level + 1));
+                            ui.end_row();
+                        }
+                    });
             });
         if let Some(i) = clicked {
+            self.selected = Some(i);
             let e = &r.impacts[i];
             let margin = 0.5 * e.duration_s().max(0.002);
             self.zoom = Some((e.start_s - margin, e.end_s + margin));

@@ -7,7 +7,7 @@ use crate::io::building_settings::BuildingSetup;
 use crate::model::building::{Attachment, BuildingResult, Level};
 use crate::model::field::BarWaves;
 use crate::model::motion::GroundMotion;
-use crate::render::bars::{GpuBar, GpuHistory, Viewport, uniforms};
+use crate::render::bars::{GpuBar, GpuHistory, View, Viewport, uniforms};
 use eframe::egui::{self, Color32, Pos2, Stroke};
 use std::sync::Arc;
 
@@ -37,6 +37,11 @@ fn ground_displacement(m: &GroundMotion) -> Vec<f64> {
 }
 
 impl BuildingDrawing {
+    /// Unique to this drawing's run (its GPU history's id).
+    pub fn history_id(&self) -> u64 {
+        self.gpu.id
+    }
+
     pub fn new(setup: BuildingSetup, motion: GroundMotion, result: BuildingResult) -> Self {
         let mut bars = vec![];
         let mut waves: Vec<&BarWaves> = vec![];
@@ -159,6 +164,7 @@ pub fn draw(ui: &mut egui::Ui, rect: egui::Rect, d: &BuildingDrawing, t: f64, ex
                 y_top: z as f32,
                 world_per_metre: 1.0,
                 decay_per_s: w.decay_per_s as f32,
+                ..GpuBar::of_waves(w, 1.0)
             }
         })
         .collect();
@@ -243,7 +249,14 @@ pub fn draw(ui: &mut egui::Ui, rect: egui::Rect, d: &BuildingDrawing, t: f64, ex
     if !gpu_bars.is_empty() {
         let world = [vp.left, vp.right, vp.bottom, vp.top];
         let count = gpu_bars.len() as u32;
-        vp.paint_bars(ui, uniforms(world, t, count), gpu_bars, d.gpu.clone());
+        vp.paint(
+            ui,
+            super::slots::BUILDING_VIEW,
+            View::Bars,
+            uniforms(world, t, count),
+            gpu_bars,
+            d.gpu.clone(),
+        );
     }
     // Contact points: a mark at each level on each side, red while it carries force.
     for (l, level) in r.levels.iter().enumerate() {

@@ -156,6 +156,69 @@ impl Exporter {
     }
 }
 
+/// What an x-t diagram exports: the run and how the window shows it. The grid and the image are
+/// made on the export thread, from a copy of the run taken when the button is pressed.
+pub struct XtExport<'a> {
+    pub result: &'a crate::model::impact::ImpactResult,
+    pub areas_m2: [f64; 2],
+    pub lengths_m: [f64; 2],
+    pub t_end: f64,
+    pub field: crate::model::xt::XtField,
+    pub zones_m: Option<[f64; 2]>,
+    pub title: String,
+}
+
+impl Exporter {
+    /// `png` and `csv` buttons for an x-t diagram: the image (the same colour map, axes, colour
+    /// bar) at the export size and scale, and the grid (200 x 400 points, the command line's
+    /// `bar,x_m,t_s,stress_pa,velocity_m_s` rows).
+    pub fn xt_buttons(&self, ui: &mut egui::Ui, xt: &XtExport, name: &str) {
+        ui.horizontal(|ui| {
+            ui.label(format!("export {name}:")).on_hover_text(format!(
+                "writes {}-{name}.png (the diagram) or .csv (its grid)",
+                self.prefix
+            ));
+            for ext in ["png", "csv"] {
+                if !ui.small_button(ext).clicked() {
+                    continue;
+                }
+                let path = PathBuf::from(format!("{}-{name}.{ext}", self.prefix));
+                let result = xt.result.clone();
+                let (areas, lengths, t_end, field) =
+                    (xt.areas_m2, xt.lengths_m, xt.t_end, xt.field);
+                let (zones, title) = (xt.zones_m, xt.title.clone());
+                let (size, scale) = ((self.size[0], self.size[1]), self.scale);
+                let csv = ext == "csv";
+                self.spawn(move || {
+                    let shown = path.display().to_string();
+                    let grid =
+                        crate::model::xt::XtGrid::of(&result, areas, lengths, 200, 400, t_end);
+                    let written = if csv {
+                        std::fs::File::create(&path)
+                            .and_then(|f| {
+                                let mut w = std::io::BufWriter::new(f);
+                                crate::io::csv::write_xt(&mut w, &grid)
+                            })
+                            .map_err(|e| format!("could not write {shown}: {e}"))
+                    } else {
+                        crate::export::xt::XtImage {
+                            grid: &grid,
+                            field,
+                            title,
+                            size,
+                            scale,
+                            zones_m: zones,
+                        }
+                        .write_png(&path)
+                        .map_err(|e| format!("could not write {e}"))
+                    };
+                    written.map(|()| format!("wrote {shown}"))
+                });
+            }
+        });
+    }
+}
+
 /// Encodes (a part of) a screenshot as PNG.
 fn write_png(
     image: &egui::ColorImage,

@@ -8,6 +8,7 @@ mod building_params;
 mod building_scene;
 mod building_view;
 mod dialog;
+mod energy_view;
 mod export;
 mod impact_params;
 mod launch;
@@ -19,9 +20,11 @@ mod playback;
 mod plot_view;
 mod scene;
 mod series;
+mod slots;
 mod status;
 mod study_scene;
 pub mod worker;
+mod xt_view;
 
 use crate::io::preset::{self, EMBEDDED};
 use crate::io::settings::ImpactSetup;
@@ -188,6 +191,16 @@ impl PoundingApp {
         match self.scene {
             SceneKind::WaveVsLumped => &mut self.compare,
             _ => &mut self.bar,
+        }
+    }
+
+    /// The animation time of the scene on screen [s].
+    pub fn animation_time(&self) -> f64 {
+        match self.scene {
+            SceneKind::BarImpact => self.bar.playback.t,
+            SceneKind::WaveVsLumped => self.compare.playback.t,
+            SceneKind::Buildings => self.buildings.playback.t,
+            SceneKind::Study => self.study.playback.t,
         }
     }
 

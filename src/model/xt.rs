@@ -182,7 +182,7 @@ fn spaced(a: f64, b: f64, n: usize) -> Vec<f64> {
 
 /// Linear interpolation in (t, y), the last value held after the end; at a repeated time (a
 /// jump) the later sample.
-fn interpolate(t: &[f64], y: &[f64], at: f64) -> f64 {
+pub(crate) fn interpolate(t: &[f64], y: &[f64], at: f64) -> f64 {
     if t.is_empty() {
         return 0.0;
     }

@@ -1,14 +1,19 @@
-//! The stress-wave view: two bars coloured by their axial stress, evaluated in the fragment
-//! shader (`shaders/bars.wgsl`) from each bar's wave history. The history goes to the GPU once
-//! per solve; a frame writes only the uniforms (time, layout), so the per-frame CPU cost does not
-//! depend on the history's length.
+//! The wave-field views on the GPU: the bar view (`shaders/bars.wgsl`: each bar coloured by its
+//! axial stress at one instant) and the space-time diagram (`shaders/xt.wgsl`: each bar along x,
+//! time upward), both evaluated per fragment from each bar's wave history
+//! (`shaders/field.wgsl`). The history goes to the GPU once per solve; a frame writes only the
+//! uniforms and the bars' records, so the per-frame CPU cost does not depend on the history's
+//! length. Every view on screen has a slot of its own (uniforms, bars, history), so several can
+//! be drawn in one frame.
 
 use crate::model::field::{BarWaves, History};
+use crate::model::impact::ImpactResult;
+use crate::model::scenario::ImpactScenario;
 use bytemuck::{Pod, Zeroable};
 use eframe::egui_wgpu::{self, wgpu};
 use std::sync::Arc;
 
-/// One bar as the shader sees it (WGSL `Bar`, 64 bytes, in a storage buffer: any number).
+/// One bar as the shader sees it (WGSL `Bar`, 96 bytes, in a storage buffer: any number).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
 pub struct GpuBar {
@@ -29,16 +34,57 @@ pub struct GpuBar {
     pub world_per_metre: f32,
     /// Material damping 1 / t_d [1/s] (0: elastic): arrivals attenuate as exp(-travel / t_d).
     pub decay_per_s: f32,
+    pub inv_impedance: f32,
+    /// Lab-frame velocity before the impact [m/s].
+    pub initial_velocity: f32,
+    /// +1 when the contact pushes the bar towards +x.
+    pub push_direction: f32,
+    /// 1 / the velocity that saturates the colour map [s/m].
+    pub inv_velocity_scale: f32,
+    /// 0: a d'Alembert bar; 1: a lumped body drawn as its uniform-stress equivalent.
+    pub kind: u32,
+    /// Kind 1: where its impulse history starts.
+    pub aux_offset: u32,
+    /// Kind 1: 1 / its mass [1/kg].
+    pub inv_mass: f32,
+    pub _pad: f32,
 }
 
-/// WGSL `Uniforms` (80 bytes).
+impl GpuBar {
+    /// The velocity fields of a bar's waves, with `v_scale` saturating the colour map; the
+    /// geometry, the history's place and the stress scale left for the caller.
+    pub fn of_waves(w: &BarWaves, v_scale: f64) -> Self {
+        GpuBar {
+            inv_impedance: (1.0 / w.impedance_n_s_m) as f32,
+            initial_velocity: w.initial_velocity_m_s as f32,
+            push_direction: w.push_direction as f32,
+            inv_velocity_scale: (1.0 / v_scale.max(1e-30)) as f32,
+            ..GpuBar::default()
+        }
+    }
+}
+
+/// The field a space-time diagram shows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum XtShown {
+    Stress = 0,
+    Velocity = 1,
+}
+
+/// WGSL `Uniforms` (96 bytes).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
 pub struct GpuUniforms {
     pub view: [[f32; 4]; 4],
+    /// The bar view's instant [s].
     pub time: f32,
     pub bar_count: u32,
-    pub _pad: [f32; 2],
+    /// The diagram's field: 0 stress, 1 velocity.
+    pub field: u32,
+    /// The diagram's time axis: `t_start` at a bar's y_bottom, `t_start + t_span` at y_top [s].
+    pub t_start: f32,
+    pub t_span: f32,
+    pub _pad: [f32; 3],
 }
 
 /// The wave histories of a set of bars on uniform grids, ready to upload.
@@ -68,6 +114,22 @@ impl Default for GpuHistory {
 const STEP_SAMPLES_PER_ROUND_TRIP: f64 = 400.0;
 
 impl GpuHistory {
+    /// A lumped result's force F(t) and impulse J(t) on `samples` points over [0, t_end]: both
+    /// bars read F from offset 0 and J right after it.
+    pub fn uniform(r: &ImpactResult, samples: usize, t_end: f64) -> Self {
+        let n = samples.max(2);
+        let dt = t_end.max(1e-12) / (n - 1) as f64;
+        let at = |y: &[f64], k: usize| crate::model::xt::interpolate(&r.time_s, y, k as f64 * dt);
+        let mut samples: Vec<f32> = (0..n).map(|k| at(&r.force_n, k) as f32).collect();
+        samples.extend((0..n).map(|k| at(&r.impulse_history_ns, k) as f32));
+        let entry = (0, n as u32, dt as f32, t_end as f32);
+        GpuHistory {
+            samples,
+            layout: vec![entry, entry],
+            ..GpuHistory::default()
+        }
+    }
+
     pub fn from_waves(waves: &[BarWaves; 2]) -> Self {
         Self::from_bars(waves.iter())
     }
@@ -104,21 +166,37 @@ impl GpuHistory {
     }
 }
 
-/// GPU objects of the view; they live in egui-wgpu's callback resources.
-pub struct BarsResources {
-    pipeline: wgpu::RenderPipeline,
-    layout: wgpu::BindGroupLayout,
+/// Which picture a slot draws.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum View {
+    /// The bars at one instant.
+    Bars,
+    /// The space-time diagram.
+    Xt,
+}
+
+/// One view's buffers: its uniforms, its bars and the history it draws.
+struct Slot {
     uniforms: wgpu::Buffer,
     bars: wgpu::Buffer,
     history: wgpu::Buffer,
     bind_group: wgpu::BindGroup,
-    /// The [`GpuHistory::id`] now on the GPU.
+    /// The [`GpuHistory::id`] now in `history`.
     history_id: u64,
 }
 
-/// Builds the pipeline once, at start-up, and stores it with the renderer.
+/// The pipelines of both views and a slot per view; they live in egui-wgpu's callback
+/// resources.
+pub struct FieldResources {
+    bars_pipeline: wgpu::RenderPipeline,
+    xt_pipeline: wgpu::RenderPipeline,
+    layout: wgpu::BindGroupLayout,
+    slots: std::collections::HashMap<u64, Slot>,
+}
+
+/// Builds the pipelines once, at start-up, and stores them with the renderer.
 pub fn install(render_state: &egui_wgpu::RenderState) {
-    let resources = BarsResources::new(&render_state.device, render_state.target_format);
+    let resources = FieldResources::new(&render_state.device, render_state.target_format);
     render_state
         .renderer
         .write()
@@ -126,15 +204,20 @@ pub fn install(render_state: &egui_wgpu::RenderState) {
         .insert(resources);
 }
 
-impl BarsResources {
-    /// The pipeline for a colour target of `format` (the window's, or an offscreen texture's).
+/// The shader of a view: the shared field code, then the view's fragment stage.
+fn shader_source(view: View) -> String {
+    let stage = match view {
+        View::Bars => include_str!("../../shaders/bars.wgsl"),
+        View::Xt => include_str!("../../shaders/xt.wgsl"),
+    };
+    format!("{}\n{stage}", include_str!("../../shaders/field.wgsl"))
+}
+
+impl FieldResources {
+    /// The pipelines for a colour target of `format` (the window's, or an offscreen texture's).
     pub fn new(device: &wgpu::Device, format: wgpu::TextureFormat) -> Self {
-        let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("bars"),
-            source: wgpu::ShaderSource::Wgsl(include_str!("../../shaders/bars.wgsl").into()),
-        });
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("bars"),
+            label: Some("wave field"),
             entries: &[
                 wgpu::BindGroupLayoutEntry {
                     binding: 0,
@@ -151,96 +234,115 @@ impl BarsResources {
             ],
         });
         let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("bars"),
+            label: Some("wave field"),
             bind_group_layouts: &[Some(&layout)],
             immediate_size: 0,
         });
-        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some("bars"),
-            layout: Some(&pipeline_layout),
-            vertex: wgpu::VertexState {
-                module: &shader,
-                entry_point: Some("vs_main"),
-                buffers: &[],
-                compilation_options: Default::default(),
-            },
-            fragment: Some(wgpu::FragmentState {
-                module: &shader,
-                entry_point: Some("fs_main"),
-                targets: &[Some(format.into())],
-                compilation_options: Default::default(),
-            }),
-            primitive: wgpu::PrimitiveState::default(),
-            depth_stencil: None,
-            multisample: wgpu::MultisampleState::default(),
-            multiview_mask: None,
-            cache: None,
-        });
-        let uniforms = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("bars uniforms"),
-            size: std::mem::size_of::<GpuUniforms>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
-        let history = storage_buffer(device, "bars history", 4096);
-        let bars = storage_buffer(device, "bars", 16 * std::mem::size_of::<GpuBar>());
-        let bind_group = bind(device, &layout, &uniforms, &history, &bars);
-        BarsResources {
-            pipeline,
+        let pipeline = |view: View| {
+            let label = match view {
+                View::Bars => "bars",
+                View::Xt => "x-t",
+            };
+            let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+                label: Some(label),
+                source: wgpu::ShaderSource::Wgsl(shader_source(view).into()),
+            });
+            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some(label),
+                layout: Some(&pipeline_layout),
+                vertex: wgpu::VertexState {
+                    module: &shader,
+                    entry_point: Some("vs_main"),
+                    buffers: &[],
+                    compilation_options: Default::default(),
+                },
+                fragment: Some(wgpu::FragmentState {
+                    module: &shader,
+                    entry_point: Some("fs_main"),
+                    targets: &[Some(format.into())],
+                    compilation_options: Default::default(),
+                }),
+                primitive: wgpu::PrimitiveState::default(),
+                depth_stencil: None,
+                multisample: wgpu::MultisampleState::default(),
+                multiview_mask: None,
+                cache: None,
+            })
+        };
+        FieldResources {
+            bars_pipeline: pipeline(View::Bars),
+            xt_pipeline: pipeline(View::Xt),
             layout,
-            uniforms,
-            bars,
-            history,
-            bind_group,
-            history_id: 0,
+            slots: std::collections::HashMap::new(),
         }
     }
 
-    /// Uploads a frame's uniforms and bars, and the history when it is another one.
+    /// Uploads a frame's uniforms and bars to the view's `slot`, and the history when it is
+    /// another one than the slot holds.
     pub fn upload(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
+        slot: u64,
         uniforms: &GpuUniforms,
         bars: &[GpuBar],
         history: &GpuHistory,
     ) {
+        let layout = &self.layout;
+        let s = self.slots.entry(slot).or_insert_with(|| {
+            let uniforms = device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("wave field uniforms"),
+                size: std::mem::size_of::<GpuUniforms>() as u64,
+                usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            });
+            let history = storage_buffer(device, "wave history", 4096);
+            let bars = storage_buffer(device, "bars", 16 * std::mem::size_of::<GpuBar>());
+            let bind_group = bind(device, layout, &uniforms, &history, &bars);
+            Slot {
+                uniforms,
+                bars,
+                history,
+                bind_group,
+                history_id: 0,
+            }
+        });
         let mut rebind = false;
-        if self.history_id != history.id {
+        if s.history_id != history.id {
             let bytes = history.samples.len() * 4;
-            if bytes as u64 > self.history.size() {
-                self.history = storage_buffer(device, "bars history", bytes.next_power_of_two());
+            if bytes as u64 > s.history.size() {
+                s.history = storage_buffer(device, "wave history", bytes.next_power_of_two());
                 rebind = true;
             }
             if !history.samples.is_empty() {
-                queue.write_buffer(&self.history, 0, bytemuck::cast_slice(&history.samples));
+                queue.write_buffer(&s.history, 0, bytemuck::cast_slice(&history.samples));
             }
-            self.history_id = history.id;
+            s.history_id = history.id;
         }
         let bytes = std::mem::size_of_val(bars);
-        if bytes as u64 > self.bars.size() {
-            self.bars = storage_buffer(device, "bars", bytes.next_power_of_two());
+        if bytes as u64 > s.bars.size() {
+            s.bars = storage_buffer(device, "bars", bytes.next_power_of_two());
             rebind = true;
         }
         if rebind {
-            self.bind_group = bind(
-                device,
-                &self.layout,
-                &self.uniforms,
-                &self.history,
-                &self.bars,
-            );
+            s.bind_group = bind(device, layout, &s.uniforms, &s.history, &s.bars);
         }
         if !bars.is_empty() {
-            queue.write_buffer(&self.bars, 0, bytemuck::cast_slice(bars));
+            queue.write_buffer(&s.bars, 0, bytemuck::cast_slice(bars));
         }
-        queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(uniforms));
+        queue.write_buffer(&s.uniforms, 0, bytemuck::bytes_of(uniforms));
     }
 
-    /// Draws the bars into a pass whose target has this pipeline's format.
-    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, bar_count: u32) {
-        pass.set_pipeline(&self.pipeline);
-        pass.set_bind_group(0, &self.bind_group, &[]);
+    /// Draws a slot's bars as `view` into a pass whose target has the pipelines' format.
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, slot: u64, view: View, bar_count: u32) {
+        let Some(s) = self.slots.get(&slot) else {
+            return;
+        };
+        pass.set_pipeline(match view {
+            View::Bars => &self.bars_pipeline,
+            View::Xt => &self.xt_pipeline,
+        });
+        pass.set_bind_group(0, &s.bind_group, &[]);
         pass.draw(0..6, 0..bar_count);
     }
 }
@@ -275,7 +377,7 @@ fn bind(
     bars: &wgpu::Buffer,
 ) -> wgpu::BindGroup {
     device.create_bind_group(&wgpu::BindGroupDescriptor {
-        label: Some("bars"),
+        label: Some("wave field"),
         layout,
         entries: &[
             wgpu::BindGroupEntry {
@@ -294,8 +396,11 @@ fn bind(
     })
 }
 
-/// One frame's draw: the uniforms and bars, and the history (uploaded when it is another one).
+/// One frame's draw of one view: its slot, the uniforms and bars, and the history (uploaded
+/// when it is another one than the slot holds).
 pub struct BarsCallback {
+    pub slot: u64,
+    pub view: View,
     pub uniforms: GpuUniforms,
     pub bars: Vec<GpuBar>,
     pub history: Arc<GpuHistory>,
@@ -310,8 +415,15 @@ impl egui_wgpu::CallbackTrait for BarsCallback {
         _encoder: &mut wgpu::CommandEncoder,
         resources: &mut egui_wgpu::CallbackResources,
     ) -> Vec<wgpu::CommandBuffer> {
-        if let Some(r) = resources.get_mut::<BarsResources>() {
-            r.upload(device, queue, &self.uniforms, &self.bars, &self.history);
+        if let Some(r) = resources.get_mut::<FieldResources>() {
+            r.upload(
+                device,
+                queue,
+                self.slot,
+                &self.uniforms,
+                &self.bars,
+                &self.history,
+            );
         }
         Vec::new()
     }
@@ -322,8 +434,8 @@ impl egui_wgpu::CallbackTrait for BarsCallback {
         pass: &mut wgpu::RenderPass<'static>,
         resources: &egui_wgpu::CallbackResources,
     ) {
-        if let Some(r) = resources.get::<BarsResources>() {
-            r.draw(pass, self.uniforms.bar_count);
+        if let Some(r) = resources.get::<FieldResources>() {
+            r.draw(pass, self.slot, self.view, self.uniforms.bar_count);
         }
     }
 }
@@ -363,6 +475,10 @@ impl BarsLayout {
         let extent = [lengths[0] * wpm[0], lengths[1] * wpm[1]];
         let gap = 0.006 * (extent[0] + extent[1]);
         let w = approach_m_s.abs().max(1e-12);
+        let v_scale = waves
+            .iter()
+            .map(|b| b.initial_velocity_m_s.abs())
+            .fold(w, f64::max);
         let (z1, z2) = (waves[0].impedance_n_s_m, waves[1].impedance_n_s_m);
         let wave_force = z1 * z2 / (z1 + z2) * w;
         let mut bars = [GpuBar::default(); 2];
@@ -385,6 +501,7 @@ impl BarsLayout {
                 y_top: BAR_Y.1,
                 world_per_metre: wpm[i] as f32,
                 decay_per_s: wv.decay_per_s as f32,
+                ..GpuBar::of_waves(wv, v_scale)
             };
         }
         BarsLayout {
@@ -404,6 +521,58 @@ impl BarsLayout {
     pub fn uniforms(&self, t: f64) -> GpuUniforms {
         uniforms([self.left, self.right, self.bottom, self.top], t, 2)
     }
+
+    /// A lumped result's bodies (no waves) as their uniform-stress equivalent, on the bars'
+    /// geometry and colour scale: `gpu` from [`GpuHistory::uniform`].
+    pub fn uniform(sc: &ImpactScenario, r: &ImpactResult, gpu: &GpuHistory) -> Self {
+        let bars = [sc.bar1, sc.bar2];
+        // A d'Alembert layout of the same bars gives the geometry and the colour scales.
+        let stand_in: [BarWaves; 2] = std::array::from_fn(|i| BarWaves {
+            body_length_m: bars[i].length_m,
+            zone_length_m: 0.0,
+            wave_speed_m_s: bars[i].wave_speed_m_s(),
+            area_m2: bars[i].area_m2(),
+            impedance_n_s_m: bars[i].impedance_n_s_m(),
+            initial_velocity_m_s: bars[i].velocity_m_s,
+            push_direction: if i == 0 { -1.0 } else { 1.0 },
+            history: History::Uniform {
+                dt_s: 1.0,
+                values: vec![],
+            },
+            end_s: 0.0,
+            decay_per_s: 0.0,
+        });
+        let mut layout = Self::new(&stand_in, sc.approach_velocity_m_s(), gpu);
+        for (i, b) in layout.bars.iter_mut().enumerate() {
+            let (offset, count, _, _) = gpu.layout[i];
+            b.kind = 1;
+            b.aux_offset = offset + count;
+            b.inv_mass = (1.0 / r.masses_kg[i]) as f32;
+            b.round_trip = 0.0;
+        }
+        layout
+    }
+
+    /// The same bars laid out for a space-time diagram: x as in the bar view, y from 0
+    /// (`t_start`) to 1 (`t_start + t_span`).
+    pub fn xt(&self) -> Self {
+        let mut out = *self;
+        for b in out.bars.iter_mut() {
+            b.y_bottom = 0.0;
+            b.y_top = 1.0;
+        }
+        out
+    }
+
+    /// The diagram's uniforms: the world [left, right] x [0, 1], its time axis and field.
+    pub fn xt_uniforms(&self, t_start: f64, t_span: f64, field: XtShown) -> GpuUniforms {
+        GpuUniforms {
+            field: field as u32,
+            t_start: t_start as f32,
+            t_span: t_span as f32,
+            ..uniforms([self.left, self.right, 0.0, 1.0], t_start, 2)
+        }
+    }
 }
 
 /// Uniforms for `bar_count` bars at time `t` in the world rectangle [left, right, bottom, top].
@@ -413,7 +582,10 @@ pub fn uniforms(world: [f64; 4], t: f64, bar_count: u32) -> GpuUniforms {
         view: view(left, right, bottom, top),
         time: t as f32,
         bar_count,
-        _pad: [0.0; 2],
+        field: 0,
+        t_start: 0.0,
+        t_span: 0.0,
+        _pad: [0.0; 3],
     }
 }
 
@@ -454,10 +626,12 @@ impl Viewport {
         )
     }
 
-    /// Queues the bars for the GPU.
-    pub fn paint_bars(
+    /// Queues the bars for the GPU as `view`, in the slot `slot` (one per view on screen).
+    pub fn paint(
         &self,
         ui: &eframe::egui::Ui,
+        slot: u64,
+        view: View,
         uniforms: GpuUniforms,
         bars: Vec<GpuBar>,
         history: Arc<GpuHistory>,
@@ -465,6 +639,8 @@ impl Viewport {
         ui.painter().add(egui_wgpu::Callback::new_paint_callback(
             self.rect,
             BarsCallback {
+                slot,
+                view,
                 uniforms,
                 bars,
                 history,
