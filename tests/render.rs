@@ -10,7 +10,7 @@ use eframe::egui_wgpu::wgpu;
 use pounding::io::preset::load_for;
 use pounding::io::settings::ImpactSetup;
 use pounding::model::impact::solve;
-use pounding::render::bars::{BarsLayout, FieldResources, GpuHistory, View, diverging};
+use pounding::render::bars::{BarsLayout, FieldResources, GpuHistory, View, XtShown, diverging};
 use std::path::Path;
 
 mod common;
@@ -39,21 +39,35 @@ fn render(t: f64) -> Option<(Vec<u8>, BarsLayout, ImpactSetup)> {
     let waves = result.waves.as_ref().expect("Sears gives a wave field");
     let history = GpuHistory::from_waves(waves);
     let layout = BarsLayout::new(waves, setup.scenario.approach_velocity_m_s(), &history);
-    let mut bars = FieldResources::new(&device, FORMAT);
-    bars.upload(
+    let pixels = draw_offscreen(
         &device,
         &queue,
-        0,
+        (W, H),
+        View::Bars,
         &layout.uniforms(t),
         &layout.bars,
         &history,
     );
+    Some((pixels, layout, setup))
+}
 
+/// Draws `bars` as `view` into a `size` offscreen texture cleared to CLEAR; its RGBA rows.
+fn draw_offscreen(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    (w, h): (u32, u32),
+    view_kind: View,
+    uniforms: &pounding::render::bars::GpuUniforms,
+    bars: &[pounding::render::bars::GpuBar],
+    history: &GpuHistory,
+) -> Vec<u8> {
+    let mut resources = FieldResources::new(device, FORMAT);
+    resources.upload(device, queue, 0, uniforms, bars, history);
     let texture = device.create_texture(&wgpu::TextureDescriptor {
         label: Some("offscreen"),
         size: wgpu::Extent3d {
-            width: W,
-            height: H,
+            width: w,
+            height: h,
             depth_or_array_layers: 1,
         },
         mip_level_count: 1,
@@ -66,7 +80,7 @@ fn render(t: f64) -> Option<(Vec<u8>, BarsLayout, ImpactSetup)> {
     let view = texture.create_view(&Default::default());
     let readback = device.create_buffer(&wgpu::BufferDescriptor {
         label: Some("readback"),
-        size: (W * H * 4) as u64,
+        size: (w * h * 4) as u64,
         usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
         mapped_at_creation: false,
     });
@@ -93,9 +107,10 @@ fn render(t: f64) -> Option<(Vec<u8>, BarsLayout, ImpactSetup)> {
             occlusion_query_set: None,
             multiview_mask: None,
         });
-        bars.draw(&mut pass, 0, View::Bars, 2);
+        resources.draw(&mut pass, 0, view_kind, bars.len() as u32);
     }
-    // W * 4 is a multiple of 256, so rows need no padding.
+    // w * 4 must be a multiple of 256, so rows need no padding.
+    assert_eq!(w * 4 % 256, 0);
     encoder.copy_texture_to_buffer(
         wgpu::TexelCopyTextureInfo {
             texture: &texture,
@@ -107,13 +122,13 @@ fn render(t: f64) -> Option<(Vec<u8>, BarsLayout, ImpactSetup)> {
             buffer: &readback,
             layout: wgpu::TexelCopyBufferLayout {
                 offset: 0,
-                bytes_per_row: Some(W * 4),
-                rows_per_image: Some(H),
+                bytes_per_row: Some(w * 4),
+                rows_per_image: Some(h),
             },
         },
         wgpu::Extent3d {
-            width: W,
-            height: H,
+            width: w,
+            height: h,
             depth_or_array_layers: 1,
         },
     );
@@ -123,8 +138,7 @@ fn render(t: f64) -> Option<(Vec<u8>, BarsLayout, ImpactSetup)> {
     device
         .poll(wgpu::PollType::wait_indefinitely())
         .expect("the GPU finishes");
-    let pixels = slice.get_mapped_range().expect("mapped").to_vec();
-    Some((pixels, layout, setup))
+    slice.get_mapped_range().expect("mapped").to_vec()
 }
 
 fn pixel(pixels: &[u8], px: u32, py: u32) -> [f64; 3] {
@@ -266,4 +280,123 @@ fn bars_view_matches_its_snapshot() {
 fn write_png(path: &Path, rgba: &[u8]) {
     pounding::export::plot::write_png(path, (W, H), png::ColorType::Rgba, rgba)
         .expect("PNG written");
+}
+
+#[test]
+fn gpu_space_time_diagram_matches_the_cpu_field_and_its_fronts_lie_on_x_equals_c_t() {
+    // Wave theory, 1 m on 2 m of steel: every front is a sharp line of slope 1/c.
+    let Some((device, queue, _)) = device() else {
+        return;
+    };
+    let mut sc = pounding::model::scenario::ImpactScenario::default();
+    sc.bar2.length_m = 2.0;
+    let result = solve(pounding::model::impact::ModelKind::Wave, &sc).expect("solves");
+    let waves = result.waves.as_ref().unwrap();
+    let history = GpuHistory::from_waves(waves);
+    let layout = BarsLayout::new(waves, sc.approach_velocity_m_s(), &history).xt();
+    let (w, h) = (1024u32, 512u32);
+    let span = result.view_span_s();
+    for (field, shown) in [(XtShown::Stress, "stress"), (XtShown::Velocity, "velocity")] {
+        let pixels = draw_offscreen(
+            &device,
+            &queue,
+            (w, h),
+            View::Xt,
+            &layout.xt_uniforms(0.0, span, field),
+            &layout.bars,
+            &history,
+        );
+        let at = |px: u32, py: u32| {
+            let i = ((py * w + px) * 4) as usize;
+            [0, 1, 2].map(|c| pixels[i + c] as f64 / 255.0)
+        };
+        // Pixel centres to world x and time (row 0 at the top: the latest time).
+        let x_of =
+            |px: u32| layout.left + (px as f64 + 0.5) / w as f64 * (layout.right - layout.left);
+        let t_of = |py: u32| span * (1.0 - (py as f64 + 0.5) / h as f64);
+        let c = waves[1].wave_speed_m_s;
+        let (dx, dt) = ((layout.right - layout.left) / w as f64, span / h as f64);
+        let (mut worst, mut checked) = (0.0f64, 0);
+        for py in 0..h {
+            let t = t_of(py);
+            for px in 0..w {
+                let x = x_of(px);
+                let i = if x < 0.0 { 0 } else { 1 };
+                let d = (x.abs() - layout.gap) / layout.world_per_metre[i];
+                let wv = &waves[i];
+                if d < dx || d > wv.length_m() - dx {
+                    continue;
+                }
+                // Away from the fronts by two pixels: in x (dx) and in time (dt, at speed c).
+                let margin = 2.0 * (dx / layout.world_per_metre[i] + c * dt);
+                let trip = wv.round_trip_s();
+                let near_front = (0..8).any(|m| {
+                    let s = t - m as f64 * 2.0 * 1.0 / c;
+                    [s * c, 2.0 * wv.length_m() - s * c, s * c - trip * c]
+                        .iter()
+                        .any(|f| (f - d).abs() < margin)
+                }) || (0..8).any(|m| {
+                    // Bar 2's fronts: the pulse's head and tail, out and back.
+                    let s = t - m as f64 * trip;
+                    let t1 = 2.0 / c;
+                    [
+                        s * c,
+                        (s - t1) * c,
+                        2.0 * wv.length_m() - s * c,
+                        2.0 * wv.length_m() - (s - t1) * c,
+                    ]
+                    .iter()
+                    .any(|f| (f - d).abs() < margin)
+                });
+                if near_front {
+                    continue;
+                }
+                let v = match field {
+                    XtShown::Stress => wv.stress_pa(d, t) * layout.bars[i].inv_stress_scale as f64,
+                    XtShown::Velocity => {
+                        wv.velocity_m_s(d, t) * layout.bars[i].inv_velocity_scale as f64
+                    }
+                };
+                let want = diverging(v as f32).map(|c| c as f64);
+                let got = at(px, py);
+                worst = worst.max((0..3).map(|k| (got[k] - want[k]).abs()).fold(0.0, f64::max));
+                checked += 1;
+            }
+        }
+        eprintln!(
+            "x-t {shown}: {checked} pixels against the CPU field, worst channel error {worst:.4}"
+        );
+        assert!(
+            checked > (w * h) as usize / 3,
+            "{shown}: only {checked} pixels checked"
+        );
+        assert!(worst < 3.0 / 255.0, "{shown}: worst channel error {worst}");
+        if field == XtShown::Stress {
+            // Bar 2's first front, row by row before it reaches the far end: the first column
+            // from the contact that is stress-free lies within one pixel of x = c t.
+            let neutral = diverging(0.0).map(|c| c as f64);
+            let mut rows = 0;
+            for py in 0..h {
+                let t = t_of(py);
+                if !(0.05 * 2.0 / c..0.9 * 2.0 / c).contains(&t) {
+                    continue;
+                }
+                let front_x = layout.gap + c * t * layout.world_per_metre[1];
+                let first_free = (0..w)
+                    .filter(|&px| x_of(px) > layout.gap + dx)
+                    .find(|&px| {
+                        let p = at(px, py);
+                        (0..3).all(|k| (p[k] - neutral[k]).abs() < 3.0 / 255.0)
+                    })
+                    .expect("a stress-free pixel ahead of the front");
+                assert!(
+                    (x_of(first_free) - front_x).abs() <= 1.0 * dx + 1e-12,
+                    "row {py} (t = {t:e} s): front at {} against c t at {front_x}",
+                    x_of(first_free)
+                );
+                rows += 1;
+            }
+            assert!(rows > 100, "only {rows} rows checked");
+        }
+    }
 }
