@@ -15,6 +15,11 @@ mod common;
 const MAX_FAILED_PIXELS: usize = 100;
 
 fn snapshot(scene: SceneKind, time_s: f64, name: &str) {
+    snapshot_sized(scene, time_s, name, 860.0);
+}
+
+/// A window `height` points high: tall enough to reach a scene's lower parts.
+fn snapshot_sized(scene: SceneKind, time_s: f64, name: &str, height: f32) {
     if common::adapter_or_skip().is_none() {
         return;
     }
@@ -26,7 +31,7 @@ fn snapshot(scene: SceneKind, time_s: f64, name: &str) {
         ..Default::default()
     };
     let mut harness = Harness::builder()
-        .with_size(egui::vec2(1280.0, 860.0))
+        .with_size(egui::vec2(1280.0, height))
         .wgpu()
         .build_eframe(|cc| PoundingApp::new(cc, launch));
     // Solves run on worker threads: step until all of them have landed and stayed so.
@@ -55,4 +60,10 @@ fn building_scene_matches_its_snapshot() {
 #[test]
 fn parameter_study_scene_matches_its_snapshot() {
     snapshot(SceneKind::Study, 0.0, "scene-parameter-study");
+}
+
+#[test]
+fn building_scene_down_to_the_slabs_space_time_diagram_matches_its_snapshot() {
+    // Tall enough for the impact list and the x-t diagram of the strongest impact's slabs.
+    snapshot_sized(SceneKind::Buildings, 2.6537, "scene-buildings-xt", 1500.0);
 }
