@@ -750,3 +750,75 @@ fn xt_and_energy_exports_write_their_documented_columns_and_refuse_bad_requests(
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn gaps_reports_each_record_in_table_csv_json_and_plot_and_refuses_bad_records_by_name() {
+    let dir = std::env::temp_dir().join(format!("pounding-gaps-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (csv, plot) = (dir.join("gaps.csv"), dir.join("gaps.png"));
+    let o = pounding(&[
+        "gaps",
+        "--preset",
+        "mdof-3-5",
+        "--motion",
+        "elcentro-1940",
+        "--motion",
+        "synthetic:3",
+        "--csv",
+        csv.to_str().unwrap(),
+        "--plot",
+        plot.to_str().unwrap(),
+        "--quiet",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stdout(&o).contains("mean ratio to the minimum gap"),
+        "{}",
+        stdout(&o)
+    );
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next(),
+        Some("record,duration_s,pga_g,min_gap_m,level,abs_m,abs_ratio,srss_m,srss_ratio,error")
+    );
+    let rows: Vec<&str> = lines.collect();
+    assert_eq!(rows.len(), 2, "{text}");
+    // ABS adds the peaks, so it is never below the minimum gap.
+    for row in &rows {
+        let cells: Vec<&str> = row.rsplitn(7, ',').collect();
+        let abs_ratio: f64 = cells[3].parse().unwrap();
+        assert!(abs_ratio >= 1.0, "{row}");
+    }
+    assert!(common::read_png(&plot).0 > 0);
+    let v = json(&["gaps", "--preset", "paper-buildings", "--quiet"]);
+    let r = &v["records"][0];
+    // The paper's pair on El Centro: 62.46 mm, ABS 1.28 times it, SRSS 0.98.
+    assert!(
+        (r["min_gap_m"].as_f64().unwrap() - 0.06246).abs() < 1e-4,
+        "{v}"
+    );
+    assert!(r["abs_ratio"].as_f64().unwrap() > 1.0 && r["srss_ratio"].as_f64().unwrap() < 1.0);
+    for (args, want) in [
+        (
+            vec!["gaps", "--motion", "/no/such/record.AT2"],
+            "record.AT2",
+        ),
+        (
+            vec!["gaps", "--motion-dir", "/no/such/folder"],
+            "/no/such/folder",
+        ),
+        (vec!["gaps", "--set", "left.storeys=0"], "left.storeys"),
+        (vec!["gaps", "--preset", "paper-base"], "paper-base"),
+    ] {
+        let o = pounding(&args);
+        let err = stderr(&o);
+        assert!(!err.contains("panicked"), "{args:?}: {err}");
+        // A record that cannot be read fails its row or the run, naming it.
+        assert!(
+            err.contains(want) || stdout(&o).contains(want),
+            "{args:?}: {err}"
+        );
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
