@@ -81,28 +81,9 @@ impl XtGrid {
         t_end: f64,
     ) -> Self {
         let times_s = spaced(t_start, t_end, nt);
-        let bars = std::array::from_fn(|b| {
-            let w = &waves[b];
-            let x_m = spaced(0.0, w.length_m(), nx);
-            let mut stress_pa = Vec::with_capacity(nx * nt);
-            let mut velocity_m_s = Vec::with_capacity(nx * nt);
-            for &t in &times_s {
-                for &x in &x_m {
-                    stress_pa.push(w.stress_pa(x, t));
-                    velocity_m_s.push(w.velocity_m_s(x, t));
-                }
-            }
-            XtBar {
-                x_m,
-                stress_pa,
-                velocity_m_s,
-            }
-        });
-        XtGrid {
-            times_s,
-            bars,
-            uniform: false,
-        }
+        Self::sampled(times_s, waves.each_ref().map(|w| w.length_m()), nx, false, |b, x, t| {
+            (waves[b].stress_pa(x, t), waves[b].velocity_m_s(x, t))
+        })
     }
 
     /// The uniform-stress equivalent of a result without waves: -F(t) / A_i across bar i, and
@@ -118,16 +99,34 @@ impl XtGrid {
         let times_s = spaced(0.0, t_end, nt);
         let [m1, m2] = r.masses_kg;
         let [v1, v2] = r.initial_velocities_m_s;
+        Self::sampled(times_s, lengths_m, nx, true, |b, _, t| {
+            let f = interpolate(&r.time_s, &r.force_n, t);
+            let j = interpolate(&r.time_s, &r.impulse_history_ns, t);
+            let v = if b == 0 { v1 - j / m1 } else { v2 + j / m2 };
+            (-f / areas_m2[b], v)
+        })
+    }
+
+    /// The grid of `nx` positions along each bar (ends included) at `times_s`, each point's
+    /// (stress, velocity) from `at(bar, x, t)`.
+    fn sampled(
+        times_s: Vec<f64>,
+        lengths_m: [f64; 2],
+        nx: usize,
+        uniform: bool,
+        at: impl Fn(usize, f64, f64) -> (f64, f64),
+    ) -> Self {
+        let nt = times_s.len();
         let bars = std::array::from_fn(|b| {
             let x_m = spaced(0.0, lengths_m[b], nx);
             let mut stress_pa = Vec::with_capacity(nx * nt);
             let mut velocity_m_s = Vec::with_capacity(nx * nt);
             for &t in &times_s {
-                let f = interpolate(&r.time_s, &r.force_n, t);
-                let j = interpolate(&r.time_s, &r.impulse_history_ns, t);
-                let v = if b == 0 { v1 - j / m1 } else { v2 + j / m2 };
-                stress_pa.extend(std::iter::repeat_n(-f / areas_m2[b], nx));
-                velocity_m_s.extend(std::iter::repeat_n(v, nx));
+                for &x in &x_m {
+                    let (s, v) = at(b, x, t);
+                    stress_pa.push(s);
+                    velocity_m_s.push(v);
+                }
             }
             XtBar {
                 x_m,
@@ -138,7 +137,7 @@ impl XtGrid {
         XtGrid {
             times_s,
             bars,
-            uniform: true,
+            uniform,
         }
     }
 
