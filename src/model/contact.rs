@@ -153,6 +153,22 @@ impl ContactLaw {
         }
     }
 
+    /// For the Hertz law, the start of [`ContactLaw::solve_implicit_sqrt`]'s equation
+    /// `bk s^3 + s^2 = rhs` (bk = beta k) at a close guess `delta0 > 0` of the overlap, before
+    /// rhs is known: see [`SqrtStep`]. Only `G'(s0)`'s last term waits on the square root.
+    #[inline]
+    pub fn sqrt_step(&self, beta: f64, delta0: f64) -> SqrtStep {
+        let bk = beta * self.stiffness;
+        let s0 = delta0.sqrt();
+        let inv = 1.0 / (3.0 * bk * delta0 + 2.0 * s0);
+        SqrtStep {
+            s0,
+            g0: delta0 * (bk * s0 + 1.0),
+            inv,
+            curve: (3.0 * bk * s0 + 1.0) * inv,
+        }
+    }
+
     /// For the Hertz law: sqrt of the root of `delta + beta f(delta) = rhs`, from a guess `s0`
     /// of it (negative: none). With s = sqrt(delta) the equation is the cubic
     /// `bk s^3 + s^2 = rhs`: convex and increasing for s >= 0, so Newton from any start lands at
@@ -194,6 +210,32 @@ impl ContactLaw {
             }
         }
         s
+    }
+}
+
+/// The root of `G(s) = bk s^3 + s^2 = rhs` as a Taylor series in rhs about a guess s0, to second
+/// order: with u = (rhs - G(s0)) / G'(s0), s = s0 + u - (G''(s0) / 2 G'(s0)) u^2 + O(u^3).
+/// Everything but rhs is known before rhs is, so in a stepping loop a few multiply-adds wait on
+/// rhs and no division does.
+#[derive(Debug, Clone, Copy)]
+pub struct SqrtStep {
+    /// The guess.
+    pub s0: f64,
+    /// G(s0).
+    pub g0: f64,
+    /// 1 / G'(s0).
+    pub inv: f64,
+    /// G''(s0) / (2 G'(s0)).
+    pub curve: f64,
+}
+
+impl SqrtStep {
+    /// The root for the correction `u = (rhs - G(s0)) / G'(s0)`, where |u| <= 1e-5 s0: the
+    /// neglected term is then below 1e-15 s0 (G'' / G' is at most 2 / s0 for s0 > 0), the
+    /// accuracy [`ContactLaw::solve_implicit_sqrt`] stops at. `None` further out.
+    #[inline]
+    pub fn root(&self, u: f64) -> Option<f64> {
+        (u.abs() <= 1e-5 * self.s0).then_some((self.s0 + u) - (self.curve * u) * u)
     }
 }
 

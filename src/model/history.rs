@@ -32,6 +32,22 @@ impl Series {
         self.data.push(v);
     }
 
+    /// Appends the next sample into room already reserved.
+    ///
+    /// # Safety
+    /// `self.len() < self.capacity()`.
+    #[inline(always)]
+    pub unsafe fn push_reserved(&mut self, v: f64) {
+        // SAFETY: the caller promises room for one more.
+        unsafe { push_reserved(&mut self.data, v) }
+    }
+
+    /// How many samples it has room for without reallocating.
+    #[inline]
+    pub fn capacity(&self) -> usize {
+        self.data.capacity()
+    }
+
     /// How many samples.
     #[inline]
     pub fn len(&self) -> usize {
@@ -89,12 +105,34 @@ impl Series {
     }
 }
 
+/// Appends `x` to `v` without the capacity check of `Vec::push`, for hot loops that reserve
+/// room ahead.
+///
+/// # Safety
+/// `v.len() < v.capacity()`.
+#[inline(always)]
+pub unsafe fn push_reserved(v: &mut Vec<f64>, x: f64) {
+    let n = v.len();
+    debug_assert!(n < v.capacity());
+    // SAFETY: slot n lies within the allocation (n < capacity), and is initialised before the
+    // length covers it.
+    unsafe {
+        v.as_mut_ptr().add(n).write(x);
+        v.set_len(n + 1);
+    }
+}
+
 /// A fixed-lag cubic look-up into a [`Series`].
 #[derive(Debug, Clone, Copy)]
 pub struct Tap {
     /// Stencil start, in samples relative to the newest sample (<= -3).
     first: isize,
     weights: [f64; 4],
+    /// The stored part of the stencil as four samples from `stored_at` (<= -4) before the
+    /// newest: the same as `first` and `weights`, or, for a stencil of three stored samples,
+    /// one more sample in front with weight zero. Read by [`Tap::known_steady`].
+    stored_at: isize,
+    stored_weights: [f64; 4],
 }
 
 /// The longest lag a tap resolves, in steps; see [`Tap::new`].
@@ -142,7 +180,7 @@ impl Tap {
             let x = (p - lo_node as f64).clamp(0.0, 1.0);
             weights[(lo_node - first) as usize] = 1.0 - x;
             weights[(hi - first) as usize] = x;
-            return Tap { first, weights };
+            return Tap::of(first, weights);
         }
         for (k, w) in weights.iter_mut().enumerate() {
             let xk = (first + k as isize) as f64;
@@ -155,7 +193,26 @@ impl Tap {
             }
             *w = v;
         }
-        Tap { first, weights }
+        Tap::of(first, weights)
+    }
+
+    fn of(first: isize, weights: [f64; 4]) -> Self {
+        let (stored_at, stored_weights) = if first == -3 {
+            (-4, [0.0, weights[0], weights[1], weights[2]])
+        } else {
+            (first, weights)
+        };
+        Tap {
+            first,
+            weights,
+            stored_at,
+            stored_weights,
+        }
+    }
+
+    /// The length a series must have for [`Tap::known_steady`] to read it.
+    pub fn steady_from(&self) -> usize {
+        (-self.stored_at) as usize
     }
 
     /// How many samples back the stencil reaches.
@@ -171,6 +228,12 @@ impl Tap {
         } else {
             0.0
         }
+    }
+
+    /// Whether the look-up reads the newest sample alone (a lag of zero): its known part is
+    /// then zero, and a solver can skip it, keeping the stored samples off the step's chain.
+    pub fn newest_only(&self) -> bool {
+        self.first == -3 && self.weights[..3].iter().all(|&w| w == 0.0)
     }
 
     /// The look-up's value from samples already stored, for a newest sample that is about to be
@@ -202,6 +265,24 @@ impl Tap {
         } else {
             self.straddling(raw, base)
         }
+    }
+
+    /// [`Tap::known_before_push`] once the series is long enough: four stored samples read
+    /// without a branch (a stencil of three adds one with weight zero, so the sum may differ
+    /// from [`Tap::known_before_push`]'s in the last bit).
+    ///
+    /// # Safety
+    /// `series.len() >= self.steady_from()`.
+    #[inline(always)]
+    pub unsafe fn known_steady(&self, series: &Series) -> f64 {
+        let raw = series.samples();
+        debug_assert!(raw.len() >= self.steady_from());
+        let b = (raw.len() as isize + self.stored_at) as usize;
+        let w = &self.stored_weights;
+        // SAFETY: b + 4 = raw.len() + stored_at + 4 <= raw.len() (stored_at <= -4), and b >= 0
+        // by the caller's promise.
+        let s = unsafe { raw.get_unchecked(b..b + 4) };
+        (w[0] * s[0] + w[1] * s[1]) + (w[2] * s[2] + w[3] * s[3])
     }
 
     /// A few early steps: the stencil straddles t = 0.

@@ -81,9 +81,13 @@ impl XtGrid {
         t_end: f64,
     ) -> Self {
         let times_s = spaced(t_start, t_end, nt);
-        Self::sampled(times_s, waves.each_ref().map(|w| w.length_m()), nx, false, |b, x, t| {
-            (waves[b].stress_pa(x, t), waves[b].velocity_m_s(x, t))
-        })
+        Self::sampled(
+            times_s,
+            waves.each_ref().map(|w| w.length_m()),
+            nx,
+            false,
+            |b, x, t| (waves[b].stress_pa(x, t), waves[b].velocity_m_s(x, t)),
+        )
     }
 
     /// The uniform-stress equivalent of a result without waves: -F(t) / A_i across bar i, and

@@ -28,7 +28,7 @@ use super::{Raw, SearsDiagnostics, SolveError, Times, Warning, peak_between};
 use crate::model::contact::{ContactLaw, LawKind};
 use crate::model::control::{CHECK_EVERY, Control};
 use crate::model::field::{BarWaves, History};
-use crate::model::history::{Series, Tap};
+use crate::model::history::{Series, Tap, push_reserved};
 use crate::model::scenario::{ImpactScenario, InputError, Reading};
 
 struct Channel {
@@ -40,14 +40,57 @@ struct Channel {
     gain: f64,
     /// Sum of the taps' weights on the newest sample.
     top: f64,
+    /// Whether the first tap reads the newest sample alone (lag 0: the collocated and end
+    /// readings), so that its known part is zero and the stored samples stay off the chain.
+    skip_first: bool,
 }
 
 impl Channel {
-    /// The known part of this bar's contribution to delta_{n+1}, times Z, given the known part
-    /// `a` of Psi_{n+1}.
-    #[inline]
-    fn known_displacement(&self, psi: &Series, a: f64) -> f64 {
-        self.taps[0].known_before_push(psi) + self.taps[1].known_before_push(psi) + self.top * a
+    /// The known parts of this bar's look-ups for the sample about to be pushed: the
+    /// recursion's, and the displacement taps' (without the newest sample's share).
+    #[inline(always)]
+    fn known(&self, psi: &Series) -> (f64, f64) {
+        let first = if self.skip_first {
+            0.0
+        } else {
+            self.taps[0].known_before_push(psi)
+        };
+        (
+            self.recur.known_before_push(psi),
+            first + self.taps[1].known_before_push(psi),
+        )
+    }
+
+    /// [`Channel::known`] by [`Tap::known_steady`].
+    ///
+    /// # Safety
+    /// `psi.len() >= self.steady_from()`.
+    #[inline(always)]
+    unsafe fn known_steady(&self, psi: &Series) -> (f64, f64) {
+        // SAFETY: the caller's promise covers every tap read.
+        unsafe {
+            let first = if self.skip_first {
+                0.0
+            } else {
+                self.taps[0].known_steady(psi)
+            };
+            (
+                self.recur.known_steady(psi),
+                first + self.taps[1].known_steady(psi),
+            )
+        }
+    }
+
+    /// The history length from which [`Channel::known_steady`] may read.
+    fn steady_from(&self) -> usize {
+        let first = if self.skip_first {
+            0
+        } else {
+            self.taps[0].steady_from()
+        };
+        first
+            .max(self.taps[1].steady_from())
+            .max(self.recur.steady_from())
     }
 }
 
@@ -182,7 +225,13 @@ impl LocalPoly {
 /// order as the step shrinks; and theta >= 1 - 1/z everywhere, so the amplification factor
 /// (1 - (1 - theta) z) / (1 + theta z) is never negative: stiff contact never rings.
 fn theta_for(z: f64) -> f64 {
-    0.5 + 0.5 * (0.25 * z * z).min(1.0)
+    theta_for_squared(z * z)
+}
+
+/// [`theta_for`] from z^2.
+#[inline]
+fn theta_for_squared(z2: f64) -> f64 {
+    0.5 + 0.5 * (0.25 * z2).min(1.0)
 }
 
 /// Steps an impact through `ws`: its histories of Psi, Phi, force and approach, its contacts.
@@ -233,6 +282,7 @@ fn run(sc: &ImpactScenario, control: &Control, ws: &mut Workspace) -> Result<Run
             taps,
             gain,
             top: taps[0].newest_weight() + taps[1].newest_weight(),
+            skip_first: taps[0].newest_only(),
         }
     });
     let Workspace {
@@ -265,33 +315,68 @@ fn run(sc: &ImpactScenario, control: &Control, ws: &mut Workspace) -> Result<Run
     let mut n = 0usize;
     // c0 depends only on the lags, so it is the same every step.
     let c0: f64 = channels.iter().map(|ch| ch.inv_z * ch.top * ch.gain).sum();
+    let z2_per_delta = (1.5 * law.stiffness * c0 * h).powi(2);
 
     let expected_steps = (expected / h).max(1.0);
-    // sqrt(delta) at the last three steps (the Hertz Newton's starting point).
-    let (mut s_prev2, mut s_prev, mut s_now) = (0.0f64, 0.0f64, 0.0f64);
+    // The newest force, impulse and approach, carried in registers: read back from their
+    // vectors they would wait on the store of the step before.
+    let (mut fn_, mut phin, mut dn) = (0.0f64, 0.0f64, 0.0f64);
+    let steady_from = channels[0].steady_from().max(channels[1].steady_from());
+    // Every vector holds n + 1 samples at step n; `room` is the least capacity among them.
+    let room = |psi: &[Series; 2], phi: &Series, force: &Vec<f64>, delta: &Vec<f64>| {
+        psi[0]
+            .capacity()
+            .min(psi[1].capacity())
+            .min(phi.capacity())
+            .min(force.capacity())
+            .min(delta.capacity())
+    };
+    let mut cap = room(psi, phi, force, delta);
+    // The next step at which to report progress, check the step budget or make room: one
+    // comparison a step for the three.
+    let mut next_event = 0usize;
     while n < n_stop {
-        if n.is_multiple_of(CHECK_EVERY) {
-            control.report(n as f64 / expected_steps)?;
-        }
-        if n + 1 > sc.solver.max_steps {
-            return Err(SolveError::Budget {
-                max_steps: sc.solver.max_steps,
-                dt_s: h,
-                reached_s: n as f64 * h,
-            });
+        if n >= next_event {
+            if n >= sc.solver.max_steps {
+                return Err(SolveError::Budget {
+                    max_steps: sc.solver.max_steps,
+                    dt_s: h,
+                    reached_s: n as f64 * h,
+                });
+            }
+            if n.is_multiple_of(CHECK_EVERY) {
+                control.report(n as f64 / expected_steps)?;
+            }
+            if n + 2 > cap {
+                let more = (n + 2).max(1024);
+                for v in psi.iter_mut().chain(std::iter::once(&mut *phi)) {
+                    v.reserve(more);
+                }
+                force.reserve(more);
+                delta.reserve(more);
+                cap = room(psi, phi, force, delta);
+            }
+            next_event = ((n / CHECK_EVERY + 1) * CHECK_EVERY)
+                .min(sc.solver.max_steps)
+                .min(cap - 1);
         }
         let t1 = (n + 1) as f64 * h;
-        let (r0, r1) = (
-            channels[0].recur.known_before_push(&psi[0]),
-            channels[1].recur.known_before_push(&psi[1]),
-        );
+        let [(r0, k0), (r1, k1)] = if n + 1 >= steady_from {
+            // SAFETY: both series hold n + 1 >= steady_from samples.
+            unsafe {
+                [
+                    channels[0].known_steady(&psi[0]),
+                    channels[1].known_steady(&psi[1]),
+                ]
+            }
+        } else {
+            [channels[0].known(&psi[0]), channels[1].known(&psi[1])]
+        };
         let wv = w * t1
-            - channels[0].inv_z * channels[0].known_displacement(&psi[0], r0 * channels[0].gain)
-            - channels[1].inv_z * channels[1].known_displacement(&psi[1], r1 * channels[1].gain);
-        let (fn_, phin, dn) = (force[n], phi.last(), delta[n]);
+            - channels[0].inv_z * (k0 + channels[0].top * (r0 * channels[0].gain))
+            - channels[1].inv_z * (k1 + channels[1].top * (r1 * channels[1].gain));
         let free = wv - c0 * phin;
         let (mut d1, mut f1, mut phi1, theta);
-        let mut s_new = 0.0;
         if c0 == 0.0 {
             // Explicit: delta_{n+1} depends on history alone; Phi by the trapezoid rule.
             theta = 0.5;
@@ -299,34 +384,43 @@ fn run(sc: &ImpactScenario, control: &Control, ws: &mut Workspace) -> Result<Run
             f1 = law.force(d1);
             phi1 = phin + 0.5 * h * (fn_ + f1);
         } else {
-            // sqrt(delta) at the end of the step, extrapolated from the last three steps (a
-            // quadratic: within (h / T)^3 of it, so one Newton iteration lands on the root). It
-            // is known before this step's look-ups, off the chain from one step to the next, and
-            // gives the step's stiffness for theta without a square root. Elsewhere (linear
-            // law, the first steps) the stiffness is the law's at the larger of the overlap now
-            // and the one the step heads for.
-            let guess = if law.kind != LawKind::Hertz {
-                -1.0
-            } else if s_prev2 > 0.0 && s_prev > 0.0 && s_now > 0.0 {
-                3.0 * (s_now - s_prev) + s_prev2
-            } else if s_prev > 0.0 && s_now > 0.0 {
-                2.0 * s_now - s_prev
+            // The overlap at the end of the step, extrapolated by a cubic through four steps
+            // ending two before it (taken three steps on: within 15 (h / T)^4 of it,
+            // relatively, on a contact of time scale T): its square root starts Newton on
+            // s = sqrt(delta), and it gives the step's stiffness for theta. Leaving out the last
+            // two steps keeps all of it off the chain from one step to the next: it is ready
+            // before the step's look-ups are. The overlap, not its root, is extrapolated because it is
+            // smooth at onset (delta ~ w t there, where sqrt(delta) has no Taylor series).
+            // Elsewhere (linear law, the first steps) the stiffness is the law's at the larger
+            // of the overlap now and the one the step heads for.
+            let guess = if law.kind == LawKind::Hertz && n >= 5 {
+                let [a, b, c, d] = [delta[n - 2], delta[n - 3], delta[n - 4], delta[n - 5]];
+                if a > 0.0 && b > 0.0 && c > 0.0 && d > 0.0 {
+                    20.0 * a - 45.0 * b + 36.0 * c - 10.0 * d
+                } else {
+                    -1.0
+                }
             } else {
                 -1.0
             };
-            let tangent = if guess > 0.0 {
-                1.5 * law.stiffness * guess
+            // theta from z^2 = (1.5 k c0 h)^2 delta: no square root on the way to it.
+            theta = if guess > 0.0 {
+                theta_for_squared(z2_per_delta * guess)
             } else {
-                law.tangent(dn.max(free))
+                theta_for(c0 * h * law.tangent(dn.max(free)))
             };
-            theta = theta_for(c0 * h * tangent);
             let p = phin + (1.0 - theta) * h * fn_;
             let (beta, rhs) = (c0 * theta * h, wv - c0 * p);
             if law.kind == LawKind::Hertz && rhs > 0.0 {
-                let s1 = law.solve_implicit_sqrt(beta, rhs, guess);
-                s_new = s1;
+                // u = (rhs - G(s0)) / G'(s0), arranged so that only p waits on the step before.
+                let step = (guess > 0.0).then(|| law.sqrt_step(beta, guess));
+                let root = step.and_then(|st| st.root((wv - st.g0) * st.inv - (c0 * st.inv) * p));
+                let s1 = match root {
+                    Some(s1) => s1,
+                    None => law.solve_implicit_sqrt(beta, rhs, step.map_or(-1.0, |st| st.s0)),
+                };
                 d1 = s1 * s1;
-                f1 = law.stiffness * d1 * s1;
+                f1 = d1 * (law.stiffness * s1);
             } else {
                 d1 = law.solve_implicit(beta, rhs, dn);
                 f1 = law.force(d1);
@@ -409,13 +503,16 @@ fn run(sc: &ImpactScenario, control: &Control, ws: &mut Workspace) -> Result<Run
             contacts.push((t_on, None, 0.0));
         }
         // Store the new samples: Psi_i(t_n+1) = Phi_n+1 + Psi_i(t_n+1 - T_i).
-        for ((ch, r), series) in channels.iter().zip([r0, r1]).zip(psi.iter_mut()) {
-            series.push((phi1 + r) * ch.gain);
+        // SAFETY: every vector holds n + 1 < cap samples (next_event <= cap - 1 makes room).
+        unsafe {
+            for ((ch, r), series) in channels.iter().zip([r0, r1]).zip(psi.iter_mut()) {
+                series.push_reserved((phi1 + r) * ch.gain);
+            }
+            phi.push_reserved(phi1);
+            push_reserved(force, f1);
+            push_reserved(delta, d1);
         }
-        phi.push(phi1);
-        force.push(f1);
-        delta.push(d1);
-        (s_prev2, s_prev, s_now) = (s_prev, s_now, s_new);
+        (fn_, phin, dn) = (f1, phi1, d1);
         n += 1;
         if separated && sc.solver.window_s == 0.0 && w - phi1 / m_eff <= 0.0 {
             break;
