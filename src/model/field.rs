@@ -165,9 +165,25 @@ fn integrate_square_uniform(values: &[f64], dt: f64, a: f64, b: f64) -> f64 {
         let (fa, fb) = (at(a), at(b));
         return 0.5 * (fa * fa + fb * fb) * (b - a);
     }
+    // The trapezoid sum over [i0, i1] is dt (v_i0^2 / 2 + interior v^2 + v_i1^2 / 2); the
+    // interior in four lanes, so that the additions do not wait on each other.
     let mut sum = 0.0;
-    for i in i0..i1 {
-        sum += 0.5 * (values[i] * values[i] + values[i + 1] * values[i + 1]) * dt;
+    if i1 > i0 {
+        let mut lanes = [0.0f64; 4];
+        let interior = &values[i0 + 1..i1];
+        let chunks = interior.chunks_exact(4);
+        let rest = chunks.remainder();
+        for c in chunks {
+            for (l, &v) in lanes.iter_mut().zip(c) {
+                *l += v * v;
+            }
+        }
+        let mut squares = (lanes[0] + lanes[1]) + (lanes[2] + lanes[3]);
+        for &v in rest {
+            squares += v * v;
+        }
+        let (v0, v1) = (values[i0], values[i1]);
+        sum = (0.5 * (v0 * v0 + v1 * v1) + squares) * dt;
     }
     let (fa, f0) = (at(a), values[i0]);
     sum += 0.5 * (fa * fa + f0 * f0) * (i0 as f64 * dt - a);

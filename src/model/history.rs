@@ -42,6 +42,16 @@ impl Series {
         unsafe { push_reserved(&mut self.data, v) }
     }
 
+    /// Appends samples.
+    pub fn extend(&mut self, values: impl Iterator<Item = f64>) {
+        self.data.extend(values);
+    }
+
+    /// Appends `count` zero samples.
+    pub fn push_zeros(&mut self, count: usize) {
+        self.data.resize(self.data.len() + count, 0.0);
+    }
+
     /// How many samples it has room for without reallocating.
     #[inline]
     pub fn capacity(&self) -> usize {

@@ -292,11 +292,18 @@ fn run(sc: &ImpactScenario, control: &Control, ws: &mut Workspace) -> Result<Run
         delta,
         contacts,
     } = ws;
-    for series in psi.iter_mut().chain(std::iter::once(&mut *phi)) {
+    // Each Psi starts with zeros for the history before t = 0, as far back as its look-ups reach
+    // (up to the run's expected length): the look-ups then read stored samples from the first
+    // step on, without a branch. Only the look-ups read Psi, so the padding is invisible.
+    let pad = [0, 1].map(|i| channels[i].steady_from().min(capacity));
+    for (series, pad) in psi.iter_mut().zip(pad) {
         series.clear();
-        series.reserve(capacity);
-        series.push(0.0);
+        series.reserve(capacity + pad);
+        series.push_zeros(pad + 1);
     }
+    phi.clear();
+    phi.reserve(capacity);
+    phi.push(0.0);
     for v in [&mut *force, &mut *delta] {
         v.clear();
         v.reserve(capacity);
@@ -321,12 +328,16 @@ fn run(sc: &ImpactScenario, control: &Control, ws: &mut Workspace) -> Result<Run
     // The newest force, impulse and approach, carried in registers: read back from their
     // vectors they would wait on the store of the step before.
     let (mut fn_, mut phin, mut dn) = (0.0f64, 0.0f64, 0.0f64);
-    let steady_from = channels[0].steady_from().max(channels[1].steady_from());
-    // Every vector holds n + 1 samples at step n; `room` is the least capacity among them.
+    // From step n = steady_after - 1 on, every Psi holds as many samples as its look-ups reach.
+    let steady_after = (0..2)
+        .map(|i| channels[i].steady_from().saturating_sub(pad[i]))
+        .max()
+        .unwrap_or(0);
+    // Every vector holds n + 1 samples at step n (after its padding); `room` is the least
+    // capacity among them.
     let room = |psi: &[Series; 2], phi: &Series, force: &Vec<f64>, delta: &Vec<f64>| {
-        psi[0]
-            .capacity()
-            .min(psi[1].capacity())
+        (psi[0].capacity() - pad[0])
+            .min(psi[1].capacity() - pad[1])
             .min(phi.capacity())
             .min(force.capacity())
             .min(delta.capacity())
@@ -361,8 +372,8 @@ fn run(sc: &ImpactScenario, control: &Control, ws: &mut Workspace) -> Result<Run
                 .min(cap - 1);
         }
         let t1 = (n + 1) as f64 * h;
-        let [(r0, k0), (r1, k1)] = if n + 1 >= steady_from {
-            // SAFETY: both series hold n + 1 >= steady_from samples.
+        let [(r0, k0), (r1, k1)] = if n + 1 >= steady_after {
+            // SAFETY: series i holds pad_i + n + 1 >= steady_from_i samples.
             unsafe {
                 [
                     channels[0].known_steady(&psi[0]),
@@ -539,7 +550,26 @@ fn run(sc: &ImpactScenario, control: &Control, ws: &mut Workspace) -> Result<Run
 
 /// One Sears solve, every history kept.
 pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, SolveError> {
-    let mut ws = Workspace::default();
+    // The histories the result keeps move out of the workspace; Psi (internal to the run) and
+    // its room stay in a per-thread one for the next solve.
+    thread_local! {
+        static SCRATCH: std::cell::RefCell<Workspace> = std::cell::RefCell::default();
+    }
+    let (outcome, phi, force, delta, contacts) = SCRATCH.with(|cell| {
+        // Were the cell ever in use (a solve within a solve on this thread), a fresh workspace
+        // would serve.
+        let mut fresh = Workspace::default();
+        let mut guard = cell.try_borrow_mut().ok();
+        let ws = guard.as_deref_mut().unwrap_or(&mut fresh);
+        let outcome = run(sc, control, ws);
+        (
+            outcome,
+            std::mem::take(&mut ws.phi),
+            std::mem::take(&mut ws.force),
+            std::mem::take(&mut ws.delta),
+            std::mem::take(&mut ws.contacts),
+        )
+    });
     let Run {
         law,
         lay,
@@ -549,17 +579,10 @@ pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, Solve
         on,
         mut warnings,
         refined_from_s,
-    } = run(sc, control, &mut ws)?;
-    let Workspace {
-        phi,
-        force,
-        delta,
-        contacts,
-        ..
-    } = ws;
+    } = outcome?;
     let bars = [sc.bar1, sc.bar2];
     let end_s = n as f64 * h;
-    let time_s: Vec<f64> = (0..=n).map(|k| k as f64 * h).collect();
+    let time_s: Vec<f64> = (0..n + 1).map(|k| k as f64 * h).collect();
     let impulse = phi.last();
     let waves = build_waves(sc, &lay, &force, h, end_s);
     let vibration_j: f64 = (0..2)
@@ -659,9 +682,20 @@ fn build_waves(
         let tap = Tap::new(lay.round_trip_s[i], h);
         let mut hs = Series::with_capacity(force.len());
         let b = 1.0 / (1.0 - tap.newest_weight());
-        for &f in force {
+        let warm = tap.steady_from().min(force.len());
+        // While the series is shorter than this, the look-up reads only the zeros before t = 0.
+        let zero = tap.steady_from().saturating_sub(3).min(warm);
+        hs.extend(force[..zero].iter().map(|&f| f * b));
+        for &f in &force[zero..warm] {
             let v = (f + tap.known_before_push(&hs)) * b;
             hs.push(v);
+        }
+        for &f in &force[warm..] {
+            // SAFETY: hs holds at least steady_from samples here, and room for all of `force`.
+            unsafe {
+                let v = (f + tap.known_steady(&hs)) * b;
+                hs.push_reserved(v);
+            }
         }
         BarWaves {
             body_length_m: lay.body_m[i],
