@@ -91,3 +91,34 @@ fn every_listed_key_is_accepted_by_the_parser_at_its_range_ends() {
         }
     }
 }
+
+#[test]
+fn every_choice_the_table_lists_is_accepted_and_a_wrong_one_is_refused_with_the_list() {
+    for table in [IMPACT_SETTINGS, BUILDING_SETTINGS] {
+        for s in table {
+            let Some(options) = s.choices() else {
+                continue;
+            };
+            for key in concrete_keys(std::slice::from_ref(s)) {
+                let apply = |v: &str| {
+                    let line = format!("{key}={v}");
+                    if std::ptr::eq(table, IMPACT_SETTINGS) {
+                        ImpactSetup::default().apply_assignment(&line).map(|_| ())
+                    } else {
+                        BuildingSetup::default()
+                            .apply_assignment(&line)
+                            .map(|_| ())
+                    }
+                };
+                for option in options {
+                    apply(option).unwrap_or_else(|e| panic!("{key}={option}: {e}"));
+                }
+                let err = apply("no-such-choice").expect_err(&key).to_string();
+                assert!(
+                    err.contains(&key) && err.contains(&options.join("|")),
+                    "{key}: {err}"
+                );
+            }
+        }
+    }
+}

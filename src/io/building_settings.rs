@@ -8,6 +8,7 @@ use super::motion::Units;
 use super::settings::{SettingValue, choice, count, number, numbers, text};
 use crate::model::building::{BuildingScenario, ContactModel, DampingModel, SlabReading};
 use crate::model::scenario::InputError;
+use crate::model::settings::BUILDING_SETTINGS;
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct BuildingSetup {
@@ -60,16 +61,11 @@ impl BuildingSetup {
                         DampingModel::Rayleigh { modes } => modes,
                         DampingModel::Modal => [1, 2],
                     };
-                    b.damping = choice(
-                        key,
-                        value,
-                        |s| match s {
-                            "modal" => Some(DampingModel::Modal),
-                            "rayleigh" => Some(DampingModel::Rayleigh { modes }),
-                            _ => None,
-                        },
-                        "modal|rayleigh",
-                    )?
+                    b.damping = choice(BUILDING_SETTINGS, key, value, |s| match s {
+                        "modal" => Some(DampingModel::Modal),
+                        "rayleigh" => Some(DampingModel::Rayleigh { modes }),
+                        _ => None,
+                    })?
                 }
                 "rayleigh_modes" => {
                     let m = numbers(key, value)?;
@@ -103,12 +99,7 @@ impl BuildingSetup {
         let m = &mut self.motion;
         match key {
             "contact.model" => {
-                sc.contact = choice(
-                    key,
-                    value,
-                    ContactModel::from_name,
-                    "sears|linear|kelvin|hertz|hertzdamp|jankowski|stereo|none",
-                )?
+                sc.contact = choice(BUILDING_SETTINGS, key, value, ContactModel::from_name)?
             }
             "gap" => sc.gap_m = number(key, value)?,
             "contact.stiffness" => {
@@ -120,16 +111,11 @@ impl BuildingSetup {
             }
             "contact.restitution" => sc.restitution = number(key, value)?,
             "contact.reading" => {
-                sc.reading = choice(
-                    key,
-                    value,
-                    |s| match s {
-                        "paper" => Some(SlabReading::Paper),
-                        "end" => Some(SlabReading::End),
-                        _ => None,
-                    },
-                    "paper|end",
-                )?
+                sc.reading = choice(BUILDING_SETTINGS, key, value, |s| match s {
+                    "paper" => Some(SlabReading::Paper),
+                    "end" => Some(SlabReading::End),
+                    _ => None,
+                })?
             }
             "contact.zone_length" => {
                 sc.zone_length_m = if auto(value) {
@@ -144,7 +130,7 @@ impl BuildingSetup {
                 let name = text(key, value)?;
                 m.file = (name != SYNTHETIC).then(|| name.to_string());
             }
-            "motion.units" => m.units = choice(key, value, Units::from_name, "g|m/s2|cm/s2")?,
+            "motion.units" => m.units = choice(BUILDING_SETTINGS, key, value, Units::from_name)?,
             "motion.scale" => {
                 let x = checked(key, value)?;
                 if x == 0.0 {

@@ -7,6 +7,7 @@ use crate::model::contact::LawKind;
 use crate::model::impact::ModelKind;
 use crate::model::material::MaterialPreset;
 use crate::model::scenario::{ImpactScenario, InputError, Reading};
+use crate::model::settings::{self, IMPACT_SETTINGS, Setting};
 
 /// A value as typed by a user: TOML gives it typed, the command line as text.
 #[derive(Debug, Clone, PartialEq)]
@@ -118,13 +119,19 @@ pub(crate) fn count(key: &str, v: &SettingValue) -> Result<usize, InputError> {
 }
 
 pub(crate) fn choice<T: Copy>(
+    table: &'static [Setting],
     key: &str,
     v: &SettingValue,
     parse: impl Fn(&str) -> Option<T>,
-    allowed: &str,
 ) -> Result<T, InputError> {
     let s = text(key, v)?;
-    parse(s).ok_or_else(|| InputError::new(key, format!("unknown value '{s}': allowed {allowed}")))
+    parse(s).ok_or_else(|| {
+        // The accepted values are the key's row of the settings table, as `--list-keys` shows.
+        let allowed = settings::find(table, key)
+            .and_then(|row| row.choices())
+            .map_or_else(String::new, |options| options.join("|"));
+        InputError::new(key, format!("unknown value '{s}': allowed {allowed}"))
+    })
 }
 
 impl ImpactSetup {
@@ -133,12 +140,7 @@ impl ImpactSetup {
     pub fn apply(&mut self, key: &str, value: &SettingValue) -> Result<(), InputError> {
         let sc = &mut self.scenario;
         if key == "model" {
-            self.model = choice(
-                key,
-                value,
-                ModelKind::from_name,
-                "sears|wave|lumped-hertz|lumped-linear|kelvin|stereo|fe",
-            )?;
+            self.model = choice(IMPACT_SETTINGS, key, value, ModelKind::from_name)?;
             return Ok(());
         }
         if let Some((bar_name, field)) = key.split_once('.')
@@ -151,12 +153,9 @@ impl ImpactSetup {
             };
             match field {
                 "material" => {
-                    bar.material = choice(
-                        key,
-                        value,
-                        |s| MaterialPreset::from_name(s).map(|m| m.material()),
-                        "steel|concrete",
-                    )?
+                    bar.material = choice(IMPACT_SETTINGS, key, value, |s| {
+                        MaterialPreset::from_name(s).map(|m| m.material())
+                    })?
                 }
                 "youngs_modulus" => bar.material.youngs_modulus_pa = number(key, value)?,
                 "poisson_ratio" => bar.material.poisson_ratio = number(key, value)?,
@@ -192,16 +191,11 @@ impl ImpactSetup {
         }
         match key {
             "contact.law" => {
-                sc.contact.law = choice(
-                    key,
-                    value,
-                    |s| {
-                        [LawKind::Hertz, LawKind::Linear]
-                            .into_iter()
-                            .find(|l| l.name() == s)
-                    },
-                    "hertz|linear",
-                )?
+                sc.contact.law = choice(IMPACT_SETTINGS, key, value, |s| {
+                    [LawKind::Hertz, LawKind::Linear]
+                        .into_iter()
+                        .find(|l| l.name() == s)
+                })?
             }
             "contact.stiffness" => {
                 sc.contact.stiffness = match value {
@@ -219,7 +213,7 @@ impl ImpactSetup {
             "contact.divisions" => sc.contact.divisions = number(key, value)?,
             "contact.restitution" => sc.contact.restitution = number(key, value)?,
             "sears.reading" => {
-                sc.reading = choice(key, value, Reading::from_name, "paper|collocated|end")?
+                sc.reading = choice(IMPACT_SETTINGS, key, value, Reading::from_name)?
             }
             "solver.dt" => sc.solver.dt_s = number(key, value)?,
             "solver.window" => sc.solver.window_s = number(key, value)?,

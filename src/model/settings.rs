@@ -174,6 +174,14 @@ pub struct Setting {
 }
 
 impl Setting {
+    /// The values a choice accepts (`None` for other kinds).
+    pub fn choices(&self) -> Option<&'static [&'static str]> {
+        match self.kind {
+            Kind::Choice(options) => Some(options),
+            _ => None,
+        }
+    }
+
     /// The accepted range of a number or list.
     pub fn range(&self) -> Option<Range> {
         match self.kind {
