@@ -105,9 +105,7 @@ fn every_choice_the_table_lists_is_accepted_and_a_wrong_one_is_refused_with_the_
                     if std::ptr::eq(table, IMPACT_SETTINGS) {
                         ImpactSetup::default().apply_assignment(&line).map(|_| ())
                     } else {
-                        BuildingSetup::default()
-                            .apply_assignment(&line)
-                            .map(|_| ())
+                        BuildingSetup::default().apply_assignment(&line).map(|_| ())
                     }
                 };
                 for option in options {

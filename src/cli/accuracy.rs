@@ -10,6 +10,7 @@ use pounding::io::building_settings::BuildingSetup;
 use pounding::io::preset;
 use pounding::io::settings::ImpactSetup;
 use pounding::model::building::{BuildingScenario, ContactModel};
+use pounding::model::impact::estimate::rel;
 use pounding::model::impact::{ImpactResult, ModelKind, solve};
 use pounding::model::scenario::{ImpactScenario, Reading};
 use serde::Serialize;
@@ -70,14 +71,6 @@ fn min_time<T>(f: impl Fn() -> T) -> (T, f64) {
         out = Some(r);
     }
     (out.expect("ran"), best)
-}
-
-fn rel(a: f64, b: f64) -> f64 {
-    if b == 0.0 {
-        (a - b).abs()
-    } else {
-        ((a - b) / b).abs()
-    }
 }
 
 /// Relative L2 distance of a force history from the reference's, at the history's own samples

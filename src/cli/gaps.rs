@@ -109,9 +109,8 @@ fn specs(args: &GapsArgs, base: &MotionSpec) -> anyhow::Result<Vec<MotionSpec>> 
             .filter_map(|e| e.ok().map(|e| e.path()))
             .filter(|p| {
                 p.is_file()
-                    && p.extension().and_then(|e| e.to_str()).is_some_and(|e| {
-                        ["at2", "txt", "dat", "csv"].contains(&e.to_ascii_lowercase().as_str())
-                    })
+                    && ["at2", "txt", "dat", "csv"]
+                        .contains(&pounding::export::extension(p).as_str())
             })
             .collect();
         files.sort();

@@ -76,11 +76,7 @@ fn write_instruments(
             nt,
             r.view_span_s(),
         );
-        let ext = path
-            .extension()
-            .and_then(|e| e.to_str())
-            .unwrap_or("")
-            .to_ascii_lowercase();
+        let ext = pounding::export::extension(path);
         match ext.as_str() {
             "csv" => super::write_csv(out, path, |w| pounding::io::csv::write_xt(w, &grid))
                 .map_err(|e| anyhow::anyhow!("--xt: {e}"))?,

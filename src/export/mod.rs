@@ -3,3 +3,11 @@
 
 pub mod plot;
 pub mod xt;
+
+/// A file's extension in lower case ("" for none): what picks a format.
+pub fn extension(path: &std::path::Path) -> String {
+    path.extension()
+        .and_then(|e| e.to_str())
+        .unwrap_or("")
+        .to_ascii_lowercase()
+}

@@ -122,11 +122,7 @@ impl LinePlot {
     /// Writes the plot; the extension picks the format (`.svg` or `.png`).
     pub fn write(&self, path: &Path) -> Result<(), PlotError> {
         register_font();
-        let ext = path
-            .extension()
-            .and_then(|e| e.to_str())
-            .unwrap_or("")
-            .to_ascii_lowercase();
+        let ext = super::extension(path);
         match ext.as_str() {
             "svg" | "png" => {}
             _ => return Err(PlotError::Extension(path.to_path_buf())),

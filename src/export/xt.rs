@@ -7,9 +7,10 @@ use crate::model::xt::{XtField, XtGrid};
 use plotters::prelude::*;
 use std::path::Path;
 
-/// The view's diverging colour map: negative blue, positive red, zero pale grey; |s| = 1
-/// saturates (the same as `shaders/bars.wgsl`).
-pub fn diverging(s: f64) -> [u8; 3] {
+/// The view's diverging colour map as linear RGB in [0, 1]: compression (s < 0) blue, tension
+/// red, stress-free pale grey; |s| = 1 saturates. `shaders/field.wgsl` has the same map for the
+/// GPU; this is the one copy on the CPU (the window's legends and the GPU tests read it too).
+pub fn diverging_linear(s: f64) -> [f64; 3] {
     let neutral = [0.90, 0.90, 0.88];
     let end = if s < 0.0 {
         [0.10, 0.30, 0.85]
@@ -17,7 +18,12 @@ pub fn diverging(s: f64) -> [u8; 3] {
         [0.85, 0.15, 0.10]
     };
     let a = s.abs().clamp(0.0, 1.0).powf(0.7);
-    [0, 1, 2].map(|i| ((neutral[i] + (end[i] - neutral[i]) * a) * 255.0).round() as u8)
+    [0, 1, 2].map(|i| neutral[i] + (end[i] - neutral[i]) * a)
+}
+
+/// [`diverging_linear`] as 8-bit channels.
+pub fn diverging(s: f64) -> [u8; 3] {
+    diverging_linear(s).map(|c| (c * 255.0).round() as u8)
 }
 
 /// A diagram to write.

@@ -589,17 +589,10 @@ pub fn uniforms(world: [f64; 4], t: f64, bar_count: u32) -> GpuUniforms {
     }
 }
 
-/// The shader's colour map (`diverging` in bars.wgsl) as linear RGB: compression (s < 0) blue,
-/// tension red, stress-free pale grey; |s| = 1 saturates.
+/// The shader's colour map (`diverging` in field.wgsl) as linear RGB, in f32 for the GPU
+/// side: [`crate::export::xt::diverging_linear`].
 pub fn diverging(s: f32) -> [f32; 3] {
-    let neutral = [0.90, 0.90, 0.88];
-    let end = if s < 0.0 {
-        [0.10, 0.30, 0.85]
-    } else {
-        [0.85, 0.15, 0.10]
-    };
-    let a = s.abs().clamp(0.0, 1.0).powf(0.7);
-    [0, 1, 2].map(|i| neutral[i] + (end[i] - neutral[i]) * a)
+    crate::export::xt::diverging_linear(s as f64).map(|c| c as f32)
 }
 
 /// Orthographic view of the world rectangle [left, right] x [bottom, top].

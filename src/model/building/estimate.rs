@@ -11,6 +11,7 @@
 use super::{BuildingResult, BuildingScenario};
 use crate::model::control::Control;
 use crate::model::impact::SolveError;
+use crate::model::impact::estimate::rel;
 use crate::model::motion::GroundMotion;
 
 /// Bounds on the relative errors of a run, and what changed with the refinement.
@@ -36,14 +37,6 @@ pub fn refined(sc: &BuildingScenario, factor: f64) -> BuildingScenario {
         tolerance: sc.tolerance / (factor * factor),
         max_step_s: sc.max_step_s / factor,
         ..sc.clone()
-    }
-}
-
-fn rel(a: f64, b: f64) -> f64 {
-    if b == 0.0 {
-        (a - b).abs()
-    } else {
-        ((a - b) / b).abs()
     }
 }
 

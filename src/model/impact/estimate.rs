@@ -24,7 +24,8 @@ pub struct ErrorEstimate {
     pub wall_time_s: f64,
 }
 
-fn rel(a: f64, b: f64) -> f64 {
+/// |a - b| relative to b (absolute where b is 0): how the estimates compare two runs.
+pub fn rel(a: f64, b: f64) -> f64 {
     if b == 0.0 {
         (a - b).abs()
     } else {

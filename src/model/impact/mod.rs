@@ -476,6 +476,36 @@ impl ImpactResult {
     }
 }
 
+/// A contact (start, end, impulse) with its peak and loaded interval read off the samples.
+fn contact_event(
+    time: Times,
+    force: &[f64],
+    (start_s, end_s, impulse_ns): (f64, Option<f64>, f64),
+) -> ContactEvent {
+    let peak_force_n = peak_between(time, force, start_s, end_s.unwrap_or(f64::INFINITY));
+    let (loaded_start_s, loaded_end_s) = loaded_interval(time, force, start_s, end_s, peak_force_n);
+    ContactEvent {
+        start_s,
+        end_s,
+        loaded_start_s,
+        loaded_end_s,
+        peak_force_n,
+        impulse_ns,
+    }
+}
+
+/// Effective restitution after impulse `j`: (V2 - V1) / (v1 - v2), 1 where the bars do not
+/// approach.
+fn restitution_after(sc: &ImpactScenario, [m1, m2]: [f64; 2], j: f64) -> f64 {
+    let (v1, v2) = (sc.bar1.velocity_m_s, sc.bar2.velocity_m_s);
+    let w = v1 - v2;
+    if w > 0.0 {
+        ((v2 + j / m2) - (v1 - j / m1)) / w
+    } else {
+        1.0
+    }
+}
+
 /// The summary from a run's contacts and force samples, by the same arithmetic as [`finish`]
 /// (so a summary and a full result agree bit for bit).
 pub(crate) fn summarize(
@@ -484,33 +514,24 @@ pub(crate) fn summarize(
     time: Times,
     force: &[f64],
     impulse_ns: f64,
-    [m1, m2]: [f64; 2],
+    masses: [f64; 2],
 ) -> ImpactSummary {
-    let (v1, v2) = (sc.bar1.velocity_m_s, sc.bar2.velocity_m_s);
-    let w = v1 - v2;
-    let restitution_of = |j: f64| {
-        let [a, b] = [v1 - j / m1, v2 + j / m2];
-        if w > 0.0 { (b - a) / w } else { 1.0 }
-    };
-    let mut peak = 0.0;
-    let (mut duration, mut touching, mut first_j) = (0.0, 0.0, 0.0);
-    for (k, &(start, end, j)) in contacts.iter().enumerate() {
-        let p = peak_between(time, force, start, end.unwrap_or(f64::INFINITY));
-        peak = f64::max(peak, p);
-        if k == 0 {
-            let (loaded_start, loaded_end) = loaded_interval(time, force, start, end, p);
-            duration = loaded_end.map_or(0.0, |e| e - loaded_start);
-            touching = end.map_or(0.0, |e| e - start);
-            first_j = j;
-        }
-    }
+    let first = contacts.first().map(|&c| contact_event(time, force, c));
+    let peak = contacts
+        .iter()
+        .map(|&(start, end, _)| peak_between(time, force, start, end.unwrap_or(f64::INFINITY)))
+        .fold(0.0, f64::max);
     ImpactSummary {
-        impact: w > 0.0,
+        impact: sc.approach_velocity_m_s() > 0.0,
         peak_force_n: Some(peak),
-        contact_duration_s: duration,
-        touching_duration_s: touching,
-        restitution: restitution_of(impulse_ns),
-        restitution_first_contact: restitution_of(first_j),
+        contact_duration_s: first.and_then(|c| c.duration_s()).unwrap_or(0.0),
+        touching_duration_s: first.and_then(|c| c.touching_s()).unwrap_or(0.0),
+        restitution: restitution_after(sc, masses, impulse_ns),
+        restitution_first_contact: restitution_after(
+            sc,
+            masses,
+            first.map_or(0.0, |c| c.impulse_ns),
+        ),
         impulse_ns,
         contacts: contacts.len(),
         recontact_s: contacts.get(1).map(|c| c.0),
@@ -711,36 +732,10 @@ fn finish(model: ModelKind, sc: &ImpactScenario, raw: Raw) -> ImpactResult {
     let (v1, v2) = (sc.bar1.velocity_m_s, sc.bar2.velocity_m_s);
     let w = v1 - v2;
     let after = |j: f64| [v1 - j / m1, v2 + j / m2];
-    let restitution_of = |j: f64| {
-        let [a, b] = after(j);
-        if w > 0.0 { (b - a) / w } else { 1.0 }
-    };
     let contacts: Vec<ContactEvent> = raw
         .contacts
         .iter()
-        .map(|&(start_s, end_s, impulse_ns)| {
-            let peak_force_n = peak_between(
-                Times::Stored(&raw.time_s),
-                &raw.force_n,
-                start_s,
-                end_s.unwrap_or(f64::INFINITY),
-            );
-            let (loaded_start_s, loaded_end_s) = loaded_interval(
-                Times::Stored(&raw.time_s),
-                &raw.force_n,
-                start_s,
-                end_s,
-                peak_force_n,
-            );
-            ContactEvent {
-                start_s,
-                end_s,
-                loaded_start_s,
-                loaded_end_s,
-                peak_force_n,
-                impulse_ns,
-            }
-        })
+        .map(|&c| contact_event(Times::Stored(&raw.time_s), &raw.force_n, c))
         .collect();
     let peak_force_n = match raw.peak_override_n {
         Some(p) => p,
@@ -775,8 +770,12 @@ fn finish(model: ModelKind, sc: &ImpactScenario, raw: Raw) -> ImpactResult {
         impact: w > 0.0,
         contact_duration_s: first.and_then(|c| c.duration_s()).unwrap_or(0.0),
         touching_duration_s: first.and_then(|c| c.touching_s()).unwrap_or(0.0),
-        restitution_first_contact: restitution_of(first.map(|c| c.impulse_ns).unwrap_or(0.0)),
-        restitution: restitution_of(raw.impulse_ns),
+        restitution_first_contact: restitution_after(
+            sc,
+            raw.masses_kg,
+            first.map(|c| c.impulse_ns).unwrap_or(0.0),
+        ),
+        restitution: restitution_after(sc, raw.masses_kg, raw.impulse_ns),
         time_s: raw.time_s,
         force_n: raw.force_n,
         approach_m: raw.approach_m,
