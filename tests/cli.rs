@@ -5,18 +5,23 @@ use std::process::Command;
 
 mod common;
 
+/// Runs `pounding` and asserts it succeeded, showing its stderr where it did not.
+fn succeeds(args: &[&str]) -> std::process::Output {
+    let o = pounding(args);
+    assert!(o.status.success(), "{}", stderr(&o));
+    o
+}
+
 fn json(args: &[&str]) -> serde_json::Value {
     let mut all = args.to_vec();
     all.push("--json");
-    let o = pounding(&all);
-    assert!(o.status.success(), "{}", stderr(&o));
+    let o = succeeds(&all);
     serde_json::from_str(&stdout(&o)).expect("one JSON object")
 }
 
 #[test]
 fn impact_without_arguments_runs_the_papers_base_case() {
-    let o = pounding(&["impact"]);
-    assert!(o.status.success(), "{}", stderr(&o));
+    let o = succeeds(&["impact"]);
     let out = stdout(&o);
     assert!(
         out.contains("preset paper-base") && out.contains("peak force") && out.contains("a tau"),
@@ -366,14 +371,13 @@ fn accuracy_reports_a_ladder_with_second_order_and_writes_the_work_precision_plo
     let dir = std::env::temp_dir().join(format!("pounding-acc-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let (csv, svg, png) = (dir.join("acc.csv"), dir.join("wp.svg"), dir.join("wp.png"));
-    let o = pounding(&[
+    succeeds(&[
         "accuracy",
         "--csv",
         csv.to_str().unwrap(),
         "--plot",
         svg.to_str().unwrap(),
     ]);
-    assert!(o.status.success(), "{}", stderr(&o));
     let table = std::fs::read_to_string(&csv).unwrap();
     assert!(table.starts_with("model,resolution,steps,wall_time_s,peak_force_error"));
     // The Sears paper rows: each halving of the step divides the L2 error by about 4.
@@ -390,8 +394,7 @@ fn accuracy_reports_a_ladder_with_second_order_and_writes_the_work_precision_plo
     assert!(
         text.contains("<svg") && text.contains("Work-precision") && text.contains("sears paper")
     );
-    let o = pounding(&["accuracy", "--plot", png.to_str().unwrap(), "--json"]);
-    assert!(o.status.success(), "{}", stderr(&o));
+    succeeds(&["accuracy", "--plot", png.to_str().unwrap(), "--json"]);
     let bytes = std::fs::read(&png).unwrap();
     assert!(bytes.starts_with(&[0x89, b'P', b'N', b'G']) && bytes.len() > 10_000);
     let err = stderr(&pounding(&[
@@ -440,7 +443,7 @@ fn impact_and_buildings_write_their_force_plot_as_png_or_svg() {
             && text.trim_end().ends_with("</svg>")
     );
     let big = dir.join("big.png");
-    let o = pounding(&[
+    succeeds(&[
         "impact",
         "--plot",
         big.to_str().unwrap(),
@@ -449,7 +452,6 @@ fn impact_and_buildings_write_their_force_plot_as_png_or_svg() {
         "--plot-scale",
         "1.5",
     ]);
-    assert!(o.status.success(), "{}", stderr(&o));
     let (width, height, _, _) = common::read_png(&big);
     assert_eq!((width, height), (1500, 900));
     for (flag, value) in [("--plot-size", "20x20"), ("--plot-scale", "0")] {
@@ -550,7 +552,7 @@ fn sweep_writes_csv_and_plot_and_refuses_bad_ranges_by_name() {
     let dir = std::env::temp_dir().join(format!("pounding-sweep-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let (csv, svg) = (dir.join("s.csv"), dir.join("s.svg"));
-    let o = pounding(&[
+    let o = succeeds(&[
         "sweep",
         "--param",
         "bar1.velocity",
@@ -565,7 +567,6 @@ fn sweep_writes_csv_and_plot_and_refuses_bad_ranges_by_name() {
         "--plot",
         svg.to_str().unwrap(),
     ]);
-    assert!(o.status.success(), "{}", stderr(&o));
     assert!(stdout(&o).contains("4 solves in"), "{}", stdout(&o));
     let text = std::fs::read_to_string(&csv).unwrap();
     let mut lines = text.lines();
@@ -686,7 +687,7 @@ fn xt_and_energy_exports_write_their_documented_columns_and_refuse_bad_requests(
         dir.join("xt.png"),
         dir.join("energy.csv"),
     );
-    let o = pounding(&[
+    succeeds(&[
         "impact",
         "--model",
         "wave",
@@ -697,7 +698,6 @@ fn xt_and_energy_exports_write_their_documented_columns_and_refuse_bad_requests(
         "--energy",
         energy.to_str().unwrap(),
     ]);
-    assert!(o.status.success(), "{}", stderr(&o));
     let text = std::fs::read_to_string(&csv).unwrap();
     let mut lines = text.lines();
     assert_eq!(lines.next(), Some("bar,x_m,t_s,stress_pa,velocity_m_s"));
@@ -717,7 +717,7 @@ fn xt_and_energy_exports_write_their_documented_columns_and_refuse_bad_requests(
     assert!(e.starts_with(
         "time_s,rigid_kinetic_j,wave_j,contact_j,dissipated_j,total_j,wave_bar1_j,wave_bar2_j\n"
     ));
-    let o = pounding(&[
+    succeeds(&[
         "impact",
         "--xt",
         png.to_str().unwrap(),
@@ -726,7 +726,6 @@ fn xt_and_energy_exports_write_their_documented_columns_and_refuse_bad_requests(
         "--plot-size",
         "600x400",
     ]);
-    assert!(o.status.success(), "{}", stderr(&o));
     let (w, h, _, _) = common::read_png(&png);
     assert_eq!((w, h), (600, 400));
     for (args, want) in [
@@ -756,7 +755,7 @@ fn gaps_reports_each_record_in_table_csv_json_and_plot_and_refuses_bad_records_b
     let dir = std::env::temp_dir().join(format!("pounding-gaps-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let (csv, plot) = (dir.join("gaps.csv"), dir.join("gaps.png"));
-    let o = pounding(&[
+    let o = succeeds(&[
         "gaps",
         "--preset",
         "mdof-3-5",
@@ -770,7 +769,6 @@ fn gaps_reports_each_record_in_table_csv_json_and_plot_and_refuses_bad_records_b
         plot.to_str().unwrap(),
         "--quiet",
     ]);
-    assert!(o.status.success(), "{}", stderr(&o));
     assert!(
         stdout(&o).contains("mean ratio to the minimum gap"),
         "{}",

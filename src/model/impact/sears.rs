@@ -34,30 +34,27 @@ use crate::model::scenario::{ImpactScenario, InputError, Reading};
 struct Channel {
     inv_z: f64,
     recur: Tap,
-    taps: [Tap; 2],
+    /// The displacement look-ups at the lags s_i1, s_i2. The first is `None` where it reads the
+    /// newest sample alone (lag 0: the collocated and end readings): its known part is zero,
+    /// and skipping it keeps the stored samples off the chain from one step to the next.
+    near: Option<Tap>,
+    far: Tap,
     /// Psi_{n+1} = (Phi_{n+1} + known) * gain: 1 / (1 - weight of the newest sample in the
     /// recursion), 1 unless the round trip is shorter than a step.
     gain: f64,
-    /// Sum of the taps' weights on the newest sample.
+    /// Sum of the displacement look-ups' weights on the newest sample.
     top: f64,
-    /// Whether the first tap reads the newest sample alone (lag 0: the collocated and end
-    /// readings), so that its known part is zero and the stored samples stay off the chain.
-    skip_first: bool,
 }
 
 impl Channel {
     /// The known parts of this bar's look-ups for the sample about to be pushed: the
-    /// recursion's, and the displacement taps' (without the newest sample's share).
+    /// recursion's, and the displacement look-ups' (without the newest sample's share).
     #[inline(always)]
     fn known(&self, psi: &Series) -> (f64, f64) {
-        let first = if self.skip_first {
-            0.0
-        } else {
-            self.taps[0].known_before_push(psi)
-        };
+        let near = self.near.map_or(0.0, |tap| tap.known_before_push(psi));
         (
             self.recur.known_before_push(psi),
-            first + self.taps[1].known_before_push(psi),
+            near + self.far.known_before_push(psi),
         )
     }
 
@@ -67,29 +64,21 @@ impl Channel {
     /// `psi.len() >= self.steady_from()`.
     #[inline(always)]
     unsafe fn known_steady(&self, psi: &Series) -> (f64, f64) {
-        // SAFETY: the caller's promise covers every tap read.
+        // SAFETY: the caller's promise covers every look-up.
         unsafe {
-            let first = if self.skip_first {
-                0.0
-            } else {
-                self.taps[0].known_steady(psi)
-            };
+            let near = self.near.map_or(0.0, |tap| tap.known_steady(psi));
             (
                 self.recur.known_steady(psi),
-                first + self.taps[1].known_steady(psi),
+                near + self.far.known_steady(psi),
             )
         }
     }
 
     /// The history length from which [`Channel::known_steady`] may read.
     fn steady_from(&self) -> usize {
-        let first = if self.skip_first {
-            0
-        } else {
-            self.taps[0].steady_from()
-        };
-        first
-            .max(self.taps[1].steady_from())
+        self.near
+            .map_or(0, |tap| tap.steady_from())
+            .max(self.far.steady_from())
             .max(self.recur.steady_from())
     }
 }
@@ -279,10 +268,10 @@ fn run(sc: &ImpactScenario, control: &Control, ws: &mut Workspace) -> Result<Run
         Channel {
             inv_z: 1.0 / z[i],
             recur,
-            taps,
+            near: (!taps[0].newest_only()).then_some(taps[0]),
+            far: taps[1],
             gain,
             top: taps[0].newest_weight() + taps[1].newest_weight(),
-            skip_first: taps[0].newest_only(),
         }
     });
     let Workspace {
