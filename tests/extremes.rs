@@ -3,6 +3,8 @@
 //! with finite numbers, or ends with a named refusal of the run (over the step budget, diverged).
 //! Never a panic, a NaN or a run without end.
 
+mod common;
+
 use pounding::io::building_settings::BuildingSetup;
 use pounding::io::settings::ImpactSetup;
 use pounding::model::building::{self, BuildingResult, ContactModel};
@@ -202,7 +204,7 @@ fn any_key(table: &'static [Setting]) -> impl Strategy<Value = (String, &'static
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 64, .. ProptestConfig::default() })]
+    #![proptest_config(common::proptest_config(64))]
 
     #[test]
     fn any_impact_key_anywhere_in_its_range_runs_finite_or_is_refused_by_name(

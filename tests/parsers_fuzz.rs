@@ -2,6 +2,8 @@
 //! parsed value or an error naming the line at fault (or the whole file, for a file with no
 //! data); never a panic, never an allocation the file does not justify.
 
+mod common;
+
 use pounding::io::building_settings::BuildingSetup;
 use pounding::io::motion::{Units, parse};
 use pounding::io::preset::{EMBEDDED, PresetError, apply_text, scene};
@@ -154,7 +156,7 @@ fn check_motion(name: &str, text: &str, dt: Option<f64>) -> Result<(), String> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 1000, .. ProptestConfig::default() })]
+    #![proptest_config(common::proptest_config(1000))]
 
     #[test]
     fn mutated_presets_parse_or_name_the_line(

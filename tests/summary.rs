@@ -1,6 +1,8 @@
 //! The summary path a sweep takes (no histories, a reused workspace) gives the numbers of a full
 //! solve bit for bit.
 
+mod common;
+
 use pounding::model::bar::{EndShape, Section};
 use pounding::model::contact::LawKind;
 use pounding::model::impact::{ModelKind, Workspace, solve, summary_with};
@@ -42,7 +44,7 @@ prop_compose! {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 200, .. ProptestConfig::default() })]
+    #![proptest_config(common::proptest_config(200))]
 
     #[test]
     fn a_summary_through_a_reused_workspace_is_the_full_solves_bit_for_bit(sc in scenario()) {

@@ -16,6 +16,10 @@ pub struct Control {
     /// A job of several solves: this solve is part `stage` of `stages`.
     stage: AtomicU32,
     stages: AtomicU32,
+    /// How many times the solve has looked (reported), and the look at which to stop by itself
+    /// (0: never).
+    looks: AtomicU32,
+    stop_at_look: AtomicU32,
 }
 
 static NEVER: Control = Control::new();
@@ -33,7 +37,18 @@ impl Control {
             done_ppm: AtomicU32::new(0),
             stage: AtomicU32::new(0),
             stages: AtomicU32::new(1),
+            looks: AtomicU32::new(0),
+            stop_at_look: AtomicU32::new(0),
         }
+    }
+
+    /// One that asks for a stop at the solve's `look`-th look (from 1): a cancel at a point of the
+    /// work fixed in advance, so a test of cancelling does not hang on how fast a machine is or
+    /// how its threads are scheduled.
+    pub fn stopping_at_look(look: u32) -> Self {
+        let c = Control::new();
+        c.stop_at_look.store(look, Ordering::Relaxed);
+        c
     }
 
     /// One that nobody cancels or reads.
@@ -69,12 +84,21 @@ impl Control {
             let whole = (stage + fraction.clamp(0.0, 1.0)) / stages;
             let ppm = (whole * 1e6) as u32;
             self.done_ppm.store(ppm, Ordering::Relaxed);
+            let look = self.looks.fetch_add(1, Ordering::Relaxed) + 1;
+            if look == self.stop_at_look.load(Ordering::Relaxed) {
+                self.cancel();
+            }
         }
         if self.cancelled() {
             Err(Cancelled)
         } else {
             Ok(())
         }
+    }
+
+    /// How many times the solve has looked at this control.
+    pub fn looks(&self) -> u32 {
+        self.looks.load(Ordering::Relaxed)
     }
 
     /// The fraction done last reported.
