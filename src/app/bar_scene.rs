@@ -8,6 +8,7 @@ use super::export::{Exporter, ShownPlot};
 use super::impact_params;
 use super::params::Fields;
 use super::playback::Playback;
+use super::visibility::Visibility;
 use super::worker::{Worker, internal_error};
 use super::xt_view::{XtDiagram, XtOptions, XtSource};
 use crate::io::preset;
@@ -60,6 +61,8 @@ pub struct BarScene {
     shown_force: ShownPlot,
     shown_approach: ShownPlot,
     shown_energy: ShownPlot,
+    /// The panels drawn (a lesson step's, or all).
+    pub visibility: Visibility,
 }
 
 fn run_job((setup, compare): Job, control: &Control) -> Output {
@@ -91,6 +94,7 @@ impl BarScene {
     pub fn new(ctx: &egui::Context, setup: ImpactSetup, compare: bool) -> Self {
         let waker = ctx.clone();
         let mut s = BarScene {
+            visibility: Visibility::default(),
             setup,
             compare,
             fields: Fields::default(),
@@ -213,11 +217,51 @@ impl BarScene {
         if let Some(e) = &self.error {
             ui.colored_label(Color32::from_rgb(220, 60, 50), e);
         }
-        let Some(solved) = &self.solved else {
+        if self.solved.is_none() {
             ui.label("solving...");
             return;
-        };
+        }
         let t = self.playback.t;
+        let show = self.visibility.clone();
+        if show.shows("bars") {
+            self.bars_ui(ui, t);
+        }
+        let clicked = if show.shows("xt") {
+            self.xt_ui(ui, exporter)
+        } else {
+            None
+        };
+        if let Some(t) = clicked {
+            self.playback.t = t;
+            self.playback.playing = false;
+        }
+        if (show.shows("bars") || show.shows("xt")) && self.playback.ui(ui) {
+            self.playback.playing = true;
+        }
+        if self.compare && show.shows("force") {
+            ui.horizontal(|ui| {
+                ui.label("show:");
+                for (i, m) in COMPARED.iter().enumerate() {
+                    ui.checkbox(&mut self.shown[i], m.name());
+                }
+            });
+        }
+        self.plots_ui(ui, exporter);
+        if !show.shows("readouts") {
+            return;
+        }
+        if !self.compare
+            && let Some(solved) = &self.solved
+        {
+            readouts_ui(ui, &solved.result, self.solve_time, self.estimate.as_ref());
+        } else {
+            compare_table(ui, &self.peers);
+        }
+    }
+
+    /// The animated bars (and in the comparison the lumped blocks below them).
+    fn bars_ui(&mut self, ui: &mut egui::Ui, t: f64) {
+        let Some(solved) = &self.solved else { return };
         let height = if self.compare { 150.0 } else { 190.0 };
         let (rect, _) = ui.allocate_exact_size(
             egui::vec2(ui.available_width(), height),
@@ -241,30 +285,6 @@ impl BarScene {
             if let Some(r) = lumped {
                 draw_lumped(ui, rect, r, t);
             }
-        }
-        let clicked = self.xt_ui(ui, exporter);
-        if let Some(t) = clicked {
-            self.playback.t = t;
-            self.playback.playing = false;
-        }
-        if self.playback.ui(ui) {
-            self.playback.playing = true;
-        }
-        if self.compare {
-            ui.horizontal(|ui| {
-                ui.label("show:");
-                for (i, m) in COMPARED.iter().enumerate() {
-                    ui.checkbox(&mut self.shown[i], m.name());
-                }
-            });
-        }
-        self.plots_ui(ui, exporter);
-        if !self.compare
-            && let Some(solved) = &self.solved
-        {
-            readouts_ui(ui, &solved.result, self.solve_time, self.estimate.as_ref());
-        } else {
-            compare_table(ui, &self.peers);
         }
     }
 
@@ -348,11 +368,73 @@ impl BarScene {
     fn plots_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
         let t_ms = self.playback.t * 1e3;
         let h = ((ui.available_height() - 160.0) / 2.0).clamp(120.0, 260.0);
-        let series = |r: &ImpactResult, f: &dyn Fn(usize) -> f64| -> Vec<[f64; 2]> {
-            let t: Vec<f64> = r.time_s.iter().map(|t| t * 1e3).collect();
-            let y: Vec<f64> = (0..r.time_s.len()).map(f).collect();
-            super::series::decimate(&t, &y, 1.0)
+        let show = self.visibility.clone();
+        if show.shows("force") {
+            self.force_plot_ui(ui, exporter, h, t_ms);
+        }
+        if !self.compare
+            && show.shows("approach")
+            && let Some(s) = &self.solved
+        {
+            let r = &s.result;
+            let pts = series(r, &|j| r.approach_m[j] * 1e6);
+            let response = Plot::new("approach")
+                .height(h)
+                .legend(Legend::default())
+                .x_axis_label("time [ms]")
+                .y_axis_label("approach [um]")
+                .link_axis(egui::Id::unique("bar-plots"), [true, false])
+                .show(ui, |p| {
+                    p.line(Line::new("approach", pts.clone()));
+                    p.vline(VLine::new("t", t_ms));
+                });
+            let b = response.transform.bounds();
+            self.shown_approach = ShownPlot {
+                title: format!("Approach: {}", self.setup.model.name()),
+                x_label: "time [ms]".into(),
+                y_label: "approach [um]".into(),
+                series: vec![("approach".into(), pts)],
+                bounds: Some((b.min(), b.max())),
+            };
+            exporter.buttons(ui, &self.shown_approach, "approach");
+        }
+        // Where the energy goes: the run's, or the chosen model's in the comparison.
+        if !show.shows("energy") {
+            return;
+        }
+        if self.compare {
+            ui.horizontal(|ui| {
+                ui.label("energy of");
+                egui::ComboBox::from_id_salt("energy-model")
+                    .selected_text(self.energy_model.name())
+                    .show_ui(ui, |ui| {
+                        for (m, _) in &self.peers {
+                            ui.selectable_value(&mut self.energy_model, *m, m.name());
+                        }
+                    });
+            });
+        }
+        let model = if self.compare {
+            self.energy_model
+        } else {
+            self.setup.model
         };
+        if let Some((_, s)) = self.peers.iter().find(|(m, _)| *m == model) {
+            self.shown_energy = energy_view::draw(
+                ui,
+                "energy",
+                &s.setup.scenario,
+                &s.result,
+                h,
+                t_ms,
+                format!("Energy: {}", model.name()),
+            );
+            exporter.buttons(ui, &self.shown_energy, "energy");
+        }
+    }
+
+    /// The contact force: the run's, or every model's shown in the comparison.
+    fn force_plot_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter, h: f32, t_ms: f64) {
         let mut force_lines = vec![];
         for (i, (m, s)) in self.peers.iter().enumerate() {
             let r = &s.result;
@@ -387,62 +469,14 @@ impl BarScene {
             bounds: Some((b.min(), b.max())),
         };
         exporter.buttons(ui, &self.shown_force, "force");
-        if !self.compare
-            && let Some(s) = &self.solved
-        {
-            let r = &s.result;
-            let pts = series(r, &|j| r.approach_m[j] * 1e6);
-            let response = Plot::new("approach")
-                .height(h)
-                .legend(Legend::default())
-                .x_axis_label("time [ms]")
-                .y_axis_label("approach [um]")
-                .link_axis(egui::Id::unique("bar-plots"), [true, false])
-                .show(ui, |p| {
-                    p.line(Line::new("approach", pts.clone()));
-                    p.vline(VLine::new("t", t_ms));
-                });
-            let b = response.transform.bounds();
-            self.shown_approach = ShownPlot {
-                title: format!("Approach: {}", self.setup.model.name()),
-                x_label: "time [ms]".into(),
-                y_label: "approach [um]".into(),
-                series: vec![("approach".into(), pts)],
-                bounds: Some((b.min(), b.max())),
-            };
-            exporter.buttons(ui, &self.shown_approach, "approach");
-        }
-        // Where the energy goes: the run's, or the chosen model's in the comparison.
-        if self.compare {
-            ui.horizontal(|ui| {
-                ui.label("energy of");
-                egui::ComboBox::from_id_salt("energy-model")
-                    .selected_text(self.energy_model.name())
-                    .show_ui(ui, |ui| {
-                        for (m, _) in &self.peers {
-                            ui.selectable_value(&mut self.energy_model, *m, m.name());
-                        }
-                    });
-            });
-        }
-        let model = if self.compare {
-            self.energy_model
-        } else {
-            self.setup.model
-        };
-        if let Some((_, s)) = self.peers.iter().find(|(m, _)| *m == model) {
-            self.shown_energy = energy_view::draw(
-                ui,
-                "energy",
-                &s.setup.scenario,
-                &s.result,
-                h,
-                t_ms,
-                format!("Energy: {}", model.name()),
-            );
-            exporter.buttons(ui, &self.shown_energy, "energy");
-        }
     }
+}
+
+/// A result's signal against time in ms, decimated for the screen.
+fn series(r: &ImpactResult, f: &dyn Fn(usize) -> f64) -> Vec<[f64; 2]> {
+    let t: Vec<f64> = r.time_s.iter().map(|t| t * 1e3).collect();
+    let y: Vec<f64> = (0..r.time_s.len()).map(f).collect();
+    super::series::decimate(&t, &y, 1.0)
 }
 
 /// Rigid blocks and a spring: the lumped reading, with the spring's compression exaggerated.

@@ -9,6 +9,7 @@ use super::export::{Exporter, ShownPlot};
 use super::params::Fields;
 use super::playback::Playback;
 use super::series::decimate;
+use super::visibility::Visibility;
 use super::worker::{Worker, internal_error};
 use super::xt_view::{XtDiagram, XtOptions, XtSource};
 use crate::io::building_settings::BuildingSetup;
@@ -74,6 +75,8 @@ pub struct BuildingScene {
     /// The slabs of the level shown, and their histories on the GPU, kept while the result and
     /// the level stay.
     xt_slabs: Option<SlabsShown>,
+    /// The panels drawn (a lesson step's, or all).
+    pub visibility: Visibility,
 }
 
 /// What the scene says when its solve was cancelled.
@@ -110,6 +113,7 @@ impl BuildingScene {
     pub fn new(ctx: &egui::Context, setup: BuildingSetup) -> Self {
         let waker = ctx.clone();
         let mut s = BuildingScene {
+            visibility: Visibility::default(),
             setup,
             fields: Fields::default(),
             worker: Worker::new(run_job, move || waker.request_repaint()),
@@ -240,8 +244,8 @@ impl BuildingScene {
             ui.label("solving...");
             return;
         };
+        let stats = s.drawing.motion.stats();
         let d = &s.drawing;
-        let stats = d.motion.stats();
         ui.label(format!(
             "{}: {:.2} s at {} s, PGA {:.3} g, PGV {:.3} m/s, Arias {:.2} m/s, 5% spectrum peaks at {:.2} s",
             d.motion.name,
@@ -252,6 +256,48 @@ impl BuildingScene {
             stats.arias_m_s,
             stats.predominant_period_s
         ));
+        let show = self.visibility.clone();
+        if show.shows("buildings") {
+            self.sway_ui(ui);
+        }
+        let Some(s) = &self.solved else { return };
+        let d = &s.drawing;
+        if show.shows("readouts") {
+            let r = &d.result;
+            ui.label(format!(
+            "{} impacts ({} contacts), max force {:.4e} N, peak roof displacement left {:.2} mm (without pounding {:.2}), right {:.2} mm ({:.2}); solve {}",
+            r.impacts.len(),
+            r.contacts.len(),
+            r.max_pounding_force_n,
+            r.peak_displacement_m[0] * 1e3,
+            s.baseline.peak_displacement_m[0] * 1e3,
+            r.peak_displacement_m[1] * 1e3,
+            s.baseline.peak_displacement_m[1] * 1e3,
+            super::ms(self.solve_time.as_secs_f64(), 1)
+        ));
+            if let Some(e) = &s.estimate {
+                ui.label(format!(
+                "error bound (against a twice finer run): max force {:.1e}, peak displacement {:.1e}, impact times {:.1e} (relative), impact count {:+}",
+                e.max_force, e.peak_displacement, e.impact_time, e.impact_count_change
+            )).on_hover_text("Twice the difference from the same run with every discretisation parameter halved: a bound on the error wherever the steps converge at order 1 or more");
+            }
+        }
+        if show.shows("gaps") {
+            gap_ui(ui, &s.gaps, d.setup.scenario.gap_m, d.result.levels.len());
+        }
+        self.plots_ui(ui, exporter);
+        if show.shows("xt") {
+            self.slabs_xt_ui(ui);
+        }
+        for w in &self.solved.as_ref().expect("shown").drawing.result.warnings {
+            ui.colored_label(Color32::from_rgb(220, 140, 40), format!("warning: {w}"));
+        }
+    }
+
+    /// The two buildings swaying, with the drift's exaggeration and the playback controls.
+    fn sway_ui(&mut self, ui: &mut egui::Ui) {
+        let Some(s) = &self.solved else { return };
+        let d = &s.drawing;
         let tall = d
             .setup
             .scenario
@@ -276,30 +322,6 @@ impl BuildingScene {
                 .labelled_by(label);
         });
         self.playback.ui(ui);
-        let r = &d.result;
-        ui.label(format!(
-            "{} impacts ({} contacts), max force {:.4e} N, peak roof displacement left {:.2} mm (without pounding {:.2}), right {:.2} mm ({:.2}); solve {}",
-            r.impacts.len(),
-            r.contacts.len(),
-            r.max_pounding_force_n,
-            r.peak_displacement_m[0] * 1e3,
-            s.baseline.peak_displacement_m[0] * 1e3,
-            r.peak_displacement_m[1] * 1e3,
-            s.baseline.peak_displacement_m[1] * 1e3,
-            super::ms(self.solve_time.as_secs_f64(), 1)
-        ));
-        if let Some(e) = &s.estimate {
-            ui.label(format!(
-                "error bound (against a twice finer run): max force {:.1e}, peak displacement {:.1e}, impact times {:.1e} (relative), impact count {:+}",
-                e.max_force, e.peak_displacement, e.impact_time, e.impact_count_change
-            )).on_hover_text("Twice the difference from the same run with every discretisation parameter halved: a bound on the error wherever the steps converge at order 1 or more");
-        }
-        gap_ui(ui, &s.gaps, d.setup.scenario.gap_m, r.levels.len());
-        self.plots_ui(ui, exporter);
-        self.slabs_xt_ui(ui);
-        for w in &self.solved.as_ref().expect("shown").drawing.result.warnings {
-            ui.colored_label(Color32::from_rgb(220, 140, 40), format!("warning: {w}"));
-        }
     }
 
     /// The x-t diagram of the two slabs at the level of the selected impact (the strongest
@@ -368,7 +390,8 @@ impl BuildingScene {
         }
     }
 
-    fn plots_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
+    /// Roof displacements with and without pounding.
+    fn displacements_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
         let Some(s) = &self.solved else { return };
         let r = &s.drawing.result;
         let t = self.playback.t;
@@ -416,31 +439,12 @@ impl BuildingScene {
             bounds: Some((b.min(), b.max())),
         };
         exporter.buttons(ui, &self.shown_displacements, "displacements");
-        if r.levels.len() > 1 {
-            ui.horizontal(|ui| {
-                let label = ui
-                    .label("level")
-                    .on_hover_text("The level the force plot and the impact list show")
-                    .id;
-                let shown = self.level.map_or("all levels".to_string(), |l| {
-                    format!("{} ({:.2} m)", l + 1, r.levels[l].elevation_m)
-                });
-                egui::ComboBox::from_id_salt("b-level")
-                    .selected_text(shown)
-                    .show_ui(ui, |ui| {
-                        ui.selectable_value(&mut self.level, None, "all levels");
-                        for (i, l) in r.levels.iter().enumerate() {
-                            ui.selectable_value(
-                                &mut self.level,
-                                Some(i),
-                                format!("{} ({:.2} m, {})", i + 1, l.elevation_m, l.kind.name()),
-                            );
-                        }
-                    })
-                    .response
-                    .labelled_by(label);
-            });
-        }
+    }
+
+    /// The pounding force at every level or the one picked; the time of a click in it.
+    fn force_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter, h: f32, t: f64) -> Option<f64> {
+        let s = self.solved.as_ref()?;
+        let r = &s.drawing.result;
         let zoom = self.zoom.take();
         let (force, name) = match self.level {
             Some(l) => (&r.level_force_n[l], format!("level {}", l + 1)),
@@ -477,60 +481,114 @@ impl BuildingScene {
             bounds: Some((b.min(), b.max())),
         };
         exporter.buttons(ui, &self.shown_force, "force");
+        if force_plot.response.clicked() {
+            let pos = force_plot.response.interact_pointer_pos()?;
+            return Some(force_plot.transform.value_from_position(pos).x);
+        }
+        None
+    }
+
+    /// The level the force plot and the impact list show, where there is more than one.
+    fn level_ui(&mut self, ui: &mut egui::Ui) {
+        let Some(s) = &self.solved else { return };
+        let r = &s.drawing.result;
+        if r.levels.len() > 1 {
+            ui.horizontal(|ui| {
+                let label = ui
+                    .label("level")
+                    .on_hover_text("The level the force plot and the impact list show")
+                    .id;
+                let shown = self.level.map_or("all levels".to_string(), |l| {
+                    format!("{} ({:.2} m)", l + 1, r.levels[l].elevation_m)
+                });
+                egui::ComboBox::from_id_salt("b-level")
+                    .selected_text(shown)
+                    .show_ui(ui, |ui| {
+                        ui.selectable_value(&mut self.level, None, "all levels");
+                        for (i, l) in r.levels.iter().enumerate() {
+                            ui.selectable_value(
+                                &mut self.level,
+                                Some(i),
+                                format!("{} ({:.2} m, {})", i + 1, l.elevation_m, l.kind.name()),
+                            );
+                        }
+                    })
+                    .response
+                    .labelled_by(label);
+            });
+        }
+    }
+
+    fn plots_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
+        let t = self.playback.t;
+        let h = 170.0;
+        let show = self.visibility.clone();
+        if show.shows("displacements") {
+            self.displacements_ui(ui, exporter);
+        }
+        if !show.shows("force") && !show.shows("impacts") {
+            return;
+        }
+        self.level_ui(ui);
+        let at = if show.shows("force") {
+            self.force_ui(ui, exporter, h, t)
+        } else {
+            None
+        };
+        let Some(s) = &self.solved else { return };
+        let r = &s.drawing.result;
         let shown: Vec<usize> = (0..r.impacts.len())
             .filter(|&i| self.level.is_none_or(|l| r.impacts[i].level == l))
             .collect();
-        ui.label("impacts (click one here or in the force plot to zoom on it):");
-        let mut clicked = None;
         // A click in the force plot picks the impact nearest in time.
-        if force_plot.response.clicked()
-            && let Some(pos) = force_plot.response.interact_pointer_pos()
-        {
-            let at = force_plot.transform.value_from_position(pos).x;
-            clicked = shown.iter().copied().min_by(|&a, &b| {
+        let mut clicked = at.and_then(|at| {
+            shown.iter().copied().min_by(|&a, &b| {
                 (r.impacts[a].start_s - at)
                     .abs()
                     .total_cmp(&(r.impacts[b].start_s - at).abs())
-            });
-        }
-        // A long list scrolls in its own box, so the slabs' diagram below stays in reach.
-        egui::ScrollArea::vertical()
-            .id_salt("impact-list")
-            .max_height(190.0)
-            .show(ui, |ui| {
-                egui::Grid::new("impacts")
-                    .striped(true)
-                    .num_columns(8)
-                    .show(ui, |ui| {
-                        for h in [
-                            "#",
-                            "start [s]",
-                            "duration [ms]",
-                            "peak force [N]",
-                            "impulse [N s]",
-                            "approach [m/s]",
-                            "contacts",
-                            "level",
-                        ] {
-                            ui.strong(h);
-                        }
-                        ui.end_row();
-                        for &i in &shown {
-                            let e = &r.impacts[i];
-                            if ui.button(format!("{}", i + 1)).clicked() {
-                                clicked = Some(i);
+            })
+        });
+        if show.shows("impacts") {
+            ui.label("impacts (click one here or in the force plot to zoom on it):");
+            // A long list scrolls in its own box, so the slabs' diagram below stays in reach.
+            egui::ScrollArea::vertical()
+                .id_salt("impact-list")
+                .max_height(190.0)
+                .show(ui, |ui| {
+                    egui::Grid::new("impacts")
+                        .striped(true)
+                        .num_columns(8)
+                        .show(ui, |ui| {
+                            for h in [
+                                "#",
+                                "start [s]",
+                                "duration [ms]",
+                                "peak force [N]",
+                                "impulse [N s]",
+                                "approach [m/s]",
+                                "contacts",
+                                "level",
+                            ] {
+                                ui.strong(h);
                             }
-                            ui.label(format!("{:.4}", e.start_s));
-                            ui.label(format!("{:.3}", e.duration_s() * 1e3));
-                            ui.label(format!("{:.4e}", e.peak_force_n));
-                            ui.label(format!("{:.4e}", e.impulse_ns));
-                            ui.label(format!("{:.4}", e.approach_velocity_m_s));
-                            ui.label(format!("{}", e.contacts.len()));
-                            ui.label(format!("{}", e.level + 1));
                             ui.end_row();
-                        }
-                    });
-            });
+                            for &i in &shown {
+                                let e = &r.impacts[i];
+                                if ui.button(format!("{}", i + 1)).clicked() {
+                                    clicked = Some(i);
+                                }
+                                ui.label(format!("{:.4}", e.start_s));
+                                ui.label(format!("{:.3}", e.duration_s() * 1e3));
+                                ui.label(format!("{:.4e}", e.peak_force_n));
+                                ui.label(format!("{:.4e}", e.impulse_ns));
+                                ui.label(format!("{:.4}", e.approach_velocity_m_s));
+                                ui.label(format!("{}", e.contacts.len()));
+                                ui.label(format!("{}", e.level + 1));
+                                ui.end_row();
+                            }
+                        });
+                });
+        }
         if let Some(i) = clicked {
             self.selected = Some(i);
             let e = &r.impacts[i];

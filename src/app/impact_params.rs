@@ -16,57 +16,65 @@ fn spec(key: &str) -> Spec<'static> {
 }
 
 fn bar_ui(ui: &mut egui::Ui, fields: &mut Fields, id: &str, bar: &mut Bar) -> bool {
-    let mut changed = false;
-    ui.horizontal(|ui| {
-        ui.label("material")
-            .on_hover_text("Sets E, nu and rho; the fields below can change them");
-        for m in MaterialPreset::ALL {
-            let selected = bar.material == m.material();
-            if ui.selectable_label(selected, m.name()).clicked() && !selected {
-                bar.material = m.material();
-                changed = true;
+    let mut changed = fields.gate(ui, &format!("{id}.material"), |ui| {
+        ui.horizontal(|ui| {
+            ui.label("material")
+                .on_hover_text("Sets E, nu and rho; the fields below can change them");
+            let mut changed = false;
+            for m in MaterialPreset::ALL {
+                let selected = bar.material == m.material();
+                if ui.selectable_label(selected, m.name()).clicked() && !selected {
+                    bar.material = m.material();
+                    changed = true;
+                }
             }
-        }
+            changed
+        })
+        .inner
     });
-    let mut row = |ui: &mut egui::Ui, key: &str, v: &mut f64| {
+    let row = |fields: &mut Fields, ui: &mut egui::Ui, key: &str, v: &mut f64| {
         fields.row(ui, &format!("{id}.{key}"), &spec(&format!("barN.{key}")), v)
     };
-    changed |= row(ui, "length", &mut bar.length_m);
+    changed |= row(fields, ui, "length", &mut bar.length_m);
     let mut radius = bar.radius_m();
-    if row(ui, "radius", &mut radius) {
+    if row(fields, ui, "radius", &mut radius) {
         bar.section = Section::Circular { radius_m: radius };
         changed = true;
     }
     let mut flat = bar.end == EndShape::Flat;
-    ui.horizontal(|ui| {
-        if ui
+    let radius_m = bar.radius_m();
+    changed |= fields.gate(ui, &format!("{id}.end_radius"), |ui| {
+        let clicked = ui
             .checkbox(&mut flat, "flat end")
             .on_hover_text(
                 "A flat end has no Hertz curvature; a rounded end's radius sets the Hertz stiffness",
             )
-            .changed()
-        {
+            .changed();
+        if clicked {
             bar.end = if flat {
                 EndShape::Flat
             } else {
-                EndShape::Rounded {
-                    radius_m: bar.radius_m(),
-                }
+                EndShape::Rounded { radius_m }
             };
-            changed = true;
         }
+        clicked
     });
     if let EndShape::Rounded { radius_m } = bar.end {
         let mut r = radius_m;
-        if row(ui, "end_radius", &mut r) {
+        if row(fields, ui, "end_radius", &mut r) {
             bar.end = EndShape::Rounded { radius_m: r };
             changed = true;
         }
     }
-    changed |= row(ui, "added_mass", &mut bar.added_mass_kg);
-    changed |= row(ui, "velocity", &mut bar.velocity_m_s);
-    changed |= row(ui, "youngs_modulus", &mut bar.material.youngs_modulus_pa);
-    changed |= row(ui, "density", &mut bar.material.density_kg_m3);
+    changed |= row(fields, ui, "added_mass", &mut bar.added_mass_kg);
+    changed |= row(fields, ui, "velocity", &mut bar.velocity_m_s);
+    changed |= row(
+        fields,
+        ui,
+        "youngs_modulus",
+        &mut bar.material.youngs_modulus_pa,
+    );
+    changed |= row(fields, ui, "density", &mut bar.material.density_kg_m3);
     changed
 }
 
@@ -79,26 +87,38 @@ pub fn ui(
 ) -> bool {
     let before = *setup;
     let sc = &mut setup.scenario;
-    egui::CollapsingHeader::new("Bar 1 (left, moving right)")
-        .default_open(true)
-        .show(ui, |ui| bar_ui(ui, fields, "bar1", &mut sc.bar1));
-    egui::CollapsingHeader::new("Bar 2 (right)")
-        .default_open(true)
-        .show(ui, |ui| bar_ui(ui, fields, "bar2", &mut sc.bar2));
-    egui::CollapsingHeader::new("Contact")
+    if fields.shows_group("bar1.") {
+        egui::CollapsingHeader::new("Bar 1 (left, moving right)")
+            .default_open(true)
+            .show(ui, |ui| bar_ui(ui, fields, "bar1", &mut sc.bar1));
+    }
+    if fields.shows_group("bar2.") {
+        egui::CollapsingHeader::new("Bar 2 (right)")
+            .default_open(true)
+            .show(ui, |ui| bar_ui(ui, fields, "bar2", &mut sc.bar2));
+    }
+    let contact_open = fields.shows_group("contact.") || fields.shows_group("sears.");
+    if contact_open {
+        egui::CollapsingHeader::new("Contact")
         .default_open(true)
         .show(ui, |ui| {
-            ui.horizontal(|ui| {
-                ui.label("law").on_hover_text(
-                    "Hertz F = k delta^1.5 for rounded ends, linear F = kL delta for flat ones",
-                );
-                ui.selectable_value(&mut sc.contact.law, LawKind::Hertz, "hertz");
-                ui.selectable_value(&mut sc.contact.law, LawKind::Linear, "linear");
+            fields.gate(ui, "contact.law", |ui| {
+                ui.horizontal(|ui| {
+                    ui.label("law").on_hover_text(
+                        "Hertz F = k delta^1.5 for rounded ends, linear F = kL delta for flat ones",
+                    );
+                    ui.selectable_value(&mut sc.contact.law, LawKind::Hertz, "hertz");
+                    ui.selectable_value(&mut sc.contact.law, LawKind::Linear, "linear");
+                });
+                false
             });
             let mut auto = sc.contact.stiffness.is_none();
-            ui.checkbox(&mut auto, "automatic stiffness").on_hover_text(
-                "Hertz from the ends and materials; linear from the paper's E A / (L / n)",
-            );
+            fields.gate(ui, "contact.stiffness", |ui| {
+                ui.checkbox(&mut auto, "automatic stiffness").on_hover_text(
+                    "Hertz from the ends and materials; linear from the paper's E A / (L / n)",
+                );
+                false
+            });
             if auto {
                 sc.contact.stiffness = None;
             } else {
@@ -124,13 +144,16 @@ pub fn ui(
                 &spec("contact.zone_scale"),
                 &mut sc.contact.zone_scale,
             );
-            ui.horizontal(|ui| {
-                ui.label("Sears reading").on_hover_text(
-                    "paper: delayed planes (not energy-consistent); collocated: a massless zone spring; end: the law at the bar ends (d -> 0)",
-                );
-                for r in Reading::ALL {
-                    ui.selectable_value(&mut sc.reading, r, r.name());
-                }
+            fields.gate(ui, "sears.reading", |ui| {
+                ui.horizontal(|ui| {
+                    ui.label("Sears reading").on_hover_text(
+                        "paper: delayed planes (not energy-consistent); collocated: a massless zone spring; end: the law at the bar ends (d -> 0)",
+                    );
+                    for r in Reading::ALL {
+                        ui.selectable_value(&mut sc.reading, r, r.name());
+                    }
+                });
+                false
             });
             fields.row(
                 ui,
@@ -139,35 +162,44 @@ pub fn ui(
                 &mut sc.contact.restitution,
             );
         });
-    egui::CollapsingHeader::new("Solver")
-        .default_open(false)
-        .show(ui, |ui| {
-            if show_model {
-                ui.horizontal_wrapped(|ui| {
-                    ui.label("model");
-                    for m in ModelKind::ALL {
-                        ui.selectable_value(&mut setup.model, m, m.name());
-                    }
-                });
-            }
-            let sc = &mut setup.scenario;
-            fields.row(ui, "solver.dt", &spec("solver.dt"), &mut sc.solver.dt_s);
-            fields.row(
-                ui,
-                "solver.window",
-                &spec("solver.window"),
-                &mut sc.solver.window_s,
-            );
-            let mut seg = sc.fe.segments as f64;
-            let segments = Spec {
-                min: 2.0,
-                max: 2000.0,
-                log: true,
-                ..spec("fe.segments")
-            };
-            if fields.row(ui, "fe.segments", &segments, &mut seg) {
-                sc.fe.segments = seg.round() as usize;
-            }
-        });
+    }
+    let solver_open = fields.shows_group("solver.")
+        || fields.shows_group("fe.")
+        || (show_model && fields.shows_group("model"));
+    if solver_open {
+        egui::CollapsingHeader::new("Solver")
+            .default_open(fields.lock.is_some())
+            .show(ui, |ui| {
+                if show_model {
+                    fields.gate(ui, "model", |ui| {
+                        ui.horizontal_wrapped(|ui| {
+                            ui.label("model");
+                            for m in ModelKind::ALL {
+                                ui.selectable_value(&mut setup.model, m, m.name());
+                            }
+                        });
+                        false
+                    });
+                }
+                let sc = &mut setup.scenario;
+                fields.row(ui, "solver.dt", &spec("solver.dt"), &mut sc.solver.dt_s);
+                fields.row(
+                    ui,
+                    "solver.window",
+                    &spec("solver.window"),
+                    &mut sc.solver.window_s,
+                );
+                let mut seg = sc.fe.segments as f64;
+                let segments = Spec {
+                    min: 2.0,
+                    max: 2000.0,
+                    log: true,
+                    ..spec("fe.segments")
+                };
+                if fields.row(ui, "fe.segments", &segments, &mut seg) {
+                    sc.fe.segments = seg.round() as usize;
+                }
+            });
+    }
     *setup != before
 }

@@ -23,6 +23,7 @@ mod series;
 mod slots;
 mod status;
 mod study_scene;
+mod visibility;
 pub mod worker;
 mod xt_view;
 

@@ -2,6 +2,7 @@
 //! anywhere in its validated range; a typed value outside it is refused and the range shown.
 //! Label, unit, help, both ranges and the scale come from the settings table (`model::settings`).
 
+use super::visibility::Lock;
 use crate::model::settings::{Kind, Range, Setting, find};
 use eframe::egui;
 use std::collections::HashMap;
@@ -48,16 +49,56 @@ impl Spec<'static> {
     }
 }
 
-/// Text being typed per field, and the last refusal.
+/// Text being typed per field, the last refusal, and which rows a lesson step leaves open.
 #[derive(Default)]
 pub struct Fields {
     text: HashMap<String, String>,
     refused: HashMap<String, String>,
+    /// `None`: every row may change.
+    pub lock: Option<Lock>,
 }
 
 impl Fields {
+    /// Draws `add` (the widgets of setting `key`) enabled, greyed out when a lesson step locks
+    /// the key, or not at all when locked rows are hidden; returns what `add` returned (false
+    /// when it was not drawn or could not change).
+    pub fn gate(
+        &self,
+        ui: &mut egui::Ui,
+        key: &str,
+        add: impl FnOnce(&mut egui::Ui) -> bool,
+    ) -> bool {
+        match &self.lock {
+            None => add(ui),
+            Some(l) if l.opens(key) => add(ui),
+            Some(l) if l.hide_locked => false,
+            Some(_) => {
+                ui.add_enabled_ui(false, add);
+                false
+            }
+        }
+    }
+
+    /// Whether a group of rows whose keys start with `prefix` has anything to show.
+    pub fn shows_group(&self, prefix: &str) -> bool {
+        self.lock
+            .as_ref()
+            .is_none_or(|l| !l.hide_locked || !l.closes_all(prefix))
+    }
+
     /// Shows one row; returns whether the value changed.
     pub fn row(&mut self, ui: &mut egui::Ui, id: &str, spec: &Spec, value: &mut f64) -> bool {
+        let open = self.lock.as_ref().is_none_or(|l| l.opens(id));
+        if !open && self.lock.as_ref().is_some_and(|l| l.hide_locked) {
+            return false;
+        }
+        let changed = ui
+            .add_enabled_ui(open, |ui| self.row_widgets(ui, id, spec, value))
+            .inner;
+        changed && open
+    }
+
+    fn row_widgets(&mut self, ui: &mut egui::Ui, id: &str, spec: &Spec, value: &mut f64) -> bool {
         let mut changed = false;
         ui.horizontal(|ui| {
             // The label names the slider and the field for screen readers too.
