@@ -5,6 +5,7 @@
 //! - `io`: presets (TOML), the settings keys, ground-motion files and the built-in record;
 //! - `study`: parallel sweeps, the paper's figures, the gap study (with progress and cancel);
 //! - `export`: plot images (PNG, SVG);
+//! - `lesson`: guided lessons (TOML steps, predictions, tasks checked on the result);
 //! - `app` and `render` (the `gui` feature, on by default): the window and its wgpu views.
 //!
 //! The `pounding` binary (`src/main.rs`, `src/cli/`) is the command-line front end and opens
@@ -14,6 +15,7 @@
 pub mod app;
 pub mod export;
 pub mod io;
+pub mod lesson;
 pub mod model;
 #[cfg(feature = "gui")]
 pub mod render;

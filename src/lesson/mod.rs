@@ -1,0 +1,372 @@
+//! Guided lessons: TOML files of ordered steps, each a scene to load, the panels to show, the
+//! settings to unlock, a prediction to make before the result shows and a task to meet on the
+//! live result. The format is documented in `docs/lessons.md`.
+//!
+//! - [`load`] reads a shipped lesson by name or a file by path, checking every name an
+//!   expression reads against its scene ([`Vocabulary`]) and every override against the
+//!   settings, so a typo is an error naming its line, never a silent false;
+//! - [`Context`] holds what a solved scene gives an expression; the window builds one from what
+//!   it holds, [`check`] from its own headless solves;
+//! - [`handout`] writes a printable worksheet.
+
+pub mod check;
+pub mod context;
+pub mod expr;
+pub mod handout;
+mod parse;
+pub mod solve;
+
+pub use check::{CheckReport, StepReport, check};
+pub use context::{Context, Vocabulary};
+pub use expr::{Expr, ExprError, Value};
+pub use solve::{SceneSetup, Solved, solve_step};
+
+use std::fmt;
+
+/// Lessons shipped with Pounding Lab, compiled in (name = file stem).
+pub const EMBEDDED: &[(&str, &str)] = &[
+    (
+        "lumped-or-wave",
+        include_str!("../../assets/lessons/lumped-or-wave.toml"),
+    ),
+    (
+        "reading-xt",
+        include_str!("../../assets/lessons/reading-xt.toml"),
+    ),
+    (
+        "where-the-energy-goes",
+        include_str!("../../assets/lessons/where-the-energy-goes.toml"),
+    ),
+    (
+        "soft-and-stiff-contact",
+        include_str!("../../assets/lessons/soft-and-stiff-contact.toml"),
+    ),
+    (
+        "buildings-that-pound",
+        include_str!("../../assets/lessons/buildings-that-pound.toml"),
+    ),
+];
+
+/// A lesson: what it is for, and its steps in order.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Lesson {
+    /// The file stem (or the file's path for a user's file).
+    pub name: String,
+    /// Where it was read from, for error messages.
+    pub source: String,
+    pub title: String,
+    pub audience: String,
+    pub duration_min: u32,
+    pub goals: Vec<String>,
+    /// The model's limits and the usual misconceptions (the teacher's version only).
+    pub teacher_notes: String,
+    pub steps: Vec<Step>,
+}
+
+/// Which scene a step loads.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LessonScene {
+    /// One impact through one model.
+    Bar,
+    /// The same impact through the compared models ([`context::COMPARE_MODELS`]).
+    Compare,
+    /// Two buildings in an earthquake.
+    Buildings,
+}
+
+impl LessonScene {
+    pub const ALL: [LessonScene; 3] = [LessonScene::Bar, LessonScene::Compare, LessonScene::Buildings];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            LessonScene::Bar => "bar",
+            LessonScene::Compare => "compare",
+            LessonScene::Buildings => "buildings",
+        }
+    }
+
+    pub fn from_name(s: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|k| k.name() == s)
+    }
+
+    /// The preset a step of this scene loads when it names none.
+    pub fn default_preset(self) -> &'static str {
+        match self {
+            LessonScene::Bar | LessonScene::Compare => crate::io::preset::DEFAULT_PRESET,
+            LessonScene::Buildings => "paper-buildings",
+        }
+    }
+}
+
+/// A panel or plot a step shows (the others are hidden).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Panel {
+    /// The animated bars (in compare: the Sears bars and the lumped blocks).
+    Bars,
+    /// The swaying buildings.
+    Buildings,
+    /// Force against time.
+    Force,
+    /// The contact's approach against time.
+    Approach,
+    /// The buildings' roof displacements against time.
+    Displacements,
+    /// The numbers: peak force, duration, e, a tau, ...
+    Readouts,
+    /// The space-time diagram of the waves.
+    Xt,
+    /// Where the energy went.
+    Energy,
+    /// The buildings' impacts listed.
+    Impacts,
+    /// The gap assessment against ABS and SRSS.
+    Gaps,
+}
+
+impl Panel {
+    pub const ALL: [Panel; 10] = [
+        Panel::Bars,
+        Panel::Buildings,
+        Panel::Force,
+        Panel::Approach,
+        Panel::Displacements,
+        Panel::Readouts,
+        Panel::Xt,
+        Panel::Energy,
+        Panel::Impacts,
+        Panel::Gaps,
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Panel::Bars => "bars",
+            Panel::Buildings => "buildings",
+            Panel::Force => "force",
+            Panel::Approach => "approach",
+            Panel::Displacements => "displacements",
+            Panel::Readouts => "readouts",
+            Panel::Xt => "xt",
+            Panel::Energy => "energy",
+            Panel::Impacts => "impacts",
+            Panel::Gaps => "gaps",
+        }
+    }
+
+    pub fn from_name(s: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|p| p.name() == s)
+    }
+
+    /// Whether a scene has this panel.
+    pub fn in_scene(self, scene: LessonScene) -> bool {
+        match self {
+            Panel::Force | Panel::Readouts | Panel::Energy => true,
+            Panel::Bars | Panel::Approach | Panel::Xt => scene != LessonScene::Buildings,
+            Panel::Buildings | Panel::Displacements | Panel::Impacts | Panel::Gaps => {
+                scene == LessonScene::Buildings
+            }
+        }
+    }
+}
+
+/// One step: a short text, the scene to load, what shows, what may change, and optionally a
+/// prediction and a task.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Step {
+    pub title: String,
+    pub text: String,
+    /// The line of the step's `[[step]]` header.
+    pub line: usize,
+    pub scene: LessonScene,
+    /// A preset name or path; `None` for the scene's default.
+    pub preset: Option<String>,
+    /// `--set` overrides: (key, value, line).
+    pub set: Vec<(String, String, usize)>,
+    pub show: Vec<Panel>,
+    /// The settings keys the student may change (the rest stay locked).
+    pub unlock: Vec<String>,
+    pub prediction: Option<Prediction>,
+    pub task: Option<Task>,
+    /// Statements the step's text and explanation make, each checked on the solved step.
+    pub asserts: Vec<Expr>,
+}
+
+/// A question the student answers before the result views appear.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Prediction {
+    /// Pick one option. `answer` counts from 0 (the file counts from 1); `confirm` is an
+    /// expression over the result that holds exactly when that option is right, so the answer
+    /// key is checked against the model.
+    Choice {
+        question: String,
+        options: Vec<String>,
+        answer: usize,
+        confirm: Expr,
+        explanation: String,
+    },
+    /// A number: right when within `tolerance` (relative: |x - answer| <= tolerance |answer|)
+    /// of `answer`, an expression over the result.
+    Number {
+        question: String,
+        unit: String,
+        answer: Expr,
+        tolerance: f64,
+        explanation: String,
+    },
+}
+
+/// How a student's answer fared.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Judgement {
+    pub correct: bool,
+    /// The right answer as shown: the option's text, or the number with its unit.
+    pub expected: String,
+}
+
+impl Prediction {
+    pub fn question(&self) -> &str {
+        match self {
+            Prediction::Choice { question, .. } | Prediction::Number { question, .. } => question,
+        }
+    }
+
+    pub fn explanation(&self) -> &str {
+        match self {
+            Prediction::Choice { explanation, .. } | Prediction::Number { explanation, .. } => {
+                explanation
+            }
+        }
+    }
+
+    /// The right answer as shown, computed from the run.
+    pub fn expected(&self, ctx: &Context) -> Result<String, ExprError> {
+        match self {
+            Prediction::Choice {
+                options, answer, ..
+            } => Ok(options[*answer].clone()),
+            Prediction::Number { answer, unit, .. } => {
+                let x = answer.number(ctx)?;
+                Ok(format!("{} {unit}", significant(x, 3)).trim_end().to_string())
+            }
+        }
+    }
+
+    /// Judges a choice (its index, from 0) against the answer key.
+    pub fn judge_choice(&self, chosen: usize, ctx: &Context) -> Result<Judgement, ExprError> {
+        let expected = self.expected(ctx)?;
+        match self {
+            Prediction::Choice { answer, .. } => Ok(Judgement {
+                correct: chosen == *answer,
+                expected,
+            }),
+            Prediction::Number { .. } => Err(ExprError::Type(
+                "this prediction wants a number, not a choice".into(),
+            )),
+        }
+    }
+
+    /// Judges a number against the run's answer and the tolerance.
+    pub fn judge_number(&self, x: f64, ctx: &Context) -> Result<Judgement, ExprError> {
+        match self {
+            Prediction::Number {
+                answer, tolerance, ..
+            } => Ok(Judgement {
+                correct: x.is_finite() && expr::within(x, answer.number(ctx)?, *tolerance),
+                expected: self.expected(ctx)?,
+            }),
+            Prediction::Choice { .. } => Err(ExprError::Type(
+                "this prediction wants a choice, not a number".into(),
+            )),
+        }
+    }
+}
+
+/// A number to `digits` significant figures, plain or in exponent form.
+pub fn significant(x: f64, digits: usize) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return format!("{x}");
+    }
+    let magnitude = x.abs().log10().floor() as i32;
+    if (-3..5).contains(&magnitude) {
+        let decimals = (digits as i32 - 1 - magnitude).max(0) as usize;
+        format!("{x:.decimals$}")
+    } else {
+        format!("{x:.prec$e}", prec = digits.saturating_sub(1))
+    }
+}
+
+/// A goal on the live result: met the moment a setting change makes `goal` true.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Task {
+    pub goal: Expr,
+    pub text: String,
+    pub hint: String,
+    /// Overrides that meet the goal (a scripted slider change): `--check` asserts the goal is
+    /// not met before them and is met after. (key, value, line).
+    pub solution: Vec<(String, String, usize)>,
+}
+
+/// A lesson that could not be read or checked: where, which field, why.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub struct LessonError {
+    /// The file, or `lesson NAME` for a shipped one.
+    pub file: String,
+    pub line: Option<usize>,
+    /// The field: `step[2].task.goal`, `title`, ...
+    pub field: Option<String>,
+    pub message: String,
+}
+
+impl fmt::Display for LessonError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}", self.file)?;
+        if let Some(l) = self.line {
+            write!(f, ", line {l}")?;
+        }
+        if let Some(k) = &self.field {
+            write!(f, ", {k}")?;
+        }
+        write!(f, ": {}", self.message)
+    }
+}
+
+/// The shipped lessons' names.
+pub fn builtin_names() -> Vec<&'static str> {
+    EMBEDDED.iter().map(|(n, _)| *n).collect()
+}
+
+/// A shipped lesson by name.
+pub fn builtin(name: &str) -> Result<Lesson, LessonError> {
+    let (n, text) = EMBEDDED.iter().find(|(n, _)| *n == name).ok_or_else(|| LessonError {
+        file: name.to_string(),
+        line: None,
+        field: None,
+        message: format!(
+            "no such lesson; shipped lessons: {}",
+            builtin_names().join(", ")
+        ),
+    })?;
+    parse::parse(text, n, &format!("lesson {n}"))
+}
+
+/// A lesson from text (`source` names it in errors).
+pub fn parse_text(text: &str, name: &str, source: &str) -> Result<Lesson, LessonError> {
+    parse::parse(text, name, source)
+}
+
+/// A lesson by shipped name, or a file by path (a path wins where both exist).
+pub fn load(name_or_path: &str) -> Result<Lesson, LessonError> {
+    let path = std::path::Path::new(name_or_path);
+    if path.is_file() {
+        let text = std::fs::read_to_string(path).map_err(|e| LessonError {
+            file: name_or_path.to_string(),
+            line: None,
+            field: None,
+            message: format!("cannot read: {e}"),
+        })?;
+        let stem = path
+            .file_stem()
+            .map_or_else(|| name_or_path.to_string(), |s| s.to_string_lossy().into());
+        return parse::parse(&text, &stem, name_or_path);
+    }
+    builtin(name_or_path)
+}
