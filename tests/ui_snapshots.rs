@@ -67,3 +67,26 @@ fn building_scene_down_to_the_slabs_space_time_diagram_matches_its_snapshot() {
     // Tall enough for the impact list and the x-t diagram of the strongest impact's slabs.
     snapshot_sized(SceneKind::Buildings, 2.6537, "scene-buildings-xt", 1500.0);
 }
+
+#[test]
+fn lecture_mode_at_projector_size_matches_its_snapshot() {
+    if common::adapter_or_skip().is_none() {
+        return;
+    }
+    HIDE_TIMINGS.store(true, std::sync::atomic::Ordering::Relaxed);
+    let launch = Launch {
+        lesson: Some("lumped-or-wave".into()),
+        lesson_step: Some(2),
+        lecture: true,
+        ..Default::default()
+    };
+    let mut harness = Harness::builder()
+        .with_size(egui::vec2(1280.0, 720.0) / pounding::app::LECTURE_ZOOM)
+        .wgpu()
+        .build_eframe(|cc| PoundingApp::new(cc, launch));
+    common::settle(&mut harness, "lecture");
+    harness.snapshot_options(
+        "lecture-mode",
+        &SnapshotOptions::new().max_failed_pixels(MAX_FAILED_PIXELS),
+    );
+}

@@ -194,6 +194,17 @@ impl BarScene {
         Ok(())
     }
 
+    /// What a lesson's expressions read: the settings the results were solved with and every
+    /// model's run; `None` while a solve is under way (the results would be stale).
+    pub fn lesson_context(&self) -> Option<crate::lesson::Context> {
+        if self.busy() || self.peers.is_empty() {
+            return None;
+        }
+        let setup = &self.peers[0].1.setup;
+        let runs: Vec<_> = self.peers.iter().map(|(m, s)| (*m, &s.result)).collect();
+        Some(crate::lesson::Context::impact(setup, &runs))
+    }
+
     pub fn params_ui(&mut self, ui: &mut egui::Ui) {
         if impact_params::ui(ui, &mut self.fields, &mut self.setup, !self.compare) {
             self.request();
@@ -378,6 +389,7 @@ impl BarScene {
         {
             let r = &s.result;
             let pts = series(r, &|j| r.approach_m[j] * 1e6);
+            let width = super::lecture::line_width(ui);
             let response = Plot::new("approach")
                 .height(h)
                 .legend(Legend::default())
@@ -385,7 +397,7 @@ impl BarScene {
                 .y_axis_label("approach [um]")
                 .link_axis(egui::Id::unique("bar-plots"), [true, false])
                 .show(ui, |p| {
-                    p.line(Line::new("approach", pts.clone()));
+                    p.line(Line::new("approach", pts.clone()).width(width));
                     p.vline(VLine::new("t", t_ms));
                 });
             let b = response.transform.bounds();
@@ -443,6 +455,7 @@ impl BarScene {
                 force_lines.push((m.name().to_string(), series(r, &|j| r.force_n[j] * 1e-3)));
             }
         }
+        let width = super::lecture::line_width(ui);
         let response = Plot::new("force")
             .height(h)
             .legend(Legend::default())
@@ -452,7 +465,11 @@ impl BarScene {
             .show(ui, |p| {
                 for (name, pts) in &force_lines {
                     // Wave theory jumps (repeated times): no band aggregation, which would fill them.
-                    p.line(Line::new(name.as_str(), pts.clone()).allow_band(false));
+                    p.line(
+                        Line::new(name.as_str(), pts.clone())
+                            .allow_band(false)
+                            .width(width),
+                    );
                 }
                 p.vline(VLine::new("t", t_ms));
             });

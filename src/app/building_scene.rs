@@ -205,6 +205,25 @@ impl BuildingScene {
         }
     }
 
+    /// What a lesson's expressions read: the run, the run without contact and the gaps; `None`
+    /// while a solve is under way.
+    pub fn lesson_context(&self) -> Option<crate::lesson::Context> {
+        if self.busy() {
+            return None;
+        }
+        let s = self.solved.as_ref()?;
+        Some(crate::lesson::Context::buildings(
+            &s.drawing.setup,
+            &s.drawing.result,
+            Some(&s.baseline),
+        ))
+    }
+
+    /// Which settings a lesson step leaves open.
+    pub fn set_lock(&mut self, lock: Option<super::visibility::Lock>) {
+        self.fields.lock = lock;
+    }
+
     pub fn params_ui(&mut self, ui: &mut egui::Ui) {
         let before = self.setup.clone();
         super::building_params::ui(ui, &mut self.fields, &mut self.setup, &mut self.motion_path);
@@ -414,6 +433,7 @@ impl BuildingScene {
                 decimate(&s.baseline.time_s, &s.baseline.displacement_m[1], 1e3),
             ),
         ];
+        let width = super::lecture::line_width(ui);
         let disp_plot = Plot::new("b-disp")
             .height(h)
             .legend(Legend::default())
@@ -421,7 +441,7 @@ impl BuildingScene {
             .y_axis_label("roof displacement [mm]")
             .show(ui, |p| {
                 for (i, (name, line)) in disp_lines.iter().enumerate() {
-                    let l = Line::new(name.as_str(), line.clone());
+                    let l = Line::new(name.as_str(), line.clone()).width(width);
                     p.line(if i >= 2 {
                         l.style(egui_plot::LineStyle::dashed_loose())
                     } else {
@@ -452,13 +472,18 @@ impl BuildingScene {
         };
         let force_pts = decimate(&r.time_s, force, 1e-6);
         let top = force.iter().cloned().fold(0.0, f64::max).max(1.0);
+        let width = super::lecture::line_width(ui);
         let force_plot = Plot::new("b-force")
             .height(h)
             .legend(Legend::default())
             .x_axis_label("time [s]")
             .y_axis_label("pounding force [MN]")
             .show(ui, |p| {
-                p.line(Line::new(name.as_str(), force_pts.clone()).allow_band(false));
+                p.line(
+                    Line::new(name.as_str(), force_pts.clone())
+                        .allow_band(false)
+                        .width(width),
+                );
                 p.vline(VLine::new("t", t));
                 if let Some((a, b)) = zoom {
                     p.set_plot_bounds(PlotBounds::from_min_max(

@@ -56,6 +56,7 @@ pub fn draw(
     }
     let total: Vec<[f64; 2]> = (0..n).map(|k| [t[k], h.total_j(k)]).collect();
     let line_colour = ui.visuals().text_color();
+    let width = super::lecture::line_width(ui);
     let response = Plot::new(id)
         .height(height)
         .legend(Legend::default())
@@ -75,7 +76,11 @@ pub fn draw(
                         .allow_hover(false),
                 );
             }
-            p.line(Line::new("total", total.clone()).color(line_colour));
+            p.line(
+                Line::new("total", total.clone())
+                    .color(line_colour)
+                    .width(width),
+            );
             p.vline(VLine::new("t", t_ms));
         });
     let b = response.transform.bounds();

@@ -40,6 +40,12 @@ pub struct Launch {
     pub time_s: Option<f64>,
     /// Save a screenshot here before closing (with `exit_after_frames`).
     pub screenshot: Option<std::path::PathBuf>,
+    /// Open this lesson (a shipped name or a file).
+    pub lesson: Option<String>,
+    /// At this step, counted from 1 (without it, where the lesson was left).
+    pub lesson_step: Option<usize>,
+    /// Start in lecture mode.
+    pub lecture: bool,
 }
 
 /// Set by snapshot tests: wall-clock timings (which differ run to run) print as "-".

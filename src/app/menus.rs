@@ -11,6 +11,17 @@ impl PoundingApp {
             ui.menu_button("File", |ui| self.file_menu(ui))
                 .response
                 .on_hover_text("Exports: plots, screenshots");
+            ui.menu_button("Lessons", |ui| self.lessons_menu(ui))
+                .response
+                .on_hover_text("Guided lessons: predict, observe, explain");
+            ui.menu_button("View", |ui| self.view_menu(ui))
+                .response
+                .on_hover_text("Lecture mode and the theme");
+            // In a lesson shown in lecture mode the step decides the scene and the settings:
+            // the bar keeps only the menus, readable at 1280 x 720.
+            if self.lecture && self.lesson.is_some() {
+                return;
+            }
             ui.separator();
             ui.selectable_value(&mut self.scene, SceneKind::BarImpact, "Bar impact")
                 .on_hover_text("One impact, one model, every readout");
@@ -93,6 +104,53 @@ impl PoundingApp {
                 self.help = !self.help;
             }
         });
+    }
+
+    fn lessons_menu(&mut self, ui: &mut egui::Ui) {
+        for name in crate::lesson::builtin_names() {
+            let title = crate::lesson::builtin(name)
+                .map(|l| l.title)
+                .unwrap_or_else(|e| e.to_string());
+            let done = self.progress.0.get(name).map(|p| p.step + 1);
+            let label = match done {
+                Some(k) => format!("{title} (at step {k})"),
+                None => title,
+            };
+            if ui.button(label).on_hover_text(name).clicked() {
+                let step = self.resume_step(name);
+                self.message = self.open_lesson(name, step).err().map(|e| (e, true));
+                ui.close();
+            }
+        }
+        ui.separator();
+        ui.horizontal(|ui| {
+            let label = ui.label("lesson file").id;
+            ui.add(egui::TextEdit::singleline(&mut self.lesson_path).desired_width(160.0))
+                .labelled_by(label);
+            if ui.button("Open lesson").clicked() {
+                let path = self.lesson_path.clone();
+                self.message = self.open_lesson(&path, 0).err().map(|e| (e, true));
+                ui.close();
+            }
+        });
+        if self.lesson.is_some() && ui.button("Leave the lesson").clicked() {
+            self.close_lesson();
+            ui.close();
+        }
+    }
+
+    fn view_menu(&mut self, ui: &mut egui::Ui) {
+        let mut lecture = self.lecture;
+        if ui
+            .checkbox(&mut lecture, "Lecture mode (F5)")
+            .on_hover_text(
+                "Large and high-contrast for a projector; in a lesson only the step's settings",
+            )
+            .changed()
+        {
+            self.set_lecture(ui.ctx(), lecture);
+            ui.close();
+        }
     }
 
     fn file_menu(&mut self, ui: &mut egui::Ui) {

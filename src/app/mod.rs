@@ -12,6 +12,9 @@ mod energy_view;
 mod export;
 mod impact_params;
 mod launch;
+mod lecture;
+mod lesson_panel;
+pub mod lesson_player;
 mod menus;
 mod paper_figures;
 mod params;
@@ -35,6 +38,8 @@ use eframe::egui;
 use scene::Scene;
 
 pub use launch::{HIDE_TIMINGS, Launch, SceneKind};
+pub use lecture::ZOOM as LECTURE_ZOOM;
+pub use lesson_player::LessonPlayer;
 use persistence::{BUILDINGS_KEY, COMPARE_KEY, IMPACT_KEY, STUDY_KEY, UI_KEY, restore};
 use status::ms;
 use std::time::Instant;
@@ -58,6 +63,13 @@ pub struct PoundingApp {
     ui_ms: f64,
     frames: u64,
     launch: Launch,
+    /// The lesson being played, and every lesson's progress.
+    lesson: Option<lesson_player::LessonPlayer>,
+    progress: lesson_player::Progress,
+    /// Lecture mode: large, high-contrast, only what the step needs.
+    lecture: bool,
+    /// A lesson file's path typed in the Lessons menu.
+    lesson_path: String,
 }
 
 impl PoundingApp {
@@ -158,7 +170,12 @@ impl PoundingApp {
         {
             errors.push(e);
         }
-        PoundingApp {
+        let (progress, progress_error) = lesson_player::Progress::from_stored(
+            storage.and_then(|s| s.get_string(lesson_player::PROGRESS_KEY)),
+        );
+        errors.extend(progress_error);
+        lecture::apply(ctx, launch.lecture, dark);
+        let mut app = PoundingApp {
             scene,
             bar,
             compare,
@@ -182,8 +199,37 @@ impl PoundingApp {
             screenshot_pending: false,
             ui_ms: 0.0,
             frames: 0,
+            lesson: None,
+            progress,
+            lecture: launch.lecture,
+            lesson_path: "lesson.toml".into(),
             launch,
+        };
+        if let Some(name) = app.launch.lesson.clone() {
+            // `--step K` counts from 1; without it the lesson resumes where it was left.
+            let step = match app.launch.lesson_step {
+                Some(k) => k.saturating_sub(1),
+                None => app.resume_step(&name),
+            };
+            if let Err(e) = app.open_lesson(&name, step) {
+                app.message = Some((e, true));
+            }
         }
+        app
+    }
+
+    /// The step a lesson was left at (from 0).
+    fn resume_step(&self, name: &str) -> usize {
+        let stem = std::path::Path::new(name)
+            .file_stem()
+            .map_or(name.to_string(), |s| s.to_string_lossy().into_owned());
+        self.progress.0.get(&stem).map_or(0, |p| p.step)
+    }
+
+    /// Lecture mode on or off.
+    pub fn set_lecture(&mut self, ctx: &egui::Context, on: bool) {
+        self.lecture = on;
+        lecture::apply(ctx, on, self.dark);
     }
 
     /// The bar scene on screen (the building scene when that is shown falls back to the bar
@@ -203,6 +249,16 @@ impl PoundingApp {
             SceneKind::Buildings => self.buildings.playback.t,
             SceneKind::Study => self.study.playback.t,
         }
+    }
+
+    /// The scene on screen.
+    pub fn scene_kind(&self) -> SceneKind {
+        self.scene
+    }
+
+    /// Whether lecture mode is on.
+    pub fn lecture(&self) -> bool {
+        self.lecture
     }
 
     /// A solve is under way in some scene.
@@ -241,6 +297,7 @@ impl eframe::App for PoundingApp {
         let start = Instant::now();
         let ctx = ui.ctx().clone();
         self.keys(&ctx);
+        self.lesson_keys(&ctx);
         let dt = ctx.input(|i| i.stable_dt) as f64;
         for s in [&mut self.bar, &mut self.compare] {
             s.poll();
@@ -271,16 +328,40 @@ impl eframe::App for PoundingApp {
                 Err(e) => (e, true),
             });
         }
+        if self.lecture && !lecture::holds(&ctx) {
+            lecture::apply(&ctx, true, self.dark);
+        }
+        self.lesson_frame();
         self.playback().advance(dt.min(0.1));
         egui::Panel::top("top").show(ui, |ui| self.top_bar(ui));
         self.status_bar(ui);
+        let width = if self.lecture { 250.0 } else { 380.0 };
         egui::Panel::left("params")
             .resizable(true)
-            .default_size(380.0)
+            .default_size(width)
             .show(ui, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| self.shown_mut().0.params_ui(ui));
+                egui::ScrollArea::vertical().show(ui, |ui| {
+                    if self.lesson.is_some() {
+                        self.lesson_ui(ui);
+                        ui.separator();
+                    }
+                    self.shown_mut().0.params_ui(ui);
+                });
             });
+        let hidden = self.lesson_hides_results();
         egui::CentralPanel::default().show(ui, |ui| {
+            if hidden {
+                ui.add_space(40.0);
+                ui.vertical_centered(|ui| {
+                    ui.label(
+                        egui::RichText::new(
+                            "Make your prediction in the lesson panel:\nthe results appear once you have answered.",
+                        )
+                        .size(20.0),
+                    );
+                });
+                return;
+            }
             let (scene, exporter) = self.shown_mut();
             egui::ScrollArea::vertical().show(ui, |ui| scene.main_ui(ui, exporter));
         });

@@ -35,6 +35,11 @@ pub(super) fn save(app: &PoundingApp, storage: &mut dyn eframe::Storage) {
     storage.set_string(IMPACT_KEY, preset::impact_to_toml(&app.bar.setup));
     storage.set_string(COMPARE_KEY, preset::impact_to_toml(&app.compare.setup));
     storage.set_string(STUDY_KEY, app.study.state());
+    let mut progress = app.progress.clone();
+    if let Some(p) = &app.lesson {
+        p.record(&mut progress);
+    }
+    storage.set_string(super::lesson_player::PROGRESS_KEY, progress.to_stored());
     storage.set_string(
         BUILDINGS_KEY,
         preset::buildings_to_toml(&app.buildings.setup),

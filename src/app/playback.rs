@@ -42,7 +42,7 @@ impl Playback {
     /// Play/pause, step, speed and scrubber; returns whether the user asked for a restart.
     pub fn ui(&mut self, ui: &mut egui::Ui) -> bool {
         let mut restart = false;
-        ui.horizontal(|ui| {
+        ui.horizontal_wrapped(|ui| {
             if ui
                 .button(if self.playing { "Pause" } else { "Play" })
                 .on_hover_text("Play or pause (space)")

@@ -93,6 +93,7 @@ pub fn draw(
             text.to_string()
         }
     };
+    let width = super::lecture::line_width(ui);
     let mut p = Plot::new(id)
         .height(height)
         .legend(Legend::default())
@@ -116,7 +117,11 @@ pub fn draw(
     let response = p.show(ui, |p| {
         for (name, pts) in &series {
             // Wave theory's jumps (repeated x): no band aggregation, which would fill them.
-            p.line(Line::new(name.as_str(), pts.clone()).allow_band(false));
+            p.line(
+                Line::new(name.as_str(), pts.clone())
+                    .allow_band(false)
+                    .width(width),
+            );
             if plot.markers {
                 p.points(Points::new(name.as_str(), pts.clone()).radius(2.5));
             }

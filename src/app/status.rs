@@ -56,14 +56,18 @@ impl PoundingApp {
         if ctx.memory(|m| m.focused().is_some()) {
             return;
         }
-        let (space, right, restart, help) = ctx.input(|i| {
+        let (space, right, restart, help, lecture) = ctx.input(|i| {
             (
                 i.key_pressed(egui::Key::Space),
                 i.key_pressed(egui::Key::ArrowRight),
                 i.key_pressed(egui::Key::R),
                 i.key_pressed(egui::Key::F1),
+                i.key_pressed(egui::Key::F5),
             )
         });
+        if lecture {
+            self.set_lecture(ctx, !self.lecture);
+        }
         let playback = self.playback();
         if space {
             playback.playing = !playback.playing;

@@ -24,11 +24,6 @@ impl Visibility {
     pub fn shows(&self, panel: &str) -> bool {
         self.only.as_ref().is_none_or(|s| s.contains(panel))
     }
-
-    /// Whether every panel is drawn (no lesson step restricts them).
-    pub fn everything(&self) -> bool {
-        self.only.is_none()
-    }
 }
 
 /// Which settings a lesson step leaves open; the others are locked in place.

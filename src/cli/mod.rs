@@ -63,6 +63,15 @@ pub struct WindowArgs {
     /// Save a PNG of the window here before closing (needs --exit-after-frames)
     #[arg(long, requires = "exit_after_frames")]
     pub screenshot: Option<std::path::PathBuf>,
+    /// Open a lesson: a shipped one's name (`pounding lesson --list`) or a lesson file
+    #[arg(long)]
+    pub lesson: Option<String>,
+    /// The lesson's step to open, from 1 (default: where the lesson was left)
+    #[arg(long, requires = "lesson")]
+    pub step: Option<usize>,
+    /// Lecture mode: large, high-contrast, only what the lesson step needs (View > Lecture mode)
+    #[arg(long)]
+    pub lecture: bool,
 }
 
 #[cfg(feature = "gui")]
@@ -73,12 +82,25 @@ fn window(args: &WindowArgs) -> anyhow::Result<()> {
             anyhow::anyhow!("--scene: unknown scene '{name}': allowed bar|compare|buildings|study")
         })?),
     };
+    if let Some(name) = &args.lesson {
+        // A wrong name or step is said here, before a window opens.
+        let lesson = pounding::lesson::load(name).map_err(|e| anyhow::anyhow!("--lesson: {e}"))?;
+        let n = lesson.steps.len();
+        if let Some(k) = args.step
+            && !(1..=n).contains(&k)
+        {
+            anyhow::bail!("--step: {k} is not a step of {name}: allowed 1 to {n}");
+        }
+    }
     pounding::app::run(pounding::app::Launch {
         scene,
         preset: args.preset.clone(),
         exit_after_frames: args.exit_after_frames,
         time_s: args.time,
         screenshot: args.screenshot.clone(),
+        lesson: args.lesson.clone(),
+        lesson_step: args.step,
+        lecture: args.lecture,
     })
     .map_err(|e| anyhow::anyhow!("the window could not start: {e}"))
 }

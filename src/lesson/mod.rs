@@ -75,7 +75,11 @@ pub enum LessonScene {
 }
 
 impl LessonScene {
-    pub const ALL: [LessonScene; 3] = [LessonScene::Bar, LessonScene::Compare, LessonScene::Buildings];
+    pub const ALL: [LessonScene; 3] = [
+        LessonScene::Bar,
+        LessonScene::Compare,
+        LessonScene::Buildings,
+    ];
 
     pub fn name(self) -> &'static str {
         match self {
@@ -245,7 +249,9 @@ impl Prediction {
             } => Ok(options[*answer].clone()),
             Prediction::Number { answer, unit, .. } => {
                 let x = answer.number(ctx)?;
-                Ok(format!("{} {unit}", significant(x, 3)).trim_end().to_string())
+                Ok(format!("{} {unit}", significant(x, 3))
+                    .trim_end()
+                    .to_string())
             }
         }
     }
@@ -336,15 +342,18 @@ pub fn builtin_names() -> Vec<&'static str> {
 
 /// A shipped lesson by name.
 pub fn builtin(name: &str) -> Result<Lesson, LessonError> {
-    let (n, text) = EMBEDDED.iter().find(|(n, _)| *n == name).ok_or_else(|| LessonError {
-        file: name.to_string(),
-        line: None,
-        field: None,
-        message: format!(
-            "no such lesson; shipped lessons: {}",
-            builtin_names().join(", ")
-        ),
-    })?;
+    let (n, text) = EMBEDDED
+        .iter()
+        .find(|(n, _)| *n == name)
+        .ok_or_else(|| LessonError {
+            file: name.to_string(),
+            line: None,
+            field: None,
+            message: format!(
+                "no such lesson; shipped lessons: {}",
+                builtin_names().join(", ")
+            ),
+        })?;
     parse::parse(text, n, &format!("lesson {n}"))
 }
 

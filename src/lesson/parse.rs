@@ -285,7 +285,8 @@ fn expression(
     field: &str,
     vocabulary: &Vocabulary,
 ) -> Result<Expr, LessonError> {
-    let expr = Expr::parse(text).map_err(|e| doc.error(Some(line), field, format!("'{text}': {e}")))?;
+    let expr =
+        Expr::parse(text).map_err(|e| doc.error(Some(line), field, format!("'{text}': {e}")))?;
     expr.check(vocabulary)
         .map_err(|e| doc.error(Some(line), field, format!("'{text}': {e}")))?;
     Ok(expr)
@@ -374,7 +375,13 @@ fn step(doc: &Doc, table: &DeTable, index: usize, line: usize) -> Result<Step, L
         .map(|(s, l)| expression(doc, &s, l, &format!("{path}.asserts"), &vocabulary))
         .collect::<Result<Vec<_>, _>>()?;
     let prediction = match f.table(doc, "prediction")? {
-        Some((t, l)) => Some(prediction(doc, t, &format!("{path}.prediction"), l, &vocabulary)?),
+        Some((t, l)) => Some(prediction(
+            doc,
+            t,
+            &format!("{path}.prediction"),
+            l,
+            &vocabulary,
+        )?),
         None => None,
     };
     let task = match f.table(doc, "task")? {
@@ -443,7 +450,11 @@ fn prediction(
                 .map(|(s, _)| s)
                 .collect();
             if options.len() < 2 {
-                return Err(doc.error(Some(line), &f.field("options"), "give at least two options"));
+                return Err(doc.error(
+                    Some(line),
+                    &f.field("options"),
+                    "give at least two options",
+                ));
             }
             let answer = match f.number(doc, "answer")? {
                 Some((x, _)) if x.fract() == 0.0 && x >= 1.0 && x <= options.len() as f64 => {
@@ -453,10 +464,19 @@ fn prediction(
                     return Err(doc.error(
                         Some(l),
                         &f.field("answer"),
-                        format!("{x} is not allowed: the right option's number, 1 to {}", options.len()),
+                        format!(
+                            "{x} is not allowed: the right option's number, 1 to {}",
+                            options.len()
+                        ),
                     ));
                 }
-                None => return Err(doc.error(Some(line), &f.field("answer"), "missing: the right option's number, from 1")),
+                None => {
+                    return Err(doc.error(
+                        Some(line),
+                        &f.field("answer"),
+                        "missing: the right option's number, from 1",
+                    ));
+                }
             };
             let (c, cl) = f.required(doc, "confirm")?;
             let confirm = expression(doc, &c, cl, &f.field("confirm"), vocabulary)?;
@@ -479,10 +499,18 @@ fn prediction(
                     return Err(doc.error(
                         Some(l),
                         &f.field("tolerance"),
-                        format!("{x} is not allowed: a relative tolerance in (0, 1), e.g. 0.1 for 10%"),
+                        format!(
+                            "{x} is not allowed: a relative tolerance in (0, 1), e.g. 0.1 for 10%"
+                        ),
                     ));
                 }
-                None => return Err(doc.error(Some(line), &f.field("tolerance"), "missing: the relative tolerance, e.g. 0.1")),
+                None => {
+                    return Err(doc.error(
+                        Some(line),
+                        &f.field("tolerance"),
+                        "missing: the relative tolerance, e.g. 0.1",
+                    ));
+                }
             };
             f.finish(doc, NUMBER)?;
             Prediction::Number {

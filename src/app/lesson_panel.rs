@@ -1,0 +1,345 @@
+//! The lesson panel and how a lesson step drives the window: the step's scene, preset and
+//! overrides loaded, its panels shown (none until its prediction is answered), its settings
+//! unlocked, its prediction judged and its task checked on every new result.
+
+use super::lesson_player::LessonPlayer;
+use super::visibility::{Lock, Visibility};
+use super::{PoundingApp, SceneKind};
+use crate::lesson::solve::SceneSetup;
+use crate::lesson::{self, Context, LessonScene, Prediction};
+use eframe::egui::{self, Color32, RichText};
+
+const GOOD: Color32 = Color32::from_rgb(20, 140, 60);
+const BAD: Color32 = Color32::from_rgb(200, 50, 40);
+
+fn scene_of(s: LessonScene) -> SceneKind {
+    match s {
+        LessonScene::Bar => SceneKind::BarImpact,
+        LessonScene::Compare => SceneKind::WaveVsLumped,
+        LessonScene::Buildings => SceneKind::Buildings,
+    }
+}
+
+impl PoundingApp {
+    /// Opens a lesson (shipped name or file) at step `step` (from 0).
+    pub fn open_lesson(&mut self, name_or_path: &str, step: usize) -> Result<(), String> {
+        let lesson = lesson::load(name_or_path).map_err(|e| e.to_string())?;
+        if lesson.steps.is_empty() {
+            return Err(format!("{name_or_path}: the lesson has no steps"));
+        }
+        self.lesson = Some(LessonPlayer::new(lesson, step));
+        Ok(())
+    }
+
+    /// Leaves the lesson: every panel and setting back.
+    pub fn close_lesson(&mut self) {
+        self.lesson = None;
+        self.apply_visibility();
+    }
+
+    /// The lesson on screen, if any.
+    pub fn lesson_player(&self) -> Option<&LessonPlayer> {
+        self.lesson.as_ref()
+    }
+
+    /// Turns to step `k` of the lesson (clamped).
+    pub fn lesson_go_to(&mut self, k: usize) {
+        if let Some(p) = &mut self.lesson {
+            p.record(&mut self.progress);
+            p.go_to(k);
+        }
+    }
+
+    /// Sets one key of the step's scene as a slider would (a scripted change; the tests use it).
+    pub fn lesson_set(&mut self, key: &str, value: &str) -> Result<(), String> {
+        let Some(p) = &self.lesson else {
+            return Err("no lesson is open".into());
+        };
+        let v = crate::io::settings::SettingValue::from_cli(value);
+        let r = match p.current().scene {
+            LessonScene::Bar => self.bar.setup.apply(key, &v).map(|_| self.bar.request()),
+            LessonScene::Compare => self
+                .compare
+                .setup
+                .apply(key, &v)
+                .map(|_| self.compare.request()),
+            LessonScene::Buildings => self
+                .buildings
+                .setup
+                .apply(key, &v)
+                .map(|_| self.buildings.request()),
+        };
+        r.map_err(|e| format!("{}: {}", e.field, e.message))
+    }
+
+    /// Gives the answer to the step's prediction (as the panel's widgets would).
+    pub fn lesson_answer(&mut self, choice: Option<usize>, number: Option<&str>) {
+        if let Some(p) = &mut self.lesson {
+            p.answer.choice = choice.or(p.answer.choice);
+            if let Some(n) = number {
+                p.answer.number = n.to_string();
+            }
+            if p.answer_given().is_ok() {
+                p.judging = true;
+            }
+        }
+    }
+
+    /// Once a frame: loads the step's scene when it changed, applies what shows and what is
+    /// unlocked, judges a waiting answer and checks the task on the latest result.
+    pub(super) fn lesson_frame(&mut self) {
+        let Some(p) = &mut self.lesson else { return };
+        if !p.loaded {
+            p.loaded = true;
+            let step = p.current().clone();
+            match SceneSetup::load(step.scene, step.preset.as_deref(), &step.set) {
+                Ok(setup) => self.load_scene(scene_of(step.scene), setup),
+                Err(e) => {
+                    if let Some(p) = &mut self.lesson {
+                        p.load_error = Some(e);
+                    }
+                }
+            }
+        }
+        self.apply_visibility();
+        let ctx = self.lesson_context();
+        let Some(p) = &mut self.lesson else { return };
+        if let Some(ctx) = ctx {
+            if p.judging {
+                p.judge(&ctx);
+            }
+            p.evaluate_task(&ctx);
+            p.record(&mut self.progress);
+        }
+    }
+
+    fn load_scene(&mut self, scene: SceneKind, setup: SceneSetup) {
+        self.scene = scene;
+        match setup {
+            SceneSetup::Impact(s) => {
+                let target = if scene == SceneKind::WaveVsLumped {
+                    &mut self.compare
+                } else {
+                    &mut self.bar
+                };
+                target.setup = s;
+                target.fields.clear();
+                target.playback.t = 0.0;
+                target.playback.playing = true;
+                target.request();
+            }
+            SceneSetup::Buildings(s) => {
+                self.buildings.setup = s;
+                self.buildings.reset_fields();
+                self.buildings.playback.t = 0.0;
+                self.buildings.request();
+            }
+        }
+    }
+
+    /// The scenes show the step's panels and unlock its settings; without a lesson, all.
+    fn apply_visibility(&mut self) {
+        let (visibility, lock) = match &self.lesson {
+            Some(p) => (
+                Visibility::only(p.panels()),
+                Some(Lock::unlocking(&p.current().unlock, self.lecture)),
+            ),
+            None => (Visibility::default(), None),
+        };
+        for s in [&mut self.bar, &mut self.compare] {
+            s.visibility = visibility.clone();
+            s.fields.lock = lock.clone();
+        }
+        self.buildings.visibility = visibility;
+        self.buildings.set_lock(lock);
+    }
+
+    /// The expressions' context from the step's scene, once its solve has landed.
+    fn lesson_context(&self) -> Option<Context> {
+        let p = self.lesson.as_ref()?;
+        match p.current().scene {
+            LessonScene::Bar => self.bar.lesson_context(),
+            LessonScene::Compare => self.compare.lesson_context(),
+            LessonScene::Buildings => self.buildings.lesson_context(),
+        }
+    }
+
+    /// Whether the result views wait for the student's prediction.
+    pub fn lesson_hides_results(&self) -> bool {
+        self.lesson
+            .as_ref()
+            .is_some_and(|p| p.waiting_for_prediction())
+    }
+
+    /// PgDn and PgUp turn the steps.
+    pub(super) fn lesson_keys(&mut self, ctx: &egui::Context) {
+        let Some(p) = &self.lesson else { return };
+        let (next, back) = ctx.input(|i| {
+            (
+                i.key_pressed(egui::Key::PageDown),
+                i.key_pressed(egui::Key::PageUp),
+            )
+        });
+        let k = p.step;
+        if next {
+            self.lesson_go_to(k + 1);
+        } else if back && k > 0 {
+            self.lesson_go_to(k - 1);
+        }
+    }
+
+    /// The lesson panel: the step's text, its prediction and task, and the way through.
+    pub(super) fn lesson_ui(&mut self, ui: &mut egui::Ui) {
+        let mut turn = None;
+        let mut reset = false;
+        let mut close = false;
+        let progress = &self.progress;
+        let Some(p) = &mut self.lesson else { return };
+        let n = p.lesson.steps.len();
+        ui.horizontal_wrapped(|ui| {
+            ui.heading(&p.lesson.title);
+            if ui
+                .small_button("Leave")
+                .on_hover_text("Close the lesson: every panel and setting back")
+                .clicked()
+            {
+                close = true;
+            }
+        });
+        let done = progress
+            .0
+            .get(&p.lesson.name)
+            .map_or(0, |pr| pr.done(&p.lesson));
+        ui.add(
+            egui::ProgressBar::new(done as f32 / n as f32)
+                .text(format!("step {} of {n} ({done} done)", p.step + 1)),
+        );
+        ui.horizontal(|ui| {
+            if ui
+                .add_enabled(p.step > 0, egui::Button::new("< Back"))
+                .on_hover_text("PgUp")
+                .clicked()
+            {
+                turn = Some(p.step - 1);
+            }
+            if ui
+                .button("Reset step")
+                .on_hover_text("The step's settings as it began, the answer cleared")
+                .clicked()
+            {
+                reset = true;
+            }
+            if ui
+                .add_enabled(p.step + 1 < n, egui::Button::new("Next >"))
+                .on_hover_text("PgDn")
+                .clicked()
+            {
+                turn = Some(p.step + 1);
+            }
+        });
+        ui.separator();
+        let step = p.current().clone();
+        ui.label(RichText::new(&step.title).strong().size(17.0));
+        ui.label(&step.text);
+        if let Some(e) = &p.load_error {
+            ui.colored_label(BAD, format!("this step could not be loaded: {e}"));
+        }
+        if let Some(pred) = &step.prediction {
+            ui.separator();
+            prediction_ui(ui, p, pred);
+        }
+        if let Some(task) = &step.task {
+            ui.separator();
+            ui.label(RichText::new("Task").strong());
+            ui.label(&task.text);
+            match &p.task {
+                Some(Ok(true)) => {
+                    ui.colored_label(GOOD, "met");
+                }
+                Some(Ok(false)) | None => {
+                    ui.label("not yet met: change the unlocked settings below");
+                }
+                Some(Err(e)) => {
+                    ui.colored_label(BAD, format!("the task cannot be checked: {e}"));
+                }
+            }
+            if p.hint_shown {
+                ui.label(RichText::new(format!("Hint: {}", task.hint)).italics());
+            } else if ui.small_button("Hint").clicked() {
+                p.hint_shown = true;
+            }
+        }
+        ui.separator();
+        egui::CollapsingHeader::new("Teacher notes")
+            .id_salt("teacher-notes")
+            .default_open(p.teacher_notes)
+            .show(ui, |ui| {
+                ui.label(format!(
+                    "{} ({} min). Goals:",
+                    p.lesson.audience, p.lesson.duration_min
+                ));
+                for g in &p.lesson.goals {
+                    ui.label(format!("- {g}"));
+                }
+                ui.label(&p.lesson.teacher_notes);
+            });
+        if close {
+            self.close_lesson();
+        } else if reset {
+            let k = p.step;
+            self.lesson_go_to(k);
+        } else if let Some(k) = turn {
+            self.lesson_go_to(k);
+        }
+    }
+}
+
+/// The question, its options or number field, and after the answer its verdict and explanation.
+fn prediction_ui(ui: &mut egui::Ui, p: &mut LessonPlayer, pred: &Prediction) {
+    ui.label(RichText::new("Predict").strong());
+    ui.label(pred.question());
+    let answered = p.judged.is_some();
+    ui.add_enabled_ui(!answered, |ui| match pred {
+        Prediction::Choice { options, .. } => {
+            for (i, o) in options.iter().enumerate() {
+                ui.radio_value(&mut p.answer.choice, Some(i), o);
+            }
+        }
+        Prediction::Number { unit, .. } => {
+            ui.horizontal(|ui| {
+                let label = ui.label("your answer").id;
+                ui.add(egui::TextEdit::singleline(&mut p.answer.number).desired_width(90.0))
+                    .labelled_by(label);
+                ui.label(unit);
+            });
+        }
+    });
+    match &p.judged {
+        None => {
+            let given = p.answer_given();
+            let button = ui
+                .add_enabled(given.is_ok() && !p.judging, egui::Button::new("Answer"))
+                .on_hover_text("The results appear once you have answered");
+            if button.clicked() {
+                p.judging = true;
+            }
+            if p.judging {
+                ui.label("solving...");
+            } else if let Err(why) = given {
+                ui.label(RichText::new(why).italics());
+            }
+        }
+        Some(Ok(j)) => {
+            if j.correct {
+                ui.colored_label(GOOD, format!("Right: {}", j.expected));
+            } else {
+                ui.colored_label(BAD, format!("Not quite: the model gives {}", j.expected));
+            }
+            ui.label(pred.explanation());
+        }
+        Some(Err(e)) => {
+            ui.colored_label(BAD, format!("the answer cannot be judged: {e}"));
+            ui.label(pred.explanation());
+        }
+    }
+}

@@ -1,0 +1,155 @@
+//! Every step of every shipped lesson walked through in the window, headless (egui_kittest on a
+//! wgpu adapter), as a student would: the step loads its scene, the result views stay hidden
+//! until the prediction is answered (an option clicked, or a number typed, then Answer), and a
+//! scripted change of the step's unlocked settings (its `solution`) meets its task.
+#![cfg(feature = "gui")]
+
+use eframe::egui;
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use pounding::app::{HIDE_TIMINGS, Launch, PoundingApp, SceneKind};
+use pounding::lesson::{self, LessonScene, Prediction};
+
+mod common;
+
+const WAITING: &str =
+    "Make your prediction in the lesson panel:\nthe results appear once you have answered.";
+
+fn window(launch: Launch, size: egui::Vec2) -> Harness<'static, PoundingApp> {
+    HIDE_TIMINGS.store(true, std::sync::atomic::Ordering::Relaxed);
+    let mut h = Harness::builder()
+        .with_size(size)
+        .wgpu()
+        .build_eframe(|cc| PoundingApp::new(cc, launch));
+    common::settle(&mut h, "launch");
+    h
+}
+
+fn scene_of(s: LessonScene) -> SceneKind {
+    match s {
+        LessonScene::Bar => SceneKind::BarImpact,
+        LessonScene::Compare => SceneKind::WaveVsLumped,
+        LessonScene::Buildings => SceneKind::Buildings,
+    }
+}
+
+fn player<'a>(h: &'a Harness<'static, PoundingApp>) -> &'a pounding::app::LessonPlayer {
+    h.state().lesson_player().expect("a lesson is open")
+}
+
+/// Answers the step's prediction through its widgets: the first option, or the model's own
+/// number typed.
+fn answer(h: &mut Harness<'static, PoundingApp>, p: &Prediction, name: &str, k: usize) {
+    match p {
+        Prediction::Choice { options, .. } => {
+            h.get_by_label(&options[0]).click();
+        }
+        Prediction::Number { .. } => {
+            h.get_by_label("your answer").click();
+            h.run_steps(1);
+            h.get_by_label("your answer").type_text("1");
+        }
+    }
+    h.run_steps(2);
+    h.get_by_label("Answer").click();
+    common::settle(h, &format!("{name} step {}: answer", k + 1));
+}
+
+#[test]
+fn every_lesson_step_loads_hides_results_until_predicted_and_its_task_is_met_by_its_solution() {
+    if common::adapter_or_skip().is_none() {
+        return;
+    }
+    for name in lesson::builtin_names() {
+        let lesson = lesson::builtin(name).expect("shipped lessons parse");
+        let mut h = window(
+            Launch {
+                lesson: Some(name.to_string()),
+                lesson_step: Some(1),
+                ..Default::default()
+            },
+            egui::vec2(1280.0, 900.0),
+        );
+        for (k, step) in lesson.steps.iter().enumerate() {
+            let at = format!("{name} step {}", k + 1);
+            h.state_mut().lesson_go_to(k);
+            common::settle(&mut h, &at);
+            assert_eq!(player(&h).step, k, "{at}");
+            assert!(
+                player(&h).load_error.is_none(),
+                "{at}: {:?}",
+                player(&h).load_error
+            );
+            assert_eq!(h.state().scene_kind(), scene_of(step.scene), "{at}: scene");
+            h.get_by_label(&step.title);
+            if let Some(p) = &step.prediction {
+                assert!(
+                    h.state().lesson_hides_results(),
+                    "{at}: results before the answer"
+                );
+                h.get_by_label(WAITING);
+                answer(&mut h, p, name, k);
+                let judged = player(&h).judged.clone();
+                assert!(matches!(judged, Some(Ok(_))), "{at}: judged {judged:?}");
+                assert!(
+                    !h.state().lesson_hides_results(),
+                    "{at}: results after the answer"
+                );
+                assert!(h.query_by_label(WAITING).is_none(), "{at}");
+                h.get_by_label(p.explanation());
+            }
+            if let Some(task) = &step.task {
+                if task.solution.is_empty() {
+                    continue;
+                }
+                assert_ne!(
+                    player(&h).task,
+                    Some(Ok(true)),
+                    "{at}: met before any change"
+                );
+                for (key, value, _) in &task.solution {
+                    h.state_mut()
+                        .lesson_set(key, value)
+                        .unwrap_or_else(|e| panic!("{at}: {key}={value}: {e}"));
+                }
+                common::settle(&mut h, &format!("{at}: solution"));
+                assert_eq!(
+                    player(&h).task,
+                    Some(Ok(true)),
+                    "{at}: the solution meets the task"
+                );
+                h.get_by_label("met");
+            }
+        }
+    }
+}
+
+#[test]
+fn a_lesson_opened_at_a_step_in_lecture_mode_shows_that_step_and_only_its_unlocked_settings() {
+    if common::adapter_or_skip().is_none() {
+        return;
+    }
+    let lesson = lesson::builtin("lumped-or-wave").expect("shipped");
+    let (k, step) = lesson
+        .steps
+        .iter()
+        .enumerate()
+        .find(|(_, s)| !s.unlock.is_empty())
+        .expect("a step with unlocked settings");
+    let h = window(
+        Launch {
+            lesson: Some("lumped-or-wave".into()),
+            lesson_step: Some(k + 1),
+            lecture: true,
+            ..Default::default()
+        },
+        egui::vec2(1280.0, 720.0) / pounding::app::LECTURE_ZOOM,
+    );
+    assert!(h.state().lecture());
+    assert_eq!(player(&h).step, k);
+    h.get_by_label(&step.title);
+    // The Lessons and View menus stay; the scene tabs and preset controls are gone.
+    h.get_by_label("Lessons");
+    assert!(h.query_by_label("Building pounding").is_none());
+    assert!(h.query_by_label("Load preset").is_none());
+}
