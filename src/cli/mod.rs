@@ -5,6 +5,7 @@ pub mod building_report;
 pub mod buildings;
 pub mod gaps;
 pub mod impact;
+pub mod lesson;
 pub mod report;
 pub mod study;
 pub mod sweep;
@@ -40,6 +41,8 @@ pub enum Command {
     /// The gap that avoids pounding for a building pair, record by record (in parallel), against
     /// the ABS and SRSS code rules; a table, CSV, JSON and a plot.
     Gaps(gaps::GapsArgs),
+    /// Guided lessons: --list them, --check a lesson file, or write one's worksheet (--handout).
+    Lesson(lesson::LessonArgs),
     /// Open the explorer window (what `pounding` with no command does).
     #[cfg(feature = "gui")]
     Window(WindowArgs),
@@ -114,6 +117,7 @@ pub fn run(cli: Cli, out: &mut dyn std::io::Write) -> anyhow::Result<()> {
         Some(Command::Sweep(args)) => sweep::run(&args, out),
         Some(Command::Study(args)) => study::run(&args, out),
         Some(Command::Gaps(args)) => gaps::run(&args, out),
+        Some(Command::Lesson(args)) => lesson::run(&args, out),
         #[cfg(feature = "gui")]
         Some(Command::Window(args)) => window(&args),
         #[cfg(feature = "gui")]

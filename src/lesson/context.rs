@@ -273,17 +273,14 @@ impl Context {
         }
     }
 
-    /// An impact scene: the lead model's fields unprefixed (the first of `runs` whose model is
-    /// the setup's, else the first run), every run's also as `MODEL.field`. Bar scene: give the
-    /// one run; compare scene: every compared model's.
+    /// An impact scene: the lead model's fields unprefixed (the run whose model is the setup's,
+    /// else the first run), every run's also as `MODEL.field`. Bar scene: give the one run;
+    /// compare scene: every compared model's that solved.
     pub fn impact(setup: &ImpactSetup, runs: &[(ModelKind, &ImpactResult)]) -> Self {
-        let scene = if runs.len() > 1 {
-            LessonScene::Compare
-        } else {
-            LessonScene::Bar
-        };
         let mut ctx = Context {
-            vocabulary: Vocabulary::for_scene(scene),
+            // The compare scene's names: a bar step's expressions were checked against the
+            // narrower bar vocabulary when the lesson loaded.
+            vocabulary: Vocabulary::for_scene(LessonScene::Compare),
             values: BTreeMap::new(),
         };
         for key in concrete_keys(IMPACT_SETTINGS) {
@@ -299,10 +296,8 @@ impl Context {
         if let Some((_, r)) = lead {
             ctx.result_fields("", r);
         }
-        if scene == LessonScene::Compare {
-            for (m, r) in runs {
-                ctx.result_fields(&format!("{}.", model_prefix(*m)), r);
-            }
+        for (m, r) in runs {
+            ctx.result_fields(&format!("{}.", model_prefix(*m)), r);
         }
         ctx
     }

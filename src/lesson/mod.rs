@@ -291,6 +291,9 @@ pub fn significant(x: f64, digits: usize) -> String {
     if x == 0.0 || !x.is_finite() {
         return format!("{x}");
     }
+    if x.fract() == 0.0 && x.abs() < 1e5 {
+        return format!("{x}");
+    }
     let magnitude = x.abs().log10().floor() as i32;
     if (-3..5).contains(&magnitude) {
         let decimals = (digits as i32 - 1 - magnitude).max(0) as usize;

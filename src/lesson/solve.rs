@@ -124,14 +124,18 @@ pub fn solve_step(
             } else {
                 vec![setup.model]
             };
-            let runs = models
-                .into_iter()
-                .map(|m| {
-                    crate::model::impact::solve_with(m, &setup.scenario, control)
-                        .map(|r| (m, r))
-                        .map_err(|e| err(step.line, format!("{} could not solve: {e}", m.name())))
-                })
-                .collect::<Result<Vec<_>, _>>()?;
+            // As in the window, a peer that cannot solve this scene (lumped Hertz with two flat
+            // ends) is left out, its fields unavailable; the lead model must solve.
+            let mut runs = Vec::new();
+            for m in models {
+                match crate::model::impact::solve_with(m, &setup.scenario, control) {
+                    Ok(r) => runs.push((m, r)),
+                    Err(e) if m == setup.model => {
+                        return Err(err(step.line, format!("{} could not solve: {e}", m.name())));
+                    }
+                    Err(_) => {}
+                }
+            }
             Ok(Solved::Impact { setup, runs })
         }
         SceneSetup::Buildings(setup) => {
