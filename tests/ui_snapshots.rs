@@ -76,7 +76,8 @@ fn lecture_mode_at_projector_size_matches_its_snapshot() {
     HIDE_TIMINGS.store(true, std::sync::atomic::Ordering::Relaxed);
     let launch = Launch {
         lesson: Some("lumped-or-wave".into()),
-        lesson_step: Some(2),
+        // "Lengthen bar 2": one unlocked setting, a task, two plots.
+        lesson_step: Some(4),
         lecture: true,
         ..Default::default()
     };

@@ -8,13 +8,11 @@ use crate::render::bars::{BarsLayout, GpuHistory, View, Viewport};
 use eframe::egui::{self, Color32, Pos2, Rect, Stroke};
 use std::sync::Arc;
 
-/// A solve ready to draw: the result, its history on the GPU grid, cumulative impulse.
+/// A solve ready to draw: the result and its history on the GPU grid.
 pub struct Solved {
     pub setup: ImpactSetup,
     pub result: ImpactResult,
     pub gpu: Arc<GpuHistory>,
-    /// Impulse so far at each of the result's times [N s].
-    pub impulse_ns: Vec<f64>,
 }
 
 impl Solved {
@@ -24,34 +22,12 @@ impl Solved {
             Some(w) => GpuHistory::from_waves(w),
             None => GpuHistory::uniform(&result, 2000, result.view_span_s()),
         });
-        let mut impulse_ns = Vec::with_capacity(result.time_s.len());
-        let mut j = 0.0;
-        for i in 0..result.time_s.len() {
-            if i > 0 {
-                j += 0.5
-                    * (result.force_n[i] + result.force_n[i - 1])
-                    * (result.time_s[i] - result.time_s[i - 1]);
-            }
-            impulse_ns.push(j);
-        }
-        Solved {
-            setup,
-            result,
-            gpu,
-            impulse_ns,
-        }
+        Solved { setup, result, gpu }
     }
 
-    /// Rigid-body velocities at time t.
+    /// Rigid-body velocities at time t, as the model integrated its impulse.
     pub fn velocities_at(&self, t: f64) -> [f64; 2] {
-        let r = &self.result;
-        let k = r
-            .time_s
-            .partition_point(|&x| x <= t)
-            .min(self.impulse_ns.len());
-        let j = if k == 0 { 0.0 } else { self.impulse_ns[k - 1] };
-        let [v1, v2] = r.initial_velocities_m_s;
-        [v1 - j / r.masses_kg[0], v2 + j / r.masses_kg[1]]
+        self.result.rigid_velocities_at(t)
     }
 
     /// The time span worth animating: the impact and a round trip of the waves after it.
@@ -202,4 +178,33 @@ pub fn draw(ui: &mut egui::Ui, rect: Rect, slot: u64, solved: &Solved, t: f64) {
 pub fn diverging(s: f32) -> Color32 {
     let [r, g, b] = crate::render::bars::diverging(s).map(|c| (c * 255.0) as u8);
     Color32::from_rgb(r, g, b)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::impact::{ModelKind, solve};
+
+    /// The arrows are drawn from `velocities_at`: a stereomechanical impact passes its whole
+    /// impulse at t = 0 (its force samples are zeros), so the arrows must show the rebound at
+    /// once, and conserve momentum.
+    #[test]
+    fn velocity_arrows_rebound_after_a_stereomechanics_impact() {
+        let setup = ImpactSetup {
+            model: ModelKind::Stereo,
+            ..ImpactSetup::default()
+        };
+        let r = solve(ModelKind::Stereo, &setup.scenario).expect("stereo solves");
+        let [m1, m2] = r.masses_kg;
+        let [v1, v2] = r.initial_velocities_m_s;
+        let e = setup.scenario.contact.restitution;
+        let solved = Solved::new(setup, r);
+        assert_eq!(solved.velocities_at(-1e-6), [v1, v2]);
+        let [u1, u2] = solved.velocities_at(1e-6);
+        // Newton's law of restitution and momentum, from the inputs alone.
+        assert!(((u2 - u1) - e * (v1 - v2)).abs() < 1e-12 * (v1 - v2).abs());
+        let p = m1 * v1 + m2 * v2;
+        assert!((m1 * u1 + m2 * u2 - p).abs() < 1e-12 * p.abs().max(1.0));
+        assert!(u2 > v2, "bar 2 is pushed on");
+    }
 }

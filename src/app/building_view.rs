@@ -7,6 +7,7 @@ use crate::io::building_settings::BuildingSetup;
 use crate::model::building::{Attachment, BuildingResult, Level};
 use crate::model::field::BarWaves;
 use crate::model::motion::GroundMotion;
+use crate::model::xt::interpolate;
 use crate::render::bars::{GpuBar, GpuHistory, View, Viewport, uniforms};
 use eframe::egui::{self, Color32, Pos2, Stroke};
 use std::sync::Arc;
@@ -21,19 +22,6 @@ pub struct BuildingDrawing {
     /// (level, side) of each bar in `gpu`.
     bars: Vec<(usize, usize)>,
     gpu: Arc<GpuHistory>,
-}
-
-/// Ground displacement by integrating the record twice (trapezoid; no baseline correction).
-fn ground_displacement(m: &GroundMotion) -> Vec<f64> {
-    let (mut v, mut d) = (0.0, 0.0);
-    let mut out = vec![0.0];
-    for w in m.accel_m_s2.windows(2) {
-        let v1 = v + 0.5 * m.dt_s * (w[0] + w[1]);
-        d += 0.5 * m.dt_s * (v + v1);
-        v = v1;
-        out.push(d);
-    }
-    out
 }
 
 impl BuildingDrawing {
@@ -55,7 +43,7 @@ impl BuildingDrawing {
         }
         let gpu = Arc::new(GpuHistory::from_bars(waves));
         BuildingDrawing {
-            ground_displacement: ground_displacement(&motion),
+            ground_displacement: motion.displacement_m(),
             setup,
             motion,
             result,
@@ -65,25 +53,11 @@ impl BuildingDrawing {
     }
 }
 
-/// Linear interpolation of a sampled history at t.
-pub fn sample(time: &[f64], y: &[f64], t: f64) -> f64 {
-    let k = time.partition_point(|&x| x <= t);
-    if k == 0 {
-        return y.first().copied().unwrap_or(0.0);
-    }
-    if k >= time.len() {
-        return y.last().copied().unwrap_or(0.0);
-    }
-    let (t0, t1) = (time[k - 1], time[k]);
-    let s = if t1 > t0 { (t - t0) / (t1 - t0) } else { 0.0 };
-    y[k - 1] + s * (y[k] - y[k - 1])
-}
-
 /// A point of a building at floor weights: its displacement at t.
 fn attached(floors: &[Vec<f64>], time: &[f64], a: &Attachment, t: f64) -> f64 {
     a.weights()
         .iter()
-        .map(|(f, w)| w * sample(time, &floors[*f], t))
+        .map(|(f, w)| w * interpolate(time, &floors[*f], t))
         .sum()
 }
 
@@ -113,7 +87,7 @@ pub fn draw(ui: &mut egui::Ui, rect: egui::Rect, d: &BuildingDrawing, t: f64, ex
     } else {
         (left, right, bottom + (right - left) / aspect)
     };
-    let xg = sample(
+    let xg = interpolate(
         &(0..d.ground_displacement.len())
             .map(|i| i as f64 * d.motion.dt_s)
             .collect::<Vec<_>>(),
@@ -122,7 +96,7 @@ pub fn draw(ui: &mut egui::Ui, rect: egui::Rect, d: &BuildingDrawing, t: f64, ex
     );
     let inner = [-0.5 * gap_world, 0.5 * gap_world];
     let dir = [-1.0, 1.0];
-    let floor_u = |s: usize, f: usize| sample(&r.time_s, &r.floor_displacement_m[s][f], t);
+    let floor_u = |s: usize, f: usize| interpolate(&r.time_s, &r.floor_displacement_m[s][f], t);
     let slab_t = (height * 0.02).clamp(0.15, 0.5);
     let vp = Viewport {
         rect,
@@ -260,7 +234,7 @@ pub fn draw(ui: &mut egui::Ui, rect: egui::Rect, d: &BuildingDrawing, t: f64, ex
     }
     // Contact points: a mark at each level on each side, red while it carries force.
     for (l, level) in r.levels.iter().enumerate() {
-        let force = sample(&r.time_s, &r.level_force_n[l], t);
+        let force = interpolate(&r.time_s, &r.level_force_n[l], t);
         let colour = if force > 0.0 {
             Color32::from_rgb(220, 60, 50)
         } else {
@@ -272,7 +246,7 @@ pub fn draw(ui: &mut egui::Ui, rect: egui::Rect, d: &BuildingDrawing, t: f64, ex
             painter.circle_filled(p, 4.0, colour);
         }
     }
-    let f = sample(&r.time_s, &r.force_n, t);
+    let f = interpolate(&r.time_s, &r.force_n, t);
     if f > 0.0 {
         painter.text(
             Pos2::new(rect.left() + 8.0, rect.top() + 6.0),

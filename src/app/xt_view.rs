@@ -109,9 +109,7 @@ impl XtDiagram<'_> {
         };
         let area = [sc.bar1.area_m2(), sc.bar2.area_m2()][i];
         let f = crate::model::xt::interpolate(&r.time_s, &r.force_n, t);
-        let j = crate::model::xt::interpolate(&r.time_s, &r.impulse_history_ns, t);
-        let v = r.initial_velocities_m_s[i] + if i == 0 { -j } else { j } / r.masses_kg[i];
-        (-f / area, v)
+        (-f / area, r.rigid_velocities_at(t)[i])
     }
 
     /// Draws the diagram `height` points high; returns a time set by a click or a drag.

@@ -101,13 +101,9 @@ impl XtGrid {
         t_end: f64,
     ) -> Self {
         let times_s = spaced(0.0, t_end, nt);
-        let [m1, m2] = r.masses_kg;
-        let [v1, v2] = r.initial_velocities_m_s;
         Self::sampled(times_s, lengths_m, nx, true, |b, _, t| {
             let f = interpolate(&r.time_s, &r.force_n, t);
-            let j = interpolate(&r.time_s, &r.impulse_history_ns, t);
-            let v = if b == 0 { v1 - j / m1 } else { v2 + j / m2 };
-            (-f / areas_m2[b], v)
+            (-f / areas_m2[b], r.rigid_velocities_at(t)[b])
         })
     }
 

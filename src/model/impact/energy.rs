@@ -72,7 +72,8 @@ pub fn energy_history(sc: &ImpactScenario, r: &ImpactResult, samples: usize) -> 
     for &k in &picks {
         let t = r.time_s[k];
         let j = r.impulse_history_ns[k];
-        let rigid = 0.5 * m1 * (v1 - j / m1).powi(2) + 0.5 * m2 * (v2 + j / m2).powi(2);
+        let [u1, u2] = super::rigid_velocities([v1, v2], [m1, m2], j);
+        let rigid = 0.5 * m1 * u1 * u1 + 0.5 * m2 * u2 * u2;
         // A contact stores energy while it is on: the approach is positive.
         let contact = match (law, r.model) {
             // The Kelvin-Voigt link lets go with its spring stretched; its history ends at the

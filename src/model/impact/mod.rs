@@ -281,7 +281,28 @@ pub struct ImpactResult {
     pub stats: SolveStats,
 }
 
+/// The bars' rigid-body velocities after the contact has passed impulse `j`: bar 1 slowed by
+/// j/m1, bar 2 pushed on by j/m2 (momentum is exchanged, never made).
+pub fn rigid_velocities([v1, v2]: [f64; 2], [m1, m2]: [f64; 2], j: f64) -> [f64; 2] {
+    [v1 - j / m1, v2 + j / m2]
+}
+
 impl ImpactResult {
+    /// The impulse the contact has passed by time `t` [N s], from the model's own history
+    /// (linear between its samples; a stereomechanical impact passes all of it at t = 0).
+    pub fn impulse_at(&self, t: f64) -> f64 {
+        crate::model::xt::interpolate(&self.time_s, &self.impulse_history_ns, t)
+    }
+
+    /// The bars' rigid-body velocities at time `t` [m/s].
+    pub fn rigid_velocities_at(&self, t: f64) -> [f64; 2] {
+        rigid_velocities(
+            self.initial_velocities_m_s,
+            self.masses_kg,
+            self.impulse_at(t),
+        )
+    }
+
     /// The span worth showing: the impact and a round trip of the waves after it (the whole
     /// run where that is longer) [s].
     pub fn view_span_s(&self) -> f64 {
@@ -500,7 +521,8 @@ fn restitution_after(sc: &ImpactScenario, [m1, m2]: [f64; 2], j: f64) -> f64 {
     let (v1, v2) = (sc.bar1.velocity_m_s, sc.bar2.velocity_m_s);
     let w = v1 - v2;
     if w > 0.0 {
-        ((v2 + j / m2) - (v1 - j / m1)) / w
+        let [after1, after2] = rigid_velocities([v1, v2], [m1, m2], j);
+        (after2 - after1) / w
     } else {
         1.0
     }
@@ -731,7 +753,7 @@ fn finish(model: ModelKind, sc: &ImpactScenario, raw: Raw) -> ImpactResult {
     let [m1, m2] = raw.masses_kg;
     let (v1, v2) = (sc.bar1.velocity_m_s, sc.bar2.velocity_m_s);
     let w = v1 - v2;
-    let after = |j: f64| [v1 - j / m1, v2 + j / m2];
+    let after = |j: f64| rigid_velocities([v1, v2], [m1, m2], j);
     let contacts: Vec<ContactEvent> = raw
         .contacts
         .iter()

@@ -80,6 +80,22 @@ impl GroundMotion {
         self
     }
 
+    /// The ground's displacement at each sample [m], from rest at t = 0: the record integrated
+    /// twice, exactly for an acceleration linear between samples (as the building solver takes
+    /// it), without baseline correction.
+    pub fn displacement_m(&self) -> Vec<f64> {
+        let h = self.dt_s;
+        let (mut v, mut d) = (0.0, 0.0);
+        let mut out = Vec::with_capacity(self.accel_m_s2.len());
+        out.push(0.0);
+        for w in self.accel_m_s2.windows(2) {
+            d += h * v + h * h * (2.0 * w[0] + w[1]) / 6.0;
+            v += 0.5 * h * (w[0] + w[1]);
+            out.push(d);
+        }
+        out
+    }
+
     /// Peak values, intensity and durations of the record.
     pub fn stats(&self) -> MotionStats {
         let a = &self.accel_m_s2;
@@ -164,4 +180,35 @@ fn spectrum_peak(m: &GroundMotion) -> (f64, f64) {
         }
     }
     best
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn record(accel_m_s2: Vec<f64>, dt_s: f64) -> GroundMotion {
+        GroundMotion {
+            name: "test".into(),
+            dt_s,
+            accel_m_s2,
+        }
+    }
+
+    #[test]
+    fn ground_displacement_is_exact_for_constant_and_ramped_acceleration() {
+        // a = 2: d = t^2; a = 3 t: d = t^3 / 2 (both zero velocity at rest).
+        let n = 101;
+        let dt = 0.01;
+        let d = record(vec![2.0; n], dt).displacement_m();
+        let ramp = record((0..n).map(|i| 3.0 * i as f64 * dt).collect(), dt).displacement_m();
+        for i in 0..n {
+            let t = i as f64 * dt;
+            assert!((d[i] - t * t).abs() < 1e-12, "{} against {}", d[i], t * t);
+            assert!(
+                (ramp[i] - t.powi(3) / 2.0).abs() < 1e-12,
+                "{} at {t}",
+                ramp[i]
+            );
+        }
+    }
 }
