@@ -391,6 +391,7 @@ impl BarScene {
             let pts = series(r, &|j| r.approach_m[j] * 1e6);
             let width = super::lecture::line_width(ui);
             let response = Plot::new("approach")
+                .y_grid_spacer(super::plot_view::nice_marks)
                 .height(h)
                 .legend(Legend::default())
                 .x_axis_label("time [ms]")
@@ -457,6 +458,7 @@ impl BarScene {
         }
         let width = super::lecture::line_width(ui);
         let response = Plot::new("force")
+            .y_grid_spacer(super::plot_view::nice_marks)
             .height(h)
             .legend(Legend::default())
             .x_axis_label("time [ms]")

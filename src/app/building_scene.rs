@@ -435,6 +435,7 @@ impl BuildingScene {
         ];
         let width = super::lecture::line_width(ui);
         let disp_plot = Plot::new("b-disp")
+            .y_grid_spacer(super::plot_view::nice_marks)
             .height(h)
             .legend(Legend::default())
             .x_axis_label("time [s]")
@@ -474,6 +475,7 @@ impl BuildingScene {
         let top = force.iter().cloned().fold(0.0, f64::max).max(1.0);
         let width = super::lecture::line_width(ui);
         let force_plot = Plot::new("b-force")
+            .y_grid_spacer(super::plot_view::nice_marks)
             .height(h)
             .legend(Legend::default())
             .x_axis_label("time [s]")

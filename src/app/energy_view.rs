@@ -58,6 +58,7 @@ pub fn draw(
     let line_colour = ui.visuals().text_color();
     let width = super::lecture::line_width(ui);
     let response = Plot::new(id)
+        .y_grid_spacer(super::plot_view::nice_marks)
         .height(height)
         .legend(Legend::default())
         .x_axis_label("time [ms]")

@@ -34,19 +34,14 @@ fn log_marks(input: GridInput) -> Vec<GridMark> {
 /// Grid marks of a linear axis: labelled steps of 1, 2 or 5 times a power of ten, at least 32
 /// points apart (egui_plot's own spacer labels only powers of ten, so a short plot of e between
 /// 0.5 and 1 read "1" alone), with five unlabelled lines between.
-fn nice_marks(input: GridInput) -> Vec<GridMark> {
+pub(super) fn nice_marks(input: GridInput) -> Vec<GridMark> {
     let (lo, hi) = input.bounds;
     // base_step_size is the value of 8 points.
     let wanted = 4.0 * input.base_step_size;
     if !(lo.is_finite() && hi.is_finite() && wanted.is_finite() && wanted > 0.0) {
         return Vec::new();
     }
-    let decade = 10f64.powf(wanted.log10().floor());
-    let major = [1.0, 2.0, 5.0, 10.0]
-        .into_iter()
-        .map(|m| m * decade)
-        .find(|&step| step >= wanted)
-        .unwrap_or(10.0 * decade);
+    let major = nice_step(wanted);
     let minor = major / 5.0;
     let (first, last) = ((lo / minor).ceil(), (hi / minor).floor());
     if last - first >= 10_000.0 || last < first {
@@ -58,6 +53,28 @@ fn nice_marks(input: GridInput) -> Vec<GridMark> {
             step_size: if k % 5 == 0 { major } else { minor },
         })
         .collect()
+}
+
+/// The smallest step of 1, 2 or 5 times a power of ten that is at least `wanted` (> 0).
+pub(super) fn nice_step(wanted: f64) -> f64 {
+    let decade = 10f64.powf(wanted.log10().floor());
+    [1.0, 2.0, 5.0, 10.0]
+        .into_iter()
+        .map(|m| m * decade)
+        .find(|&step| step >= wanted * (1.0 - 1e-12))
+        .unwrap_or(10.0 * decade)
+}
+
+/// Round times for an axis over [start, start + span]: multiples of a 1-2-5 step, about
+/// `count` of them.
+pub(super) fn round_ticks(start: f64, span: f64, count: usize) -> Vec<f64> {
+    if !(start.is_finite() && span.is_finite() && span > 0.0) {
+        return vec![];
+    }
+    let step = nice_step(span / count.max(1) as f64);
+    let first = (start / step - 1e-9).ceil() as i64;
+    let last = ((start + span) / step + 1e-9).floor() as i64;
+    (first..=last).map(|k| k as f64 * step).collect()
 }
 
 /// Draws `plot` `height` points high; plots sharing `link` pan and zoom together in x.
@@ -148,6 +165,21 @@ pub fn draw(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn time_axes_are_marked_at_round_numbers() {
+        // A 1.585 ms span read 0.317, 0.633, ... at fifths: now 0, 0.5, 1, 1.5 ms.
+        let t = round_ticks(0.0, 1.585e-3, 5);
+        assert_eq!(t.len(), 4);
+        for (k, x) in t.iter().enumerate() {
+            assert!((x - k as f64 * 0.5e-3).abs() < 1e-15, "{x}");
+        }
+        let t = round_ticks(2.6, 0.05, 5);
+        assert!(t.iter().all(|x| (2.6..=2.65).contains(x)) && t.len() >= 5);
+        assert_eq!(nice_step(0.3), 0.5);
+        assert_eq!(nice_step(2.0), 2.0);
+        assert_eq!(nice_step(7e-4), 1e-3);
+    }
 
     #[test]
     fn log_axis_ticks_read_as_three_significant_digits() {

@@ -168,13 +168,12 @@ impl XtDiagram<'_> {
             text,
         );
         // Time axis, in ms.
-        for k in 0..=5 {
-            let t = self.t_start + self.t_span * k as f64 / 5.0;
+        for t in super::plot_view::round_ticks(self.t_start, self.t_span, 5) {
             let p = vp.to_screen(layout.left, y_of(t));
             painter.text(
                 Pos2::new(plot.left() - 4.0, p.y),
                 egui::Align2::RIGHT_CENTER,
-                format!("{:.3}", t * 1e3),
+                crate::export::plot::tick_label(t * 1e3),
                 font.clone(),
                 text,
             );
