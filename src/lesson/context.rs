@@ -39,17 +39,32 @@ pub const IMPACT_FIELDS: &[(&str, &str)] = &[
         "touching_duration_s",
         "how long the bars touch in the first contact [s]",
     ),
-    ("restitution", "effective e = (V2 - V1)/(v1 - v2) at the end of the run"),
-    ("restitution_first_contact", "e after the first contact alone"),
+    (
+        "restitution",
+        "effective e = (V2 - V1)/(v1 - v2) at the end of the run",
+    ),
+    (
+        "restitution_first_contact",
+        "e after the first contact alone",
+    ),
     ("impulse_ns", "total impulse [N s]"),
     ("contacts", "number of contact intervals"),
     ("recontact_s", "start of a second contact [s]"),
-    ("velocity_after_1_m_s", "bar 1's rigid-body velocity after [m/s]"),
-    ("velocity_after_2_m_s", "bar 2's rigid-body velocity after [m/s]"),
+    (
+        "velocity_after_1_m_s",
+        "bar 1's rigid-body velocity after [m/s]",
+    ),
+    (
+        "velocity_after_2_m_s",
+        "bar 2's rigid-body velocity after [m/s]",
+    ),
     ("energy.initial_j", "kinetic energy before [J]"),
     ("energy.rigid_body_j", "rigid-body kinetic energy after [J]"),
     ("energy.vibration_j", "energy left in the bars' waves [J]"),
-    ("energy.dissipated_j", "energy a damped contact dissipated [J]"),
+    (
+        "energy.dissipated_j",
+        "energy a damped contact dissipated [J]",
+    ),
     ("energy.contact_j", "energy still in the contact [J]"),
     (
         "energy_balance_error",
@@ -92,7 +107,10 @@ pub const IMPACT_DERIVED: &[(&str, &str)] = &[
     ),
     ("round_trip_1_s", "2 L1 / c1 [s]"),
     ("round_trip_2_s", "2 L2 / c2 [s]"),
-    ("zone_length_1_m", "Sears zone d of bar 1 after the scale [m]"),
+    (
+        "zone_length_1_m",
+        "Sears zone d of bar 1 after the scale [m]",
+    ),
     ("zone_length_2_m", "Sears zone d of bar 2 [m]"),
     (
         "contact_stiffness",
@@ -142,7 +160,10 @@ pub const BUILDING_FIELDS: &[(&str, &str)] = &[
         "SRSS rule: sqrt(|u_left|max^2 + |u_right|max^2) [m]",
     ),
     ("abs_ratio", "ABS / minimum gap (above 1: safe)"),
-    ("srss_ratio", "SRSS / minimum gap (below 1: they still touch)"),
+    (
+        "srss_ratio",
+        "SRSS / minimum gap (below 1: they still touch)",
+    ),
 ];
 
 /// The prefix a model's fields carry in the compare scene: its name with `_` for `-`.
@@ -378,8 +399,14 @@ impl Context {
         ctx.number("energy_to_contact_j", r.energy.contact_j);
         ctx.number("energy_balance_error", r.energy.balance_error());
         if let Some(f) = free {
-            ctx.number("peak_displacement_left_no_pounding_m", f.peak_displacement_m[0]);
-            ctx.number("peak_displacement_right_no_pounding_m", f.peak_displacement_m[1]);
+            ctx.number(
+                "peak_displacement_left_no_pounding_m",
+                f.peak_displacement_m[0],
+            );
+            ctx.number(
+                "peak_displacement_right_no_pounding_m",
+                f.peak_displacement_m[1],
+            );
             ctx.gaps(&assess(f));
         }
         ctx
@@ -503,11 +530,11 @@ pub fn building_setting(setup: &BuildingSetup, key: &str) -> Option<Value> {
         "contact.zone_length" => sc.zone_length_m.and_then(n),
         "slab.damping" => n(sc.slab_damping),
         "impact.merge_gap_s" => n(sc.merge_gap_s),
-        "motion.file" => Some(Value::Text(
-            m.file
-                .clone()
-                .unwrap_or_else(|| crate::io::building_settings::SYNTHETIC.into()),
-        )),
+        "motion.file" => {
+            Some(Value::Text(m.file.clone().unwrap_or_else(|| {
+                crate::io::building_settings::SYNTHETIC.into()
+            })))
+        }
         "motion.units" => Some(Value::Text(m.units.name().into())),
         "motion.scale" => n(m.scale),
         "motion.duration" => m.duration_s.and_then(n),

@@ -303,9 +303,7 @@ fn binary(
     // `and`/`or` short-circuit, so `impact_count > 0 and x / impact_count < 1` is safe.
     match op {
         And => {
-            return Ok(Value::Bool(
-                boolean(a, "and")? && boolean(b()?, "and")?,
-            ));
+            return Ok(Value::Bool(boolean(a, "and")? && boolean(b()?, "and")?));
         }
         Or => return Ok(Value::Bool(boolean(a, "or")? || boolean(b()?, "or")?)),
         _ => {}

@@ -57,8 +57,14 @@ pub fn write(
     let mut figures = Vec::new();
     for (i, step) in lesson.steps.iter().enumerate() {
         let solved = solve_step(step, &[], control, &lesson.source)?;
-        let _ = writeln!(md, "\n## Step {}: {}\n\n{}\n", i + 1, step.title, step.text.trim());
-        let own = question(&mut md, step, &solved, teacher, &lesson.source)?;
+        let _ = writeln!(
+            md,
+            "\n## Step {}: {}\n\n{}\n",
+            i + 1,
+            step.title,
+            step.text.trim()
+        );
+        let own = question(&mut md, step);
         for panel in &step.show {
             let name = format!("{}-step{}-{}.png", lesson.name, i + 1, panel.name());
             let path = dir.join(&name);
@@ -77,19 +83,12 @@ pub fn write(
         format!("{}.md", lesson.name)
     };
     let markdown = dir.join(file);
-    std::fs::write(&markdown, md)
-        .map_err(|e| io_error(&markdown, format!("cannot write: {e}")))?;
+    std::fs::write(&markdown, md).map_err(|e| io_error(&markdown, format!("cannot write: {e}")))?;
     Ok(Handout { markdown, figures })
 }
 
 /// The step's question and task, with room to answer; whether there is anything to answer.
-fn question(
-    md: &mut String,
-    step: &Step,
-    _solved: &Solved,
-    _teacher: bool,
-    _file: &str,
-) -> Result<bool, LessonError> {
+fn question(md: &mut String, step: &Step) -> bool {
     if let Some(p) = &step.prediction {
         let _ = writeln!(md, "**Predict first.** {}\n", p.question());
         match p {
@@ -112,7 +111,7 @@ fn question(
             t.hint.trim()
         );
     }
-    Ok(step.prediction.is_some() || step.task.is_some())
+    step.prediction.is_some() || step.task.is_some()
 }
 
 /// The teacher's answer block: the model's answer, the explanation, the goal.
@@ -140,7 +139,11 @@ fn answer(md: &mut String, step: &Step, solved: &Solved, file: &str) -> Result<(
     if let Some(t) = &step.task {
         let _ = writeln!(md, "> **Goal checked:** `{}`\n", t.goal);
         if !t.solution.is_empty() {
-            let s: Vec<String> = t.solution.iter().map(|(k, v, _)| format!("{k}={v}")).collect();
+            let s: Vec<String> = t
+                .solution
+                .iter()
+                .map(|(k, v, _)| format!("{k}={v}"))
+                .collect();
             let _ = writeln!(md, "> **One way:** `{}`\n", s.join(" "));
         }
     }
@@ -175,7 +178,13 @@ fn figure(solved: &Solved, panel: Panel, path: &Path) -> Result<bool, String> {
                 "time [ms]",
                 "energy [J]",
                 vec![
-                    series("rigid-body kinetic", &h.time_s, &h.rigid_kinetic_j, 1e3, 1.0),
+                    series(
+                        "rigid-body kinetic",
+                        &h.time_s,
+                        &h.rigid_kinetic_j,
+                        1e3,
+                        1.0,
+                    ),
                     series("waves in the bars", &h.time_s, &h.wave_j, 1e3, 1.0),
                     series("in the contact", &h.time_s, &h.contact_j, 1e3, 1.0),
                     series("dissipated", &h.time_s, &h.dissipated_j, 1e3, 1.0),
@@ -209,7 +218,13 @@ fn figure(solved: &Solved, panel: Panel, path: &Path) -> Result<bool, String> {
             "Pounding force",
             "time [s]",
             "force [MN]",
-            vec![series("pounding", &result.time_s, &result.force_n, 1.0, 1e-6)],
+            vec![series(
+                "pounding",
+                &result.time_s,
+                &result.force_n,
+                1.0,
+                1e-6,
+            )],
         ),
         (Solved::Buildings { result, free, .. }, Panel::Displacements) => LinePlot::new(
             "Roof displacements",
@@ -235,8 +250,7 @@ fn figure(solved: &Solved, panel: Panel, path: &Path) -> Result<bool, String> {
             ],
         ),
         (Solved::Buildings { free, .. }, Panel::Gaps) => {
-            let closing: Vec<f64> = free
-                .displacement_m[0]
+            let closing: Vec<f64> = free.displacement_m[0]
                 .iter()
                 .zip(&free.displacement_m[1])
                 .map(|(l, r)| l - r)

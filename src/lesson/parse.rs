@@ -18,9 +18,9 @@ struct Doc<'a> {
 
 impl Doc<'_> {
     fn line(&self, offset: usize) -> usize {
-        self.text[..offset.min(self.text.len())]
-            .bytes()
-            .filter(|&b| b == b'\n')
+        self.text.as_bytes()[..offset.min(self.text.len())]
+            .iter()
+            .filter(|&&b| b == b'\n')
             .count()
             + 1
     }
@@ -43,14 +43,35 @@ struct Fields<'t, 'i> {
 }
 
 impl<'t, 'i> Fields<'t, 'i> {
-    fn new(doc: &Doc, table: &'t DeTable<'i>, path: &str, line: usize) -> Self {
-        Fields {
+    /// The table's fields; a field not in `allowed` is refused first, so a typo is reported
+    /// as itself rather than as the field it should have been, missing.
+    fn new(
+        doc: &Doc,
+        table: &'t DeTable<'i>,
+        path: &str,
+        line: usize,
+        allowed: &[&str],
+    ) -> Result<Self, LessonError> {
+        let f = Fields {
             path: path.to_string(),
             line,
             entries: table
                 .iter()
                 .map(|(k, v)| (k.get_ref().as_ref(), v, doc.line(k.span().start)))
                 .collect(),
+        };
+        f.refuse_unknown(doc, allowed)?;
+        Ok(f)
+    }
+
+    fn refuse_unknown(&self, doc: &Doc, allowed: &[&str]) -> Result<(), LessonError> {
+        match self.entries.iter().find(|(k, _, _)| !allowed.contains(k)) {
+            None => Ok(()),
+            Some((k, _, line)) => Err(doc.error(
+                Some(*line),
+                &self.field(k),
+                format!("unknown field; allowed here: {}", allowed.join(", ")),
+            )),
         }
     }
 
@@ -180,8 +201,8 @@ const CHOICE: &[&str] = &[
     "kind",
     "question",
     "options",
+    "when",
     "answer",
-    "confirm",
     "explanation",
 ];
 const NUMBER: &[&str] = &[
@@ -203,7 +224,7 @@ pub(super) fn parse(text: &str, name: &str, source: &str) -> Result<Lesson, Less
             e.message().to_string(),
         )
     })?;
-    let mut top = Fields::new(&doc, root.get_ref(), "", 1);
+    let mut top = Fields::new(&doc, root.get_ref(), "", 1, TOP)?;
     let (title, _) = top.required(&doc, "title")?;
     let (audience, _) = top.required(&doc, "audience")?;
     let duration_min = match top.number(&doc, "duration_min")? {
@@ -285,7 +306,8 @@ fn expression(
     field: &str,
     vocabulary: &Vocabulary,
 ) -> Result<Expr, LessonError> {
-    let expr = Expr::parse(text).map_err(|e| doc.error(Some(line), field, format!("'{text}': {e}")))?;
+    let expr =
+        Expr::parse(text).map_err(|e| doc.error(Some(line), field, format!("'{text}': {e}")))?;
     expr.check(vocabulary)
         .map_err(|e| doc.error(Some(line), field, format!("'{text}': {e}")))?;
     Ok(expr)
@@ -293,7 +315,7 @@ fn expression(
 
 fn step(doc: &Doc, table: &DeTable, index: usize, line: usize) -> Result<Step, LessonError> {
     let path = format!("step[{index}]");
-    let mut f = Fields::new(doc, table, &path, line);
+    let mut f = Fields::new(doc, table, &path, line, STEP)?;
     let (title, _) = f.required(doc, "title")?;
     let (text, _) = f.required(doc, "text")?;
     let (scene_name, scene_line) = f.required(doc, "scene")?;
@@ -374,7 +396,13 @@ fn step(doc: &Doc, table: &DeTable, index: usize, line: usize) -> Result<Step, L
         .map(|(s, l)| expression(doc, &s, l, &format!("{path}.asserts"), &vocabulary))
         .collect::<Result<Vec<_>, _>>()?;
     let prediction = match f.table(doc, "prediction")? {
-        Some((t, l)) => Some(prediction(doc, t, &format!("{path}.prediction"), l, &vocabulary)?),
+        Some((t, l)) => Some(prediction(
+            doc,
+            t,
+            &format!("{path}.prediction"),
+            l,
+            &vocabulary,
+        )?),
         None => None,
     };
     let task = match f.table(doc, "task")? {
@@ -431,7 +459,8 @@ fn prediction(
     line: usize,
     vocabulary: &Vocabulary,
 ) -> Result<Prediction, LessonError> {
-    let mut f = Fields::new(doc, table, path, line);
+    let either: Vec<&str> = CHOICE.iter().chain(NUMBER).copied().collect();
+    let mut f = Fields::new(doc, table, path, line, &either)?;
     let (kind, kind_line) = f.required(doc, "kind")?;
     let (question, _) = f.required(doc, "question")?;
     let (explanation, _) = f.required(doc, "explanation")?;
@@ -443,7 +472,11 @@ fn prediction(
                 .map(|(s, _)| s)
                 .collect();
             if options.len() < 2 {
-                return Err(doc.error(Some(line), &f.field("options"), "give at least two options"));
+                return Err(doc.error(
+                    Some(line),
+                    &f.field("options"),
+                    "give at least two options",
+                ));
             }
             let answer = match f.number(doc, "answer")? {
                 Some((x, _)) if x.fract() == 0.0 && x >= 1.0 && x <= options.len() as f64 => {
@@ -453,19 +486,42 @@ fn prediction(
                     return Err(doc.error(
                         Some(l),
                         &f.field("answer"),
-                        format!("{x} is not allowed: the right option's number, 1 to {}", options.len()),
+                        format!(
+                            "{x} is not allowed: the right option's number, 1 to {}",
+                            options.len()
+                        ),
                     ));
                 }
-                None => return Err(doc.error(Some(line), &f.field("answer"), "missing: the right option's number, from 1")),
+                None => {
+                    return Err(doc.error(
+                        Some(line),
+                        &f.field("answer"),
+                        "missing: the right option's number, from 1",
+                    ));
+                }
             };
-            let (c, cl) = f.required(doc, "confirm")?;
-            let confirm = expression(doc, &c, cl, &f.field("confirm"), vocabulary)?;
+            let when = f.strings(doc, "when")?;
+            if when.len() != options.len() {
+                return Err(doc.error(
+                    Some(when.first().map_or(line, |(_, l)| *l)),
+                    &f.field("when"),
+                    format!(
+                        "give one condition per option: {} options, {} conditions",
+                        options.len(),
+                        when.len()
+                    ),
+                ));
+            }
+            let when = when
+                .into_iter()
+                .map(|(w, l)| expression(doc, &w, l, &f.field("when"), vocabulary))
+                .collect::<Result<Vec<_>, _>>()?;
             f.finish(doc, CHOICE)?;
             Prediction::Choice {
                 question,
                 options,
+                when,
                 answer,
-                confirm,
                 explanation,
             }
         }
@@ -479,10 +535,18 @@ fn prediction(
                     return Err(doc.error(
                         Some(l),
                         &f.field("tolerance"),
-                        format!("{x} is not allowed: a relative tolerance in (0, 1), e.g. 0.1 for 10%"),
+                        format!(
+                            "{x} is not allowed: a relative tolerance in (0, 1), e.g. 0.1 for 10%"
+                        ),
                     ));
                 }
-                None => return Err(doc.error(Some(line), &f.field("tolerance"), "missing: the relative tolerance, e.g. 0.1")),
+                None => {
+                    return Err(doc.error(
+                        Some(line),
+                        &f.field("tolerance"),
+                        "missing: the relative tolerance, e.g. 0.1",
+                    ));
+                }
             };
             f.finish(doc, NUMBER)?;
             Prediction::Number {
@@ -511,7 +575,7 @@ fn task(
     line: usize,
     vocabulary: &Vocabulary,
 ) -> Result<Task, LessonError> {
-    let mut f = Fields::new(doc, table, path, line);
+    let mut f = Fields::new(doc, table, path, line, TASK)?;
     let (g, gl) = f.required(doc, "goal")?;
     let goal = expression(doc, &g, gl, &f.field("goal"), vocabulary)?;
     let (text, _) = f.required(doc, "text")?;

@@ -111,8 +111,8 @@ pub fn solve_step(
         message,
     };
     let all: Vec<(String, String, usize)> = step.set.iter().chain(extra).cloned().collect();
-    let setup =
-        SceneSetup::load(step.scene, step.preset.as_deref(), &all).map_err(|m| err(step.line, m))?;
+    let setup = SceneSetup::load(step.scene, step.preset.as_deref(), &all)
+        .map_err(|m| err(step.line, m))?;
     match setup {
         SceneSetup::Impact(setup) => {
             let models: Vec<ModelKind> = if step.scene == LessonScene::Compare {
