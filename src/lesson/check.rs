@@ -79,15 +79,26 @@ fn check_step(lesson: &Lesson, i: usize, control: &Control) -> Result<StepReport
     let answer = match &step.prediction {
         None => None,
         Some(p) => {
-            if let Prediction::Choice { confirm, .. } = p
-                && !truth(lesson, i, ".prediction.confirm", confirm, &ctx)?
+            if let Prediction::Choice {
+                answer, options, ..
+            } = p
             {
-                return Err(at(
-                    lesson,
-                    i,
-                    ".prediction.confirm",
-                    format!("'{confirm}' is false: the model does not confirm the answer key"),
-                ));
+                let picked = p
+                    .model_choice(&ctx)
+                    .map_err(|e| at(lesson, i, ".prediction.when", e.to_string()))?;
+                if picked != Some(*answer) {
+                    return Err(at(
+                        lesson,
+                        i,
+                        ".prediction.answer",
+                        format!(
+                            "the answer key is option {}, but the model picks option {} ('{}')",
+                            answer + 1,
+                            picked.map_or(0, |k| k + 1),
+                            picked.map_or("", |k| options[k].as_str())
+                        ),
+                    ));
+                }
             }
             Some(
                 p.expected(&ctx)

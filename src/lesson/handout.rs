@@ -64,7 +64,7 @@ pub fn write(
             step.title,
             step.text.trim()
         );
-        let own = question(&mut md, step, &solved, teacher, &lesson.source)?;
+        let own = question(&mut md, step);
         for panel in &step.show {
             let name = format!("{}-step{}-{}.png", lesson.name, i + 1, panel.name());
             let path = dir.join(&name);
@@ -88,13 +88,7 @@ pub fn write(
 }
 
 /// The step's question and task, with room to answer; whether there is anything to answer.
-fn question(
-    md: &mut String,
-    step: &Step,
-    _solved: &Solved,
-    _teacher: bool,
-    _file: &str,
-) -> Result<bool, LessonError> {
+fn question(md: &mut String, step: &Step) -> bool {
     if let Some(p) = &step.prediction {
         let _ = writeln!(md, "**Predict first.** {}\n", p.question());
         match p {
@@ -117,7 +111,7 @@ fn question(
             t.hint.trim()
         );
     }
-    Ok(step.prediction.is_some() || step.task.is_some())
+    step.prediction.is_some() || step.task.is_some()
 }
 
 /// The teacher's answer block: the model's answer, the explanation, the goal.

@@ -197,14 +197,15 @@ pub struct Step {
 /// A question the student answers before the result views appear.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Prediction {
-    /// Pick one option. `answer` counts from 0 (the file counts from 1); `confirm` is an
-    /// expression over the result that holds exactly when that option is right, so the answer
-    /// key is checked against the model.
+    /// Pick one option. Each option has a condition over the result (`when`, one per option);
+    /// the right option is the one whose condition holds on the run, so the model computes the
+    /// answer. `answer` (from 0; the file counts from 1) is the author's key, which `--check`
+    /// compares with the model's pick.
     Choice {
         question: String,
         options: Vec<String>,
+        when: Vec<Expr>,
         answer: usize,
-        confirm: Expr,
         explanation: String,
     },
     /// A number: right when within `tolerance` (relative: |x - answer| <= tolerance |answer|)
@@ -241,12 +242,35 @@ impl Prediction {
         }
     }
 
+    /// The option (from 0) the model picks: the one whose `when` holds. An error unless exactly
+    /// one holds; for a number prediction, `None`.
+    pub fn model_choice(&self, ctx: &Context) -> Result<Option<usize>, ExprError> {
+        let Prediction::Choice { when, .. } = self else {
+            return Ok(None);
+        };
+        let mut holding = Vec::new();
+        for (k, e) in when.iter().enumerate() {
+            if e.truth(ctx)? {
+                holding.push(k);
+            }
+        }
+        match holding.as_slice() {
+            [k] => Ok(Some(*k)),
+            _ => Err(ExprError::Type(format!(
+                "exactly one option's condition must hold, but {} do (options {:?}, from 1)",
+                holding.len(),
+                holding.iter().map(|k| k + 1).collect::<Vec<_>>()
+            ))),
+        }
+    }
+
     /// The right answer as shown, computed from the run.
     pub fn expected(&self, ctx: &Context) -> Result<String, ExprError> {
         match self {
-            Prediction::Choice {
-                options, answer, ..
-            } => Ok(options[*answer].clone()),
+            Prediction::Choice { options, .. } => {
+                let k = self.model_choice(ctx)?.unwrap_or_default();
+                Ok(options[k].clone())
+            }
             Prediction::Number { answer, unit, .. } => {
                 let x = answer.number(ctx)?;
                 Ok(format!("{} {unit}", significant(x, 3))
@@ -256,15 +280,14 @@ impl Prediction {
         }
     }
 
-    /// Judges a choice (its index, from 0) against the answer key.
+    /// Judges a choice (its index, from 0) against the model's pick.
     pub fn judge_choice(&self, chosen: usize, ctx: &Context) -> Result<Judgement, ExprError> {
-        let expected = self.expected(ctx)?;
-        match self {
-            Prediction::Choice { answer, .. } => Ok(Judgement {
-                correct: chosen == *answer,
-                expected,
+        match self.model_choice(ctx)? {
+            Some(k) => Ok(Judgement {
+                correct: chosen == k,
+                expected: self.expected(ctx)?,
             }),
-            Prediction::Number { .. } => Err(ExprError::Type(
+            None => Err(ExprError::Type(
                 "this prediction wants a number, not a choice".into(),
             )),
         }

@@ -18,9 +18,9 @@ struct Doc<'a> {
 
 impl Doc<'_> {
     fn line(&self, offset: usize) -> usize {
-        self.text[..offset.min(self.text.len())]
-            .bytes()
-            .filter(|&b| b == b'\n')
+        self.text.as_bytes()[..offset.min(self.text.len())]
+            .iter()
+            .filter(|&&b| b == b'\n')
             .count()
             + 1
     }
@@ -43,14 +43,35 @@ struct Fields<'t, 'i> {
 }
 
 impl<'t, 'i> Fields<'t, 'i> {
-    fn new(doc: &Doc, table: &'t DeTable<'i>, path: &str, line: usize) -> Self {
-        Fields {
+    /// The table's fields; a field not in `allowed` is refused first, so a typo is reported
+    /// as itself rather than as the field it should have been, missing.
+    fn new(
+        doc: &Doc,
+        table: &'t DeTable<'i>,
+        path: &str,
+        line: usize,
+        allowed: &[&str],
+    ) -> Result<Self, LessonError> {
+        let f = Fields {
             path: path.to_string(),
             line,
             entries: table
                 .iter()
                 .map(|(k, v)| (k.get_ref().as_ref(), v, doc.line(k.span().start)))
                 .collect(),
+        };
+        f.refuse_unknown(doc, allowed)?;
+        Ok(f)
+    }
+
+    fn refuse_unknown(&self, doc: &Doc, allowed: &[&str]) -> Result<(), LessonError> {
+        match self.entries.iter().find(|(k, _, _)| !allowed.contains(k)) {
+            None => Ok(()),
+            Some((k, _, line)) => Err(doc.error(
+                Some(*line),
+                &self.field(k),
+                format!("unknown field; allowed here: {}", allowed.join(", ")),
+            )),
         }
     }
 
@@ -180,8 +201,8 @@ const CHOICE: &[&str] = &[
     "kind",
     "question",
     "options",
+    "when",
     "answer",
-    "confirm",
     "explanation",
 ];
 const NUMBER: &[&str] = &[
@@ -203,7 +224,7 @@ pub(super) fn parse(text: &str, name: &str, source: &str) -> Result<Lesson, Less
             e.message().to_string(),
         )
     })?;
-    let mut top = Fields::new(&doc, root.get_ref(), "", 1);
+    let mut top = Fields::new(&doc, root.get_ref(), "", 1, TOP)?;
     let (title, _) = top.required(&doc, "title")?;
     let (audience, _) = top.required(&doc, "audience")?;
     let duration_min = match top.number(&doc, "duration_min")? {
@@ -294,7 +315,7 @@ fn expression(
 
 fn step(doc: &Doc, table: &DeTable, index: usize, line: usize) -> Result<Step, LessonError> {
     let path = format!("step[{index}]");
-    let mut f = Fields::new(doc, table, &path, line);
+    let mut f = Fields::new(doc, table, &path, line, STEP)?;
     let (title, _) = f.required(doc, "title")?;
     let (text, _) = f.required(doc, "text")?;
     let (scene_name, scene_line) = f.required(doc, "scene")?;
@@ -438,7 +459,8 @@ fn prediction(
     line: usize,
     vocabulary: &Vocabulary,
 ) -> Result<Prediction, LessonError> {
-    let mut f = Fields::new(doc, table, path, line);
+    let either: Vec<&str> = CHOICE.iter().chain(NUMBER).copied().collect();
+    let mut f = Fields::new(doc, table, path, line, &either)?;
     let (kind, kind_line) = f.required(doc, "kind")?;
     let (question, _) = f.required(doc, "question")?;
     let (explanation, _) = f.required(doc, "explanation")?;
@@ -478,14 +500,28 @@ fn prediction(
                     ));
                 }
             };
-            let (c, cl) = f.required(doc, "confirm")?;
-            let confirm = expression(doc, &c, cl, &f.field("confirm"), vocabulary)?;
+            let when = f.strings(doc, "when")?;
+            if when.len() != options.len() {
+                return Err(doc.error(
+                    Some(when.first().map_or(line, |(_, l)| *l)),
+                    &f.field("when"),
+                    format!(
+                        "give one condition per option: {} options, {} conditions",
+                        options.len(),
+                        when.len()
+                    ),
+                ));
+            }
+            let when = when
+                .into_iter()
+                .map(|(w, l)| expression(doc, &w, l, &f.field("when"), vocabulary))
+                .collect::<Result<Vec<_>, _>>()?;
             f.finish(doc, CHOICE)?;
             Prediction::Choice {
                 question,
                 options,
+                when,
                 answer,
-                confirm,
                 explanation,
             }
         }
@@ -539,7 +575,7 @@ fn task(
     line: usize,
     vocabulary: &Vocabulary,
 ) -> Result<Task, LessonError> {
-    let mut f = Fields::new(doc, table, path, line);
+    let mut f = Fields::new(doc, table, path, line, TASK)?;
     let (g, gl) = f.required(doc, "goal")?;
     let goal = expression(doc, &g, gl, &f.field("goal"), vocabulary)?;
     let (text, _) = f.required(doc, "text")?;
