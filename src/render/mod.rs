@@ -1,3 +1,5 @@
-//! wgpu pipelines drawn inside egui through paint callbacks; one file per pipeline.
+//! wgpu pipelines drawn inside egui through paint callbacks (one file per pipeline), and the same
+//! drawing offscreen.
 
 pub mod bars;
+pub mod offscreen;
