@@ -3,3 +3,4 @@
 
 pub mod bars;
 pub mod offscreen;
+pub mod animate;
