@@ -6,7 +6,7 @@ mod bar_scene;
 mod bar_view;
 mod building_params;
 mod building_scene;
-mod building_view;
+pub(crate) mod building_view;
 mod dialog;
 mod energy_view;
 mod export;

@@ -188,19 +188,7 @@ impl ImpactAnimation {
         let l = &self.layout;
         let font = |size: f64| ("sans-serif", self.px(size)).into_font().color(&BLACK);
         let err = |e: &dyn std::fmt::Display| e.to_string();
-        root.draw_text(&self.title, &font(24.0), (self.px(16.0) as i32, self.px(14.0) as i32))
-            .map_err(|e| err(&e))?;
-        let stamp = format!("t = {:.3} ms", t * 1e3);
-        let stamp_style = font(28.0).pos(plotters::style::text_anchor::Pos::new(
-            plotters::style::text_anchor::HPos::Right,
-            plotters::style::text_anchor::VPos::Top,
-        ));
-        root.draw_text(
-            &stamp,
-            &stamp_style,
-            ((self.size.0 - self.px(16.0)) as i32, self.px(12.0) as i32),
-        )
-        .map_err(|e| err(&e))?;
+        heading(&root, &|v| self.px(v), &self.title, &format!("t = {:.3} ms", t * 1e3))?;
         let x_desc = if l.to_scale {
             "position [m] (bar 1 | contact | bar 2)"
         } else {
@@ -259,7 +247,14 @@ impl ImpactAnimation {
         }
         let span = xt_rect.or(bars_rect).ok_or("no panel")?;
         let top = bars_rect.unwrap_or(span)[1];
-        self.colour_bar(&root, top, span[1] + span[3])?;
+        let peak = self.layout.stress_scale_pa * 1e-6;
+        colour_bar(
+            &root,
+            &|v| self.px(v),
+            [top, span[1] + span[3]],
+            "axial stress",
+            [format!("{peak:+.3} MPa"), format!("{:+.3} MPa", -peak)],
+        )?;
         root.present().map_err(|e| err(&e))
     }
 
@@ -287,45 +282,6 @@ impl ImpactAnimation {
             .map_err(|e| e.to_string())
     }
 
-    /// The colour bar beside the panels, from `top` to `bottom` (pixels): the stress that
-    /// saturates the colour map, in MPa, with what its signs mean.
-    fn colour_bar(
-        &self,
-        root: &DrawingArea<BitMapBackend<'_>, Shift>,
-        top: u32,
-        bottom: u32,
-    ) -> Result<(), String> {
-        let err = |e: &dyn std::fmt::Display| e.to_string();
-        let x0 = (self.size.0 - self.px(150.0)) as i32;
-        let x1 = x0 + self.px(22.0) as i32;
-        let (top, bottom) = (top as i32 + self.px(26.0) as i32, bottom as i32);
-        let n = (bottom - top).max(1);
-        for y in top..bottom {
-            let s = 1.0 - 2.0 * (y - top) as f64 / n as f64;
-            let [r, g, b] = crate::export::xt::diverging(s);
-            root.draw(&Rectangle::new([(x0, y), (x1, y + 1)], RGBColor(r, g, b).filled()))
-                .map_err(|e| err(&e))?;
-        }
-        root.draw(&Rectangle::new([(x0, top), (x1, bottom)], BLACK.stroke_width(1)))
-            .map_err(|e| err(&e))?;
-        let font = ("sans-serif", self.px(15.0)).into_font().color(&BLACK);
-        let peak = self.layout.stress_scale_pa * 1e-6;
-        let tx = x1 + self.px(6.0) as i32;
-        let line = self.px(17.0) as i32;
-        let mid = (top + bottom) / 2;
-        for (y, text) in [
-            (top, format!("{peak:+.3} MPa")),
-            (top + line, "tension".to_string()),
-            (mid - line / 2, "0 MPa".to_string()),
-            (bottom - 2 * line, "compression".to_string()),
-            (bottom - line, format!("{:+.3} MPa", -peak)),
-        ] {
-            root.draw_text(&text, &font, (tx, y)).map_err(|e| err(&e))?;
-        }
-        root.draw_text("axial stress", &font, (x0, top - self.px(24.0) as i32))
-            .map_err(|e| err(&e))
-    }
-
     /// Renders every frame into `path` (GIF, or APNG for .png) at `fps`; `progress` hears each
     /// frame written.
     pub fn write(
@@ -339,6 +295,72 @@ impl ImpactAnimation {
             self.frame(target, k)
         })
     }
+}
+
+/// The title (top left) and the time stamp (top right, large) of a frame.
+pub(crate) fn heading(
+    root: &DrawingArea<BitMapBackend<'_>, Shift>,
+    px: &dyn Fn(f64) -> u32,
+    title: &str,
+    stamp: &str,
+) -> Result<(), String> {
+    use plotters::style::text_anchor::{HPos, Pos, VPos};
+    let font = |size: f64| ("sans-serif", px(size)).into_font().color(&BLACK);
+    root.draw_text(title, &font(24.0), (px(16.0) as i32, px(14.0) as i32))
+        .map_err(|e| e.to_string())?;
+    let width = root.dim_in_pixel().0;
+    root.draw_text(
+        stamp,
+        &font(28.0).pos(Pos::new(HPos::Right, VPos::Top)),
+        ((width - px(16.0)) as i32, px(12.0) as i32),
+    )
+    .map_err(|e| e.to_string())
+}
+
+/// The colour bar at the right edge, from `top` to `bottom` (pixels): `ends` label the
+/// values that saturate the map (tension at the top, compression at the bottom).
+pub(crate) fn colour_bar(
+    root: &DrawingArea<BitMapBackend<'_>, Shift>,
+    px: &dyn Fn(f64) -> u32,
+    [top, bottom]: [u32; 2],
+    name: &str,
+    ends: [String; 2],
+) -> Result<(), String> {
+    let err = |e: &dyn std::fmt::Display| e.to_string();
+    let x0 = (root.dim_in_pixel().0 - px(150.0)) as i32;
+    let x1 = x0 + px(22.0) as i32;
+    let (top, bottom) = (top as i32 + px(26.0) as i32, bottom as i32);
+    let n = (bottom - top).max(1);
+    for y in top..bottom {
+        let s = 1.0 - 2.0 * (y - top) as f64 / n as f64;
+        let [r, g, b] = crate::export::xt::diverging(s);
+        root.draw(&Rectangle::new(
+            [(x0, y), (x1, y + 1)],
+            RGBColor(r, g, b).filled(),
+        ))
+        .map_err(|e| err(&e))?;
+    }
+    root.draw(&Rectangle::new(
+        [(x0, top), (x1, bottom)],
+        BLACK.stroke_width(1),
+    ))
+    .map_err(|e| err(&e))?;
+    let font = ("sans-serif", px(15.0)).into_font().color(&BLACK);
+    let tx = x1 + px(6.0) as i32;
+    let line = px(17.0) as i32;
+    let mid = (top + bottom) / 2;
+    let [high, low] = ends;
+    for (y, text) in [
+        (top, high),
+        (top + line, "tension".to_string()),
+        (mid - line / 2, "0".to_string()),
+        (bottom - 2 * line, "compression".to_string()),
+        (bottom - line, low),
+    ] {
+        root.draw_text(&text, &font, (tx, y)).map_err(|e| err(&e))?;
+    }
+    root.draw_text(name, &font, (x0, top - px(24.0) as i32))
+        .map_err(|e| err(&e))
 }
 
 /// Renders `frames` frames with `frame` and writes them; the GIF palette learns from the

@@ -4,3 +4,4 @@
 pub mod bars;
 pub mod offscreen;
 pub mod animate;
+pub mod animate_buildings;

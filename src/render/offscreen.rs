@@ -147,32 +147,38 @@ impl Offscreen {
         self.finish(encoder)
     }
 
-    /// Runs one egui frame of `ctx` drawing `ui` over the whole target (one point per pixel) and
+    /// Runs one egui frame of `ctx` drawing `ui` over the whole target (`pixels_per_point`) and
     /// renders it, paint callbacks (the wave fields) included, into the target cleared to
     /// `clear`: the window's own drawing, offscreen.
     pub fn draw_egui(
         &mut self,
         ctx: &egui::Context,
         clear: [f64; 3],
+        pixels_per_point: f32,
         mut ui: impl FnMut(&mut egui::Ui),
     ) -> Result<Vec<u8>, OffscreenError> {
         let (w, h) = self.size;
-        let input = egui::RawInput {
+        let mut input = egui::RawInput {
             screen_rect: Some(egui::Rect::from_min_size(
                 egui::Pos2::ZERO,
-                egui::vec2(w as f32, h as f32),
+                egui::vec2(w as f32, h as f32) / pixels_per_point,
             )),
             ..Default::default()
         };
-        let output = ctx.run_ui(input, |root| {
+        input
+            .viewports
+            .entry(egui::ViewportId::ROOT)
+            .or_default()
+            .native_pixels_per_point = Some(pixels_per_point);
+        let mut output = ctx.run_ui(input, |root| {
             egui::CentralPanel::default()
                 .frame(egui::Frame::NONE)
                 .show(root, |inner| ui(inner));
         });
-        let jobs = ctx.tessellate(output.shapes, 1.0);
+        let jobs = ctx.tessellate(output.shapes, output.pixels_per_point);
         let screen = egui_wgpu::ScreenDescriptor {
             size_in_pixels: [w, h],
-            pixels_per_point: 1.0,
+            pixels_per_point: output.pixels_per_point,
         };
         let (device, queue) = (&self.device, &self.queue);
         let renderer = self.egui.get_or_insert_with(|| {
@@ -196,6 +202,8 @@ impl Offscreen {
         for id in &output.textures_delta.free {
             renderer.free_texture(id);
         }
+        // Every delta is applied above; dropping an unapplied one is a bug egui checks for.
+        output.textures_delta.clear();
         queue.submit(commands);
         self.finish(encoder)
     }
