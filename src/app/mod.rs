@@ -10,6 +10,7 @@ pub(crate) mod building_view;
 mod dialog;
 mod energy_view;
 mod export;
+mod export_animation;
 mod impact_params;
 mod launch;
 mod menus;
