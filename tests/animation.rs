@@ -163,3 +163,72 @@ fn the_bars_views_stress_front_in_frame_k_lies_within_2_px_of_x_equals_c_t_k() {
     eprintln!("{checked} frames: the front within {worst:.2} px of c t");
     assert!(checked >= 3, "only {checked} frames had a front in bar 2");
 }
+
+#[test]
+fn cli_impact_animate_writes_a_gif_of_the_asked_frames_and_size() {
+    if common::adapter_or_skip().is_none() {
+        return;
+    }
+    let path = scratch("cli-xt.gif");
+    let o = common::pounding(&[
+        "impact",
+        "--preset",
+        "long-bars",
+        "--animate",
+        path.to_str().unwrap(),
+        "--animate-view",
+        "xt",
+        "--animate-frames",
+        "5",
+        "--animate-size",
+        "320x200",
+        "--json",
+    ]);
+    assert!(o.status.success(), "{}", common::stderr(&o));
+    let (frames, size) = gif_frames(&path);
+    assert_eq!((frames.len(), size), (5, (320, 200)));
+    // --json keeps standard output one JSON object.
+    serde_json::from_str::<serde_json::Value>(&common::stdout(&o)).expect("JSON on stdout");
+}
+
+#[test]
+fn cli_buildings_animate_writes_an_apng_whose_frames_differ() {
+    if common::adapter_or_skip().is_none() {
+        return;
+    }
+    let path = scratch("cli-buildings.png");
+    let o = common::pounding(&[
+        "buildings",
+        "--animate",
+        path.to_str().unwrap(),
+        "--animate-frames",
+        "4",
+        "--animate-size",
+        "480x270",
+        "--quiet",
+    ]);
+    assert!(o.status.success(), "{}", common::stderr(&o));
+    let (frames, size, declared) = apng_frames(&path);
+    assert_eq!((frames.len(), declared, size), (4, 4, (480, 270)));
+    assert!(frames.windows(2).all(|f| f[0] != f[1]), "frames repeat");
+}
+
+#[test]
+fn bad_animation_flags_are_refused_naming_the_flag_and_its_range() {
+    for (args, want) in [
+        (vec!["--animate-view", "side"], "--animate-view: unknown view 'side': allowed bars|xt|both"),
+        (vec!["--animate-frames", "1"], "--animate-frames: frames: 1 is outside 2 to 2000"),
+        (vec!["--animate-fps", "100"], "--animate-fps"),
+        (vec!["--animate-size", "10x10"], "--animate-size"),
+    ] {
+        let path = scratch("refused.gif");
+        let mut all = vec!["impact", "--animate", path.to_str().unwrap()];
+        all.extend(args.iter().copied());
+        let o = common::pounding(&all);
+        assert!(!o.status.success(), "{args:?} accepted");
+        let err = common::stderr(&o);
+        assert!(err.contains(want), "{args:?}: {err}");
+    }
+    let o = common::pounding(&["impact", "--animate", "a.mp4"]);
+    assert!(common::stderr(&o).contains(".gif or .png"), "{}", common::stderr(&o));
+}

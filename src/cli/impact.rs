@@ -60,8 +60,9 @@ pub struct AnimateArgs {
 impl AnimateArgs {
     /// Checks the frame count and rate before a solve is spent on them.
     pub fn check(&self) -> anyhow::Result<()> {
-        if self.animate.is_some() {
-            use pounding::export::animation::{AnimationError, check_timing};
+        if let Some(path) = &self.animate {
+            use pounding::export::animation::{AnimationError, AnimationFormat, check_timing};
+            AnimationFormat::of_path(path).map_err(|e| anyhow::anyhow!("--animate: {e}"))?;
             check_timing(self.animate_frames, self.animate_fps).map_err(|e| match e {
                 AnimationError::Frames(_) => anyhow::anyhow!("--animate-frames: {e}"),
                 _ => anyhow::anyhow!("--animate-fps: {e}"),
