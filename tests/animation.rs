@@ -58,11 +58,9 @@ fn gif_frames(path: &Path) -> (Vec<Vec<u8>>, (u32, u32)) {
 
 /// An APNG's frames (RGB, each the whole image) and its declared frame count.
 fn apng_frames(path: &Path) -> (Vec<Vec<u8>>, (u32, u32), u32) {
-    let mut reader = png::Decoder::new(std::io::BufReader::new(
-        std::fs::File::open(path).unwrap(),
-    ))
-    .read_info()
-    .expect("a PNG");
+    let mut reader = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(path).unwrap()))
+        .read_info()
+        .expect("a PNG");
     let info = reader.info();
     let declared = info
         .animation_control
@@ -73,7 +71,11 @@ fn apng_frames(path: &Path) -> (Vec<Vec<u8>>, (u32, u32), u32) {
     for _ in 0..declared {
         let mut buf = vec![0; reader.output_buffer_size().unwrap()];
         let out = reader.next_frame(&mut buf).expect("a frame decodes");
-        assert_eq!((out.width, out.height), size, "every frame covers the image");
+        assert_eq!(
+            (out.width, out.height),
+            size,
+            "every frame covers the image"
+        );
         buf.truncate(out.buffer_size());
         frames.push(buf);
     }
@@ -95,7 +97,11 @@ fn gif_and_apng_decode_to_the_requested_frames_and_size_and_consecutive_frames_d
         let mut heard = vec![];
         anim.write(&mut target, &gif_path, 10.0, &mut |k| heard.push(k))
             .expect("the GIF is written");
-        assert_eq!(heard, (1..=frames).collect::<Vec<_>>(), "progress per frame");
+        assert_eq!(
+            heard,
+            (1..=frames).collect::<Vec<_>>(),
+            "progress per frame"
+        );
         anim.write(&mut target, &png_path, 10.0, &mut |_| {})
             .expect("the APNG is written");
 
@@ -103,11 +109,25 @@ fn gif_and_apng_decode_to_the_requested_frames_and_size_and_consecutive_frames_d
         assert_eq!(gif.len(), frames, "{view:?}: GIF frames");
         assert_eq!(gif_size, size, "{view:?}: GIF size");
         let (apng, apng_size, declared) = apng_frames(&png_path);
-        assert_eq!((declared as usize, apng.len()), (frames, frames), "{view:?}");
+        assert_eq!(
+            (declared as usize, apng.len()),
+            (frames, frames),
+            "{view:?}"
+        );
         assert_eq!(apng_size, size, "{view:?}: APNG size");
         for k in 1..frames {
-            assert_ne!(gif[k - 1], gif[k], "{view:?}: GIF frames {} and {k} equal", k - 1);
-            assert_ne!(apng[k - 1], apng[k], "{view:?}: APNG frames {} and {k} equal", k - 1);
+            assert_ne!(
+                gif[k - 1],
+                gif[k],
+                "{view:?}: GIF frames {} and {k} equal",
+                k - 1
+            );
+            assert_ne!(
+                apng[k - 1],
+                apng[k],
+                "{view:?}: APNG frames {} and {k} equal",
+                k - 1
+            );
         }
     }
 }
@@ -216,8 +236,14 @@ fn cli_buildings_animate_writes_an_apng_whose_frames_differ() {
 #[test]
 fn bad_animation_flags_are_refused_naming_the_flag_and_its_range() {
     for (args, want) in [
-        (vec!["--animate-view", "side"], "--animate-view: unknown view 'side': allowed bars|xt|both"),
-        (vec!["--animate-frames", "1"], "--animate-frames: frames: 1 is outside 2 to 2000"),
+        (
+            vec!["--animate-view", "side"],
+            "--animate-view: unknown view 'side': allowed bars|xt|both",
+        ),
+        (
+            vec!["--animate-frames", "1"],
+            "--animate-frames: frames: 1 is outside 2 to 2000",
+        ),
         (vec!["--animate-fps", "100"], "--animate-fps"),
         (vec!["--animate-size", "10x10"], "--animate-size"),
     ] {
@@ -230,5 +256,9 @@ fn bad_animation_flags_are_refused_naming_the_flag_and_its_range() {
         assert!(err.contains(want), "{args:?}: {err}");
     }
     let o = common::pounding(&["impact", "--animate", "a.mp4"]);
-    assert!(common::stderr(&o).contains(".gif or .png"), "{}", common::stderr(&o));
+    assert!(
+        common::stderr(&o).contains(".gif or .png"),
+        "{}",
+        common::stderr(&o)
+    );
 }

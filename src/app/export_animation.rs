@@ -74,7 +74,11 @@ impl AnimationSettings {
         ui.horizontal(|ui| {
             ui.label("time from");
             let mut from = self.start_s * factor;
-            ui.add(egui::DragValue::new(&mut from).range(0.0..=1e6).suffix(unit));
+            ui.add(
+                egui::DragValue::new(&mut from)
+                    .range(0.0..=1e6)
+                    .suffix(unit),
+            );
             ui.label("to");
             let mut to = self.end_s * factor;
             ui.add(egui::DragValue::new(&mut to).range(0.0..=1e6).suffix(unit))
@@ -95,9 +99,17 @@ impl AnimationSettings {
         });
         ui.horizontal(|ui| {
             ui.label("size");
-            ui.add(egui::DragValue::new(&mut self.size[0]).range(160..=3840).suffix(" px"));
+            ui.add(
+                egui::DragValue::new(&mut self.size[0])
+                    .range(160..=3840)
+                    .suffix(" px"),
+            );
             ui.label("x");
-            ui.add(egui::DragValue::new(&mut self.size[1]).range(120..=2160).suffix(" px"));
+            ui.add(
+                egui::DragValue::new(&mut self.size[1])
+                    .range(120..=2160)
+                    .suffix(" px"),
+            );
         });
         ui.checkbox(&mut self.apng, "APNG (.png) instead of GIF");
         ui.add_enabled(enabled, egui::Button::new("Export animation"))

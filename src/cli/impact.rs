@@ -204,7 +204,10 @@ struct AnimView;
 impl AnimView {
     const NAMES: &str = "bars|xt|both";
     fn from_name(name: &str) -> Option<Self> {
-        Self::NAMES.split('|').any(|n| n == name).then_some(AnimView)
+        Self::NAMES
+            .split('|')
+            .any(|n| n == name)
+            .then_some(AnimView)
     }
 }
 

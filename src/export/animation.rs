@@ -241,11 +241,7 @@ impl Palette {
             .iter()
             .flat_map(|f| f.chunks_exact(3).flat_map(|p| [p[0], p[1], p[2], 255]))
             .collect();
-        let rgba = if rgba.is_empty() {
-            vec![255; 4]
-        } else {
-            rgba
-        };
+        let rgba = if rgba.is_empty() { vec![255; 4] } else { rgba };
         let quant = color_quant::NeuQuant::new(10, 256, &rgba);
         let rgb = quant.color_map_rgb();
         Palette {
@@ -285,9 +281,17 @@ mod tests {
 
     #[test]
     fn timing_outside_its_ranges_is_refused_naming_the_field() {
-        assert!(check_timing(1, 10.0).unwrap_err().to_string().contains("frames"));
+        assert!(
+            check_timing(1, 10.0)
+                .unwrap_err()
+                .to_string()
+                .contains("frames")
+        );
         let e = check_timing(10, 0.0).unwrap_err().to_string();
-        assert!(e.contains("frames per second") && e.contains("1 to 50"), "{e}");
+        assert!(
+            e.contains("frames per second") && e.contains("1 to 50"),
+            "{e}"
+        );
         assert!(check_timing(10, f64::NAN).is_err());
         assert!(check_timing(120, 30.0).is_ok());
     }

@@ -109,12 +109,8 @@ impl ImpactAnimation {
     /// The pixel rectangles of the bar view and of the x-t diagram (those the view shows).
     pub fn panels(&self) -> (Option<PixelRect>, Option<PixelRect>) {
         let (w, h) = self.size;
-        let (left, right, top, bottom) = (
-            self.px(100.0),
-            self.px(170.0),
-            self.px(64.0),
-            self.px(60.0),
-        );
+        let (left, right, top, bottom) =
+            (self.px(100.0), self.px(170.0), self.px(64.0), self.px(60.0));
         let width = w.saturating_sub(left + right).max(8);
         let height = h.saturating_sub(top + bottom).max(8);
         match self.view {
@@ -188,7 +184,12 @@ impl ImpactAnimation {
         let l = &self.layout;
         let font = |size: f64| ("sans-serif", self.px(size)).into_font().color(&BLACK);
         let err = |e: &dyn std::fmt::Display| e.to_string();
-        heading(&root, &|v| self.px(v), &self.title, &format!("t = {:.3} ms", t * 1e3))?;
+        heading(
+            &root,
+            &|v| self.px(v),
+            &self.title,
+            &format!("t = {:.3} ms", t * 1e3),
+        )?;
         let x_desc = if l.to_scale {
             "position [m] (bar 1 | contact | bar 2)"
         } else {
@@ -207,7 +208,10 @@ impl ImpactAnimation {
                 .draw()
                 .map_err(|e| err(&e))?;
             let y = l.bars[0].y_top as f64 + 0.02;
-            for (x, name) in [(-0.5 * (l.gap - l.left), "bar 1"), (0.5 * (l.right + l.gap), "bar 2")] {
+            for (x, name) in [
+                (-0.5 * (l.gap - l.left), "bar 1"),
+                (0.5 * (l.right + l.gap), "bar 2"),
+            ] {
                 chart
                     .draw_series(std::iter::once(Text::new(
                         name,
@@ -265,7 +269,14 @@ impl ImpactAnimation {
         rect: PixelRect,
         y: (f64, f64),
     ) -> Result<
-        ChartContext<'a, BitMapBackend<'b>, Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>>,
+        ChartContext<
+            'a,
+            BitMapBackend<'b>,
+            Cartesian2d<
+                plotters::coord::types::RangedCoordf64,
+                plotters::coord::types::RangedCoordf64,
+            >,
+        >,
         String,
     > {
         let [x, top, w, h] = rect;
