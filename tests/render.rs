@@ -10,14 +10,14 @@ use eframe::egui_wgpu::wgpu;
 use pounding::io::preset::load_for;
 use pounding::io::settings::ImpactSetup;
 use pounding::model::impact::solve;
-use pounding::render::bars::{BarsLayout, FieldResources, GpuHistory, View, XtShown, diverging};
+use pounding::render::bars::{BarsLayout, GpuHistory, View, XtShown, diverging};
+use pounding::render::offscreen::{FieldPart, Offscreen};
 use std::path::Path;
 
 mod common;
 
 const W: u32 = 1024;
 const H: u32 = 128;
-const FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
 const CLEAR: [f64; 3] = [0.1, 0.1, 0.1];
 
 fn device() -> Option<(wgpu::Device, wgpu::Queue, String)> {
@@ -51,94 +51,31 @@ fn render(t: f64) -> Option<(Vec<u8>, BarsLayout, ImpactSetup)> {
     Some((pixels, layout, setup))
 }
 
-/// Draws `bars` as `view` into a `size` offscreen texture cleared to CLEAR; its RGBA rows.
+/// Draws `bars` as `view` over a `size` offscreen target cleared to CLEAR (the library's
+/// offscreen drawing, as animations use it); its RGBA rows.
 fn draw_offscreen(
     device: &wgpu::Device,
     queue: &wgpu::Queue,
     (w, h): (u32, u32),
-    view_kind: View,
+    view: View,
     uniforms: &pounding::render::bars::GpuUniforms,
     bars: &[pounding::render::bars::GpuBar],
     history: &GpuHistory,
 ) -> Vec<u8> {
-    let mut resources = FieldResources::new(device, FORMAT);
-    resources.upload(device, queue, 0, uniforms, bars, history);
-    let texture = device.create_texture(&wgpu::TextureDescriptor {
-        label: Some("offscreen"),
-        size: wgpu::Extent3d {
-            width: w,
-            height: h,
-            depth_or_array_layers: 1,
-        },
-        mip_level_count: 1,
-        sample_count: 1,
-        dimension: wgpu::TextureDimension::D2,
-        format: FORMAT,
-        usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
-        view_formats: &[],
-    });
-    let view = texture.create_view(&Default::default());
-    let readback = device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("readback"),
-        size: (w * h * 4) as u64,
-        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-        mapped_at_creation: false,
-    });
-    let mut encoder = device.create_command_encoder(&Default::default());
-    {
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("bars"),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: &view,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(wgpu::Color {
-                        r: CLEAR[0],
-                        g: CLEAR[1],
-                        b: CLEAR[2],
-                        a: 1.0,
-                    }),
-                    store: wgpu::StoreOp::Store,
-                },
-            })],
-            depth_stencil_attachment: None,
-            timestamp_writes: None,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
-        resources.draw(&mut pass, 0, view_kind, bars.len() as u32);
-    }
-    // w * 4 must be a multiple of 256, so rows need no padding.
-    assert_eq!(w * 4 % 256, 0);
-    encoder.copy_texture_to_buffer(
-        wgpu::TexelCopyTextureInfo {
-            texture: &texture,
-            mip_level: 0,
-            origin: wgpu::Origin3d::ZERO,
-            aspect: wgpu::TextureAspect::All,
-        },
-        wgpu::TexelCopyBufferInfo {
-            buffer: &readback,
-            layout: wgpu::TexelCopyBufferLayout {
-                offset: 0,
-                bytes_per_row: Some(w * 4),
-                rows_per_image: Some(h),
-            },
-        },
-        wgpu::Extent3d {
-            width: w,
-            height: h,
-            depth_or_array_layers: 1,
-        },
-    );
-    queue.submit([encoder.finish()]);
-    let slice = readback.slice(..);
-    slice.map_async(wgpu::MapMode::Read, |r| r.expect("readback maps"));
-    device
-        .poll(wgpu::PollType::wait_indefinitely())
-        .expect("the GPU finishes");
-    slice.get_mapped_range().expect("mapped").to_vec()
+    let mut target =
+        Offscreen::new(device.clone(), queue.clone(), (w, h)).expect("an offscreen target");
+    target
+        .draw_fields(
+            CLEAR,
+            &[FieldPart {
+                rect: [0, 0, w, h],
+                view,
+                uniforms: *uniforms,
+                bars,
+                history,
+            }],
+        )
+        .expect("the frame reads back")
 }
 
 fn pixel(pixels: &[u8], px: u32, py: u32) -> [f64; 3] {

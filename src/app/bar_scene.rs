@@ -650,3 +650,18 @@ fn compare_table(ui: &mut egui::Ui, peers: &[(ModelKind, Solved)]) {
             }
         });
 }
+
+impl BarScene {
+    /// The shown run for File > Export animation, copied only when called.
+    pub(super) fn animation_source(
+        &self,
+    ) -> Option<Box<dyn FnOnce() -> super::export_animation::AnimationSource + '_>> {
+        let s = self.solved.as_ref()?;
+        Some(Box::new(move || {
+            super::export_animation::AnimationSource::Impact {
+                setup: s.setup.clone(),
+                result: s.result.clone(),
+            }
+        }))
+    }
+}

@@ -657,3 +657,19 @@ fn gap_ui(ui: &mut egui::Ui, g: &GapAssessment, gap_m: f64, levels: usize) {
         }
     });
 }
+
+impl BuildingScene {
+    /// The shown run for File > Export animation, copied only when called.
+    pub(super) fn animation_source(
+        &self,
+    ) -> Option<Box<dyn FnOnce() -> super::export_animation::AnimationSource + '_>> {
+        let d = &self.solved.as_ref()?.drawing;
+        Some(Box::new(move || {
+            super::export_animation::AnimationSource::Buildings {
+                setup: d.setup.clone(),
+                motion: d.motion.clone(),
+                result: d.result.clone(),
+            }
+        }))
+    }
+}

@@ -58,6 +58,8 @@ pub struct Exporter {
     pub size: [u32; 2],
     /// Text and line scale of plot exports.
     pub scale: f64,
+    /// File > Export animation's choices.
+    pub animation: super::export_animation::AnimationSettings,
     done_tx: Sender<Result<String, String>>,
     done_rx: Receiver<Result<String, String>>,
 }
@@ -69,6 +71,7 @@ impl Default for Exporter {
             prefix: "pounding".into(),
             size: [1600, 900],
             scale: 1.0,
+            animation: Default::default(),
             done_tx,
             done_rx,
         }
@@ -76,7 +79,7 @@ impl Default for Exporter {
 }
 
 impl Exporter {
-    fn spawn(&self, job: impl FnOnce() -> Result<String, String> + Send + 'static) {
+    pub(super) fn spawn(&self, job: impl FnOnce() -> Result<String, String> + Send + 'static) {
         let tx = self.done_tx.clone();
         std::thread::spawn(move || {
             let _ = tx.send(job());

@@ -237,6 +237,28 @@ impl PoundingApp {
             self.exporter.screenshot(ui.ctx(), view, "view");
             ui.close();
         }
+        ui.menu_button("Export animation", |ui| self.animation_menu(ui));
+    }
+
+    /// File > Export animation: the shown run (an impact or the buildings) as a GIF or APNG.
+    fn animation_menu(&mut self, ui: &mut egui::Ui) {
+        let impact = self.scene == SceneKind::BarImpact;
+        let has = match self.scene {
+            SceneKind::BarImpact => self.bar.animation_source().is_some(),
+            SceneKind::Buildings => self.buildings.animation_source().is_some(),
+            _ => false,
+        };
+        if self.exporter.animation.ui(ui, impact, has) {
+            let source = match self.scene {
+                SceneKind::BarImpact => self.bar.animation_source(),
+                _ => self.buildings.animation_source(),
+            };
+            if let Some(s) = source {
+                self.exporter.export_animation(s());
+                self.message = Some(("rendering the animation...".into(), false));
+            }
+            ui.close();
+        }
     }
 
     fn preset_ui(&mut self, ui: &mut egui::Ui) {

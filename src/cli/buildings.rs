@@ -21,6 +21,11 @@ pub struct BuildingArgs {
     /// Contact model: sears|linear|kelvin|hertz|hertzdamp|jankowski|stereo|none [default: the preset's]
     #[arg(long, value_name = "MODEL")]
     pub contact: Option<String>,
+    #[command(flatten)]
+    pub animation: super::impact::AnimateArgs,
+    /// The animation's drift exaggeration (1 to 500; the ground is drawn to scale)
+    #[arg(long, value_name = "X", default_value_t = 20.0)]
+    pub animate_drift: f64,
 }
 
 /// Reads or generates the ground motion a setup asks for; errors phrased for the command line.
@@ -49,6 +54,47 @@ pub(super) fn setup<'a>(
     Ok((setup, preset_name))
 }
 
+/// Writes --animate, if asked for.
+#[cfg(feature = "gui")]
+fn write_animation(
+    args: &BuildingArgs,
+    setup: &BuildingSetup,
+    motion: &GroundMotion,
+    result: &pounding::model::building::BuildingResult,
+) -> anyhow::Result<()> {
+    let a = &args.animation;
+    if a.animate.is_none() {
+        return Ok(());
+    }
+    let title = format!(
+        "Two buildings: {} contact, {}",
+        result.contact.name(),
+        motion.name
+    );
+    let mut animation = pounding::render::animate_buildings::BuildingAnimation::new(
+        setup.clone(),
+        motion.clone(),
+        result.clone(),
+        title,
+        a.animate_size,
+        a.animate_frames,
+    );
+    animation.exaggeration = args.animate_drift;
+    a.write(args.common.json, |target, path, progress| {
+        animation.write(target, path, a.animate_fps, progress)
+    })
+}
+
+#[cfg(not(feature = "gui"))]
+fn write_animation(
+    _: &BuildingArgs,
+    _: &BuildingSetup,
+    _: &GroundMotion,
+    _: &pounding::model::building::BuildingResult,
+) -> anyhow::Result<()> {
+    Ok(())
+}
+
 pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     if args.common.list_keys {
         return super::list(
@@ -69,8 +115,16 @@ pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         setup.scenario.contact = ContactModel::from_name(c)
             .ok_or_else(|| anyhow::anyhow!("--contact: unknown model '{c}': allowed sears|linear|kelvin|hertz|hertzdamp|jankowski|stereo|none"))?;
     }
+    args.animation.check()?;
+    if !(1.0..=500.0).contains(&args.animate_drift) {
+        anyhow::bail!(
+            "--animate-drift: {} is outside 1 to 500",
+            args.animate_drift
+        );
+    }
     let motion = load_motion(&setup)?;
     let result = solve(&setup.scenario, &motion)?;
+    write_animation(args, &setup, &motion, &result)?;
     let estimate =
         pounding::model::building::estimate_error(&setup.scenario, &motion, &result).ok();
     let baseline = solve(

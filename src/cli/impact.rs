@@ -29,6 +29,87 @@ pub struct ImpactArgs {
     /// Write the energy over time as CSV: time_s,rigid_kinetic_j,wave_j,contact_j,dissipated_j,total_j
     #[arg(long, value_name = "FILE")]
     pub energy: Option<std::path::PathBuf>,
+    #[command(flatten)]
+    pub animation: AnimateArgs,
+    /// The animation's view: bars|xt|both
+    #[arg(long, value_name = "VIEW", default_value = "both")]
+    pub animate_view: String,
+}
+
+/// The animation flags `impact` and `buildings` share.
+#[derive(Args, Debug, Default)]
+pub struct AnimateArgs {
+    /// Write an animation for slides: .gif, or .png (APNG), rendered offscreen by the window's
+    /// GPU pipelines (a software adapter will do)
+    #[arg(long, value_name = "FILE")]
+    pub animate: Option<std::path::PathBuf>,
+    /// Frames in the animation (2 to 2000)
+    #[arg(long, value_name = "N", default_value_t = 120)]
+    pub animate_frames: usize,
+    /// Frames per second (1 to 50)
+    #[arg(long, value_name = "F", default_value_t = 30.0)]
+    pub animate_fps: f64,
+    /// The animation's pixel size, WIDTHxHEIGHT
+    #[arg(long, value_name = "WxH", default_value = "1280x720", value_parser = super::parse_plot_size)]
+    pub animate_size: (u32, u32),
+    /// No progress bar on standard error
+    #[arg(long)]
+    pub quiet: bool,
+}
+
+impl AnimateArgs {
+    /// Checks the frame count and rate before a solve is spent on them.
+    pub fn check(&self) -> anyhow::Result<()> {
+        if let Some(path) = &self.animate {
+            use pounding::export::animation::{AnimationError, AnimationFormat, check_timing};
+            AnimationFormat::of_path(path).map_err(|e| anyhow::anyhow!("--animate: {e}"))?;
+            check_timing(self.animate_frames, self.animate_fps).map_err(|e| match e {
+                AnimationError::Frames(_) => anyhow::anyhow!("--animate-frames: {e}"),
+                _ => anyhow::anyhow!("--animate-fps: {e}"),
+            })?;
+            #[cfg(not(feature = "gui"))]
+            anyhow::bail!(
+                "--animate: this pounding was built without the `gui` feature, which holds the \
+                 GPU renderer the animation needs; build it with the default features"
+            );
+        }
+        Ok(())
+    }
+
+    /// Renders `frames` frames with `frame` into --animate, showing a progress bar on standard
+    /// error (a terminal only; hidden with --json or --quiet).
+    #[cfg(feature = "gui")]
+    pub fn write(
+        &self,
+        json: bool,
+        write: impl FnOnce(
+            &mut pounding::render::offscreen::Offscreen,
+            &std::path::Path,
+            &mut dyn FnMut(usize),
+        ) -> Result<(), pounding::export::animation::AnimationError>,
+    ) -> anyhow::Result<()> {
+        let Some(path) = &self.animate else {
+            return Ok(());
+        };
+        let mut target = pounding::render::offscreen::Offscreen::headless(self.animate_size)
+            .map_err(|e| anyhow::anyhow!("--animate: {e}"))?;
+        let bar = if json || self.quiet {
+            indicatif::ProgressBar::hidden()
+        } else {
+            indicatif::ProgressBar::new(self.animate_frames as u64)
+        };
+        bar.set_style(
+            indicatif::ProgressStyle::with_template(
+                "{prefix:>12} [{bar:40}] {pos}/{len} frames, {elapsed}",
+            )
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar())
+            .progress_chars("=> "),
+        );
+        bar.set_prefix("animation");
+        let done = write(&mut target, path, &mut |k| bar.set_position(k as u64));
+        bar.finish_and_clear();
+        done.map_err(|e| anyhow::anyhow!("--animate: {e}"))
+    }
 }
 
 /// NXxNT, each 2 to 20000, at most 4e7 points in all.
@@ -112,6 +193,64 @@ fn write_instruments(
     Ok(())
 }
 
+#[cfg(feature = "gui")]
+use pounding::render::animate::AnimView;
+
+/// The views an animation may show (the names only, when the renderer is not built in).
+#[cfg(not(feature = "gui"))]
+struct AnimView;
+
+#[cfg(not(feature = "gui"))]
+impl AnimView {
+    const NAMES: &str = "bars|xt|both";
+    fn from_name(name: &str) -> Option<Self> {
+        Self::NAMES
+            .split('|')
+            .any(|n| n == name)
+            .then_some(AnimView)
+    }
+}
+
+/// Writes --animate, if asked for.
+#[cfg(feature = "gui")]
+fn write_animation(
+    args: &ImpactArgs,
+    setup: &ImpactSetup,
+    preset_name: &str,
+    view: AnimView,
+    r: &pounding::model::impact::ImpactResult,
+) -> anyhow::Result<()> {
+    let a = &args.animation;
+    let shown = match view {
+        AnimView::Bars => "stress waves in the bars",
+        AnimView::Xt => "x-t diagram",
+        AnimView::Both => "stress waves and their x-t diagram",
+    };
+    let title = format!("{} ({preset_name}): {shown}", setup.model.name());
+    let animation = pounding::render::animate::ImpactAnimation::new(
+        &setup.scenario,
+        r,
+        title,
+        view,
+        a.animate_size,
+        a.animate_frames,
+    );
+    a.write(args.common.json, |target, path, progress| {
+        animation.write(target, path, a.animate_fps, progress)
+    })
+}
+
+#[cfg(not(feature = "gui"))]
+fn write_animation(
+    _: &ImpactArgs,
+    _: &ImpactSetup,
+    _: &str,
+    _: AnimView,
+    _: &pounding::model::impact::ImpactResult,
+) -> anyhow::Result<()> {
+    Ok(())
+}
+
 /// Answers --list-keys and --list-presets for impact commands; `true` when it did.
 pub(super) fn answered_lists(
     common: &super::SceneArgs,
@@ -158,7 +297,16 @@ pub fn run(args: &ImpactArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     if let Some(m) = &args.model {
         setup.model = parse_model(m)?;
     }
+    args.animation.check()?;
+    let view = AnimView::from_name(&args.animate_view).ok_or_else(|| {
+        anyhow::anyhow!(
+            "--animate-view: unknown view '{}': allowed {}",
+            args.animate_view,
+            AnimView::NAMES
+        )
+    })?;
     let result = solve(setup.model, &setup.scenario)?;
+    write_animation(args, &setup, preset_name, view, &result)?;
     let estimate =
         pounding::model::impact::estimate::estimate_error(setup.model, &setup.scenario, &result)
             .ok();
