@@ -12,8 +12,7 @@ use pounding::lesson::{self, LessonScene, Prediction};
 
 mod common;
 
-const WAITING: &str =
-    "Make your prediction in the lesson panel:\nthe results appear once you have answered.";
+const WAITING: &str = "The results appear once you have answered.";
 
 fn window(launch: Launch, size: egui::Vec2) -> Harness<'static, PoundingApp> {
     HIDE_TIMINGS.store(true, std::sync::atomic::Ordering::Relaxed);
@@ -96,7 +95,7 @@ fn every_lesson_step_loads_hides_results_until_predicted_and_its_task_is_met_by_
                     "{at}: results after the answer"
                 );
                 assert!(h.query_by_label(WAITING).is_none(), "{at}");
-                h.get_by_label(p.explanation());
+                h.get_by_label(&pounding::app::reflow(p.explanation()));
             }
             if let Some(task) = &step.task {
                 if task.solution.is_empty() {

@@ -188,6 +188,24 @@ impl PoundingApp {
         }
     }
 
+    /// The central panel while the step's prediction waits: the question and its answer widgets.
+    pub(super) fn prediction_waiting_ui(&mut self, ui: &mut egui::Ui) {
+        let Some(p) = &mut self.lesson else { return };
+        let Some(pred) = p.current().prediction.clone() else {
+            return;
+        };
+        ui.add_space(16.0);
+        ui.label(
+            RichText::new("Before the results: predict")
+                .strong()
+                .size(20.0),
+        );
+        ui.add_space(8.0);
+        prediction_ui(ui, p, &pred);
+        ui.add_space(12.0);
+        ui.label(RichText::new("The results appear once you have answered.").italics());
+    }
+
     /// The lesson panel: the step's text, its prediction and task, and the way through.
     pub(super) fn lesson_ui(&mut self, ui: &mut egui::Ui) {
         let mut turn = None;
@@ -210,10 +228,13 @@ impl PoundingApp {
             .0
             .get(&p.lesson.name)
             .map_or(0, |pr| pr.done(&p.lesson));
-        ui.add(
-            egui::ProgressBar::new(done as f32 / n as f32)
-                .text(format!("step {} of {n} ({done} done)", p.step + 1)),
-        );
+        let where_ = format!("step {} of {n} ({done} done)", p.step + 1);
+        if done == 0 {
+            // An empty bar draws its rounded end over the text.
+            ui.label(where_);
+        } else {
+            ui.add(egui::ProgressBar::new(done as f32 / n as f32).text(where_));
+        }
         ui.horizontal(|ui| {
             if ui
                 .add_enabled(p.step > 0, egui::Button::new("< Back"))
@@ -240,18 +261,22 @@ impl PoundingApp {
         ui.separator();
         let step = p.current().clone();
         ui.label(RichText::new(&step.title).strong().size(17.0));
-        ui.label(&step.text);
+        ui.label(reflow(&step.text));
         if let Some(e) = &p.load_error {
             ui.colored_label(BAD, format!("this step could not be loaded: {e}"));
         }
-        if let Some(pred) = &step.prediction {
+        // While the prediction waits it stands in the middle of the window, where the results
+        // will appear; once answered, its verdict stays here beside them.
+        if let Some(pred) = &step.prediction
+            && p.judged.is_some()
+        {
             ui.separator();
             prediction_ui(ui, p, pred);
         }
         if let Some(task) = &step.task {
             ui.separator();
             ui.label(RichText::new("Task").strong());
-            ui.label(&task.text);
+            ui.label(reflow(&task.text));
             match &p.task {
                 Some(Ok(true)) => {
                     ui.colored_label(GOOD, "met");
@@ -281,7 +306,7 @@ impl PoundingApp {
                 for g in &p.lesson.goals {
                     ui.label(format!("- {g}"));
                 }
-                ui.label(&p.lesson.teacher_notes);
+                ui.label(reflow(&p.lesson.teacher_notes));
             });
         if close {
             self.close_lesson();
@@ -294,10 +319,29 @@ impl PoundingApp {
     }
 }
 
+/// A lesson's text as written in its file, re-flowed: single line breaks become spaces, a blank
+/// line starts a new paragraph, and list items (`- `) keep their own lines.
+pub fn reflow(text: &str) -> String {
+    let mut out = String::new();
+    for paragraph in text.trim().split("\n\n") {
+        if !out.is_empty() {
+            out.push_str("\n\n");
+        }
+        let mut first = true;
+        for line in paragraph.lines().map(str::trim).filter(|l| !l.is_empty()) {
+            if !first {
+                out.push(if line.starts_with("- ") { '\n' } else { ' ' });
+            }
+            out.push_str(line);
+            first = false;
+        }
+    }
+    out
+}
+
 /// The question, its options or number field, and after the answer its verdict and explanation.
 fn prediction_ui(ui: &mut egui::Ui, p: &mut LessonPlayer, pred: &Prediction) {
-    ui.label(RichText::new("Predict").strong());
-    ui.label(pred.question());
+    ui.label(RichText::new(reflow(pred.question())).size(17.0));
     let answered = p.judged.is_some();
     ui.add_enabled_ui(!answered, |ui| match pred {
         Prediction::Choice { options, .. } => {
@@ -335,11 +379,26 @@ fn prediction_ui(ui: &mut egui::Ui, p: &mut LessonPlayer, pred: &Prediction) {
             } else {
                 ui.colored_label(BAD, format!("Not quite: the model gives {}", j.expected));
             }
-            ui.label(pred.explanation());
+            ui.label(reflow(pred.explanation()));
         }
         Some(Err(e)) => {
             ui.colored_label(BAD, format!("the answer cannot be judged: {e}"));
-            ui.label(pred.explanation());
+            ui.label(reflow(pred.explanation()));
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::reflow;
+
+    #[test]
+    fn lesson_text_reflows_into_paragraphs_and_keeps_list_items_apart() {
+        let text =
+            "Two rods\nmeet at 1 m/s.\n\nMisconceptions:\n- e is a constant\n- longer is heavier\n";
+        assert_eq!(
+            reflow(text),
+            "Two rods meet at 1 m/s.\n\nMisconceptions:\n- e is a constant\n- longer is heavier"
+        );
     }
 }

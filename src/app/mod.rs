@@ -40,6 +40,7 @@ use scene::Scene;
 
 pub use launch::{HIDE_TIMINGS, Launch, SceneKind};
 pub use lecture::ZOOM as LECTURE_ZOOM;
+pub use lesson_panel::reflow;
 pub use lesson_player::LessonPlayer;
 use persistence::{BUILDINGS_KEY, COMPARE_KEY, IMPACT_KEY, STUDY_KEY, UI_KEY, restore};
 use status::ms;
@@ -352,15 +353,7 @@ impl eframe::App for PoundingApp {
         let hidden = self.lesson_hides_results();
         egui::CentralPanel::default().show(ui, |ui| {
             if hidden {
-                ui.add_space(40.0);
-                ui.vertical_centered(|ui| {
-                    ui.label(
-                        egui::RichText::new(
-                            "Make your prediction in the lesson panel:\nthe results appear once you have answered.",
-                        )
-                        .size(20.0),
-                    );
-                });
+                egui::ScrollArea::vertical().show(ui, |ui| self.prediction_waiting_ui(ui));
                 return;
             }
             let (scene, exporter) = self.shown_mut();
