@@ -333,29 +333,7 @@ fn step(doc: &Doc, table: &DeTable, index: usize, line: usize) -> Result<Step, L
     let setup = SceneSetup::load(scene, preset.as_ref().map(|(p, _)| p.as_str()), &[])
         .map_err(|m| doc.error(preset.as_ref().map(|(_, l)| *l), &f.field("preset"), m))?;
     overrides_apply(doc, &f.field("set"), setup.clone(), &set)?;
-    let show = f
-        .strings(doc, "show")?
-        .into_iter()
-        .map(|(name, l)| match Panel::from_name(&name) {
-            Some(p) if p.in_scene(scene) => Ok(p),
-            _ => {
-                let allowed: Vec<&str> = Panel::ALL
-                    .iter()
-                    .filter(|p| p.in_scene(scene))
-                    .map(|p| p.name())
-                    .collect();
-                Err(doc.error(
-                    Some(l),
-                    &format!("{path}.show"),
-                    format!(
-                        "unknown panel '{name}' in the {} scene: allowed {}",
-                        scene.name(),
-                        allowed.join("|")
-                    ),
-                ))
-            }
-        })
-        .collect::<Result<Vec<_>, _>>()?;
+    let show = panels(doc, f.strings(doc, "show")?, scene, &path)?;
     if show.is_empty() {
         return Err(doc.error(
             Some(line),
@@ -363,33 +341,7 @@ fn step(doc: &Doc, table: &DeTable, index: usize, line: usize) -> Result<Step, L
             "missing: the panels this step shows",
         ));
     }
-    let keys = concrete_keys(match scene {
-        LessonScene::Buildings => BUILDING_SETTINGS,
-        _ => IMPACT_SETTINGS,
-    });
-    let unlock = f
-        .strings(doc, "unlock")?
-        .into_iter()
-        .map(|(k, l)| {
-            if keys.contains(&k) {
-                Ok(k)
-            } else {
-                Err(doc.error(
-                    Some(l),
-                    &format!("{path}.unlock"),
-                    format!(
-                        "'{k}' is not a setting of the {} scene (see `pounding {} --list-keys`)",
-                        scene.name(),
-                        if scene == LessonScene::Buildings {
-                            "buildings"
-                        } else {
-                            "impact"
-                        }
-                    ),
-                ))
-            }
-        })
-        .collect::<Result<Vec<_>, _>>()?;
+    let unlock = unlocked(doc, f.strings(doc, "unlock")?, scene, &path)?;
     let asserts = f
         .strings(doc, "asserts")?
         .into_iter()
@@ -436,6 +388,67 @@ fn step(doc: &Doc, table: &DeTable, index: usize, line: usize) -> Result<Step, L
         task,
         asserts,
     })
+}
+
+/// The panels a step shows, each one its scene has.
+fn panels(
+    doc: &Doc,
+    items: Vec<(String, usize)>,
+    scene: LessonScene,
+    path: &str,
+) -> Result<Vec<Panel>, LessonError> {
+    items
+        .into_iter()
+        .map(|(name, l)| match Panel::from_name(&name) {
+            Some(p) if p.in_scene(scene) => Ok(p),
+            _ => {
+                let allowed: Vec<&str> = Panel::ALL
+                    .iter()
+                    .filter(|p| p.in_scene(scene))
+                    .map(|p| p.name())
+                    .collect();
+                Err(doc.error(
+                    Some(l),
+                    &format!("{path}.show"),
+                    format!(
+                        "unknown panel '{name}' in the {} scene: allowed {}",
+                        scene.name(),
+                        allowed.join("|")
+                    ),
+                ))
+            }
+        })
+        .collect()
+}
+
+/// The settings a step unlocks, each a key of its scene's table.
+fn unlocked(
+    doc: &Doc,
+    items: Vec<(String, usize)>,
+    scene: LessonScene,
+    path: &str,
+) -> Result<Vec<String>, LessonError> {
+    let (keys, command) = match scene {
+        LessonScene::Buildings => (concrete_keys(BUILDING_SETTINGS), "buildings"),
+        _ => (concrete_keys(IMPACT_SETTINGS), "impact"),
+    };
+    items
+        .into_iter()
+        .map(|(k, l)| {
+            if keys.contains(&k) {
+                Ok(k)
+            } else {
+                Err(doc.error(
+                    Some(l),
+                    &format!("{path}.unlock"),
+                    format!(
+                        "'{k}' is not a setting of the {} scene (see `pounding {command} --list-keys`)",
+                        scene.name()
+                    ),
+                ))
+            }
+        })
+        .collect()
 }
 
 fn overrides_apply(

@@ -11,6 +11,8 @@ use crate::model::impact::{ImpactResult, ModelKind};
 use crate::model::scenario::InputError;
 
 /// A scene's settings: the step's preset with its overrides.
+// One per step solve: the variants' sizes do not matter, plain fields read better than boxes.
+#[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone, PartialEq)]
 pub enum SceneSetup {
     /// The bar and compare scenes.
@@ -53,6 +55,7 @@ impl SceneSetup {
 }
 
 /// A solved step: what the window would show, and the context its expressions read.
+#[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone)]
 pub enum Solved {
     /// Each model's run (one in the bar scene, the compared models in the compare scene).
