@@ -70,7 +70,7 @@ fn every_command_line_in_the_readme_runs() {
         }
         let dir = scratch(k);
         let o = Command::new(env!("CARGO_BIN_EXE_pounding"))
-            .args(args)
+            .args(&args)
             .current_dir(&dir)
             .env("NO_COLOR", "1")
             .output()

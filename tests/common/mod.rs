@@ -138,7 +138,7 @@ pub fn settle(harness: &mut egui_kittest::Harness<'_, pounding::app::PoundingApp
 
 /// The seed every property test draws its cases from, so that `cargo test` runs the same cases
 /// on every machine and every run (a suite that fails at random is a gamble, not a check).
-pub const PROPTEST_SEED: u64 = 0x5EA25_1984;
+pub const PROPTEST_SEED: u64 = 19_400_518;
 
 /// A property test's configuration: `cases` cases from the fixed seed. To search further, run
 /// with `POUNDING_PROPTEST_RANDOM=1` (a fresh seed each run, printed on failure and saved in the
