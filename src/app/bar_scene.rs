@@ -659,8 +659,8 @@ impl BarScene {
         let s = self.solved.as_ref()?;
         Some(Box::new(move || {
             super::export_animation::AnimationSource::Impact {
-                setup: s.setup.clone(),
-                result: s.result.clone(),
+                setup: Box::new(s.setup),
+                result: Box::new(s.result.clone()),
             }
         }))
     }

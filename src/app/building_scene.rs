@@ -666,9 +666,9 @@ impl BuildingScene {
         let d = &self.solved.as_ref()?.drawing;
         Some(Box::new(move || {
             super::export_animation::AnimationSource::Buildings {
-                setup: d.setup.clone(),
+                setup: Box::new(d.setup.clone()),
                 motion: d.motion.clone(),
-                result: d.result.clone(),
+                result: Box::new(d.result.clone()),
             }
         }))
     }

@@ -17,13 +17,13 @@ use std::path::PathBuf;
 /// The run an animation shows, copied when its export starts.
 pub enum AnimationSource {
     Impact {
-        setup: ImpactSetup,
-        result: ImpactResult,
+        setup: Box<ImpactSetup>,
+        result: Box<ImpactResult>,
     },
     Buildings {
-        setup: BuildingSetup,
+        setup: Box<BuildingSetup>,
         motion: GroundMotion,
-        result: BuildingResult,
+        result: Box<BuildingResult>,
     },
 }
 
@@ -128,6 +128,9 @@ impl AnimationSettings {
     }
 }
 
+/// An animation's rendering, to run on the export thread.
+type RenderJob = Box<dyn FnOnce(&mut Offscreen) -> Result<(), String> + Send>;
+
 impl Exporter {
     /// Renders `source` as `<prefix>-animation.gif` (or .png) on a thread of its own.
     pub fn export_animation(&self, source: AnimationSource) {
@@ -136,7 +139,7 @@ impl Exporter {
         let path = PathBuf::from(format!("{}-animation.{ext}", self.prefix));
         let (size, frames, fps) = ((s.size[0], s.size[1]), s.frames(), s.fps);
         let (view, range) = (s.view, |end| s.range(end));
-        let job: Box<dyn FnOnce(&mut Offscreen) -> Result<(), String> + Send> = match source {
+        let job: RenderJob = match source {
             AnimationSource::Impact { setup, result } => {
                 let title = format!("{} model: stress waves", setup.model.name());
                 let mut a =
@@ -154,7 +157,7 @@ impl Exporter {
                 result,
             } => {
                 let title = format!("Two buildings: {} contact", result.contact.name());
-                let mut a = BuildingAnimation::new(setup, motion, result, title, size, frames);
+                let mut a = BuildingAnimation::new(*setup, motion, *result, title, size, frames);
                 a.t_range = range(a.t_range.1);
                 let path = path.clone();
                 Box::new(move |t| {
