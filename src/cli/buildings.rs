@@ -44,7 +44,10 @@ pub(super) fn setup<'a>(
             .map_err(|e| anyhow::anyhow!("--set {e}"))?;
     }
     if let Some(path) = motion {
-        setup.motion.file = Some(path.display().to_string());
+        setup
+            .motion
+            .set_source(&path.display().to_string())
+            .map_err(|e| anyhow::anyhow!("--motion {e}"))?;
     }
     Ok((setup, preset_name))
 }
@@ -70,7 +73,10 @@ pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             .ok_or_else(|| anyhow::anyhow!("--contact: unknown model '{c}': allowed sears|linear|kelvin|hertz|hertzdamp|jankowski|stereo|none"))?;
     }
     let motion = load_motion(&setup)?;
-    let result = solve(&setup.scenario, &motion)?;
+    let quiet = args.common.quiet || args.common.json;
+    let result = super::with_control("buildings", quiet, |control| {
+        pounding::model::building::solve_with(&setup.scenario, &motion, control)
+    })?;
     let estimate =
         pounding::model::building::estimate_error(&setup.scenario, &motion, &result).ok();
     let baseline = solve(
