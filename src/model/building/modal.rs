@@ -286,9 +286,9 @@ pub fn step_integrals(omega: f64, zeta: f64, s: f64) -> StepIntegrals {
     StepIntegrals { int_q, w }
 }
 
-/// The largest zeta w s a single Van Loan exponential is asked to span (e^100 is far from
-/// overflow, and the decay beyond it is below round-off anyway).
-const MAX_DECAY: f64 = 100.0;
+/// The largest zeta w s a single Van Loan exponential is asked to span: its squarings carry
+/// round-off of eps e^(2 zeta w s) into the decaying block, so the span stays near 1.
+const MAX_DECAY: f64 = 1.0;
 
 /// The integrals over `s` from those over s / 2^halvings: over [0, 2h] they are those over
 /// [0, h] from the start and again from the state at h, y(h) = Phi(h) y0.
