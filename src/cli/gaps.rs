@@ -91,8 +91,7 @@ fn specs(args: &GapsArgs, base: &MotionSpec) -> anyhow::Result<Vec<MotionSpec>> 
     let mut out = Vec::new();
     for m in &args.motions {
         let mut spec = base.clone();
-        spec.set_source(m)
-            .map_err(|e| anyhow!("--motion {e}"))?;
+        spec.set_source(m).map_err(|e| anyhow!("--motion {e}"))?;
         out.push(spec);
     }
     if let Some(dir) = &args.motion_dir {

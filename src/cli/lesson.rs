@@ -72,10 +72,9 @@ fn check(name: &str, out: &mut dyn Write) -> anyhow::Result<()> {
         }
         match (s.task_met_at_start, s.task_met_by_solution) {
             (Some(_), Some(true)) => parts.push("task met by its solution".into()),
-            (Some(met), None) => parts.push(format!(
-                "task {}",
-                if met { "met" } else { "not yet met" }
-            )),
+            (Some(met), None) => {
+                parts.push(format!("task {}", if met { "met" } else { "not yet met" }))
+            }
             _ => {}
         }
         if s.asserts > 0 {

@@ -354,7 +354,10 @@ pub(crate) fn with_control<T: Send>(
     let bar = if quiet {
         indicatif::ProgressBar::hidden()
     } else {
-        indicatif::ProgressBar::with_draw_target(Some(1000), indicatif::ProgressDrawTarget::stderr())
+        indicatif::ProgressBar::with_draw_target(
+            Some(1000),
+            indicatif::ProgressDrawTarget::stderr(),
+        )
     };
     bar.set_style(
         indicatif::ProgressStyle::with_template("{prefix:>20} [{bar:40}] {percent}%, {elapsed}")

@@ -128,8 +128,7 @@ impl BuildingSetup {
             "impact.merge_gap_s" => sc.merge_gap_s = number(key, value)?,
             "motion.file" => {
                 let name = text(key, value)?;
-                m.set_source(name)
-                    .map_err(|e| InputError::new(key, e))?;
+                m.set_source(name).map_err(|e| InputError::new(key, e))?;
             }
             "motion.units" => m.units = choice(BUILDING_SETTINGS, key, value, Units::from_name)?,
             "motion.scale" => {

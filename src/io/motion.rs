@@ -242,15 +242,13 @@ impl MotionSpec {
 }
 
 fn number(token: &str, source: &str, line: usize) -> Result<f64, MotionError> {
-    let v: f64 = token
-        .parse()
-        .map_err(|_| {
-            err(
-                source,
-                Some(line),
-                format!("'{}' is not a number", super::file::excerpt(token)),
-            )
-        })?;
+    let v: f64 = token.parse().map_err(|_| {
+        err(
+            source,
+            Some(line),
+            format!("'{}' is not a number", super::file::excerpt(token)),
+        )
+    })?;
     if v.is_finite() {
         Ok(v)
     } else {

@@ -297,7 +297,8 @@ fn doubled(omega: f64, zeta: f64, s: f64, halvings: i32) -> StepIntegrals {
     let mut ints = step_integrals(omega, zeta, h);
     let (a, d) = balanced(omega, zeta, h);
     let e = expm(&a);
-    let mut phi: [[f64; 4]; 4] = std::array::from_fn(|i| std::array::from_fn(|j| e[i][j] * d[j] / d[i]));
+    let mut phi: [[f64; 4]; 4] =
+        std::array::from_fn(|i| std::array::from_fn(|j| e[i][j] * d[j] / d[i]));
     for _ in 0..halvings {
         let int_q = std::array::from_fn(|j| {
             ints.int_q[j] + (0..4).map(|k| ints.int_q[k] * phi[k][j]).sum::<f64>()

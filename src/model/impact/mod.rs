@@ -339,9 +339,7 @@ pub enum SolveError {
         bytes: f64,
     },
     /// A run whose numbers grew without bound; no result is given.
-    #[error(
-        "the run diverged at t = {at_s:.4} s: {why}"
-    )]
+    #[error("the run diverged at t = {at_s:.4} s: {why}")]
     Diverged {
         /// When the run stopped [s].
         at_s: f64,
