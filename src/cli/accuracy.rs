@@ -388,3 +388,28 @@ pub fn run(args: &AccuracyArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod ladder_tests {
+    use super::step_ladder;
+
+    #[test]
+    fn the_step_ladder_of_the_largest_allowed_dt_stays_in_the_range_and_halves() {
+        let range = pounding::model::settings::find(
+            pounding::model::settings::IMPACT_SETTINGS,
+            "solver.dt",
+        )
+        .and_then(|s| s.range())
+        .unwrap();
+        for dt in [range.max, range.min, 1e-6] {
+            let ladder = step_ladder(dt);
+            assert_eq!(ladder.len(), 6);
+            // The reference solve runs 16 times finer than the finest rung.
+            for &h in ladder.iter().chain([ladder[5] / 16.0].iter()) {
+                assert!(range.contains(h), "dt {dt}: rung {h} outside {range}");
+            }
+            assert!(ladder.windows(2).all(|w| w[1] == w[0] / 2.0), "{ladder:?}");
+        }
+        assert_eq!(step_ladder(1e-6)[0], 4e-6);
+    }
+}
