@@ -106,6 +106,23 @@ fn order(prev: Option<&Rung>, err: f64, ratio: f64) -> Option<f64> {
         .map(|p| (p.force_l2_error / err).ln() / ratio.ln())
 }
 
+/// Six steps halving from 4 dt (the reference a further 16 times finer), held inside the
+/// range solver.dt accepts: the user's own dt is allowed, so its ladder must be too. Near an end
+/// of the range the ladder slides along it, still halving.
+pub fn step_ladder(dt: f64) -> Vec<f64> {
+    let range =
+        pounding::model::settings::find(pounding::model::settings::IMPACT_SETTINGS, "solver.dt")
+            .and_then(|s| s.range())
+            .expect("solver.dt has a range");
+    // Coarsest rung over the reference step: 2^5 rungs down, then 16.
+    let span = 32.0 * 16.0;
+    let top = (4.0 * dt)
+        .min(range.max)
+        .max(range.min * span)
+        .min(range.max);
+    (0..6).map(|i| top * 0.5f64.powi(i)).collect()
+}
+
 /// The impact models' ladders.
 pub fn impact_ladders(base: &ImpactScenario) -> anyhow::Result<Vec<Rung>> {
     let cases: [(&str, ModelKind, Reading); 6] = [
@@ -116,11 +133,7 @@ pub fn impact_ladders(base: &ImpactScenario) -> anyhow::Result<Vec<Rung>> {
         ("kelvin", ModelKind::Kelvin, Reading::Paper),
         ("fe", ModelKind::Fe, Reading::End),
     ];
-    let dt0 = base.solver.dt_s;
-    let steps: Vec<f64> = [4.0, 2.0, 1.0, 0.5, 0.25, 0.125]
-        .iter()
-        .map(|f| f * dt0)
-        .collect();
+    let steps = step_ladder(base.solver.dt_s);
     let meshes = [25usize, 50, 100, 200, 400, 800];
     let mut rows = vec![];
     for (name, model, reading) in cases {
@@ -374,4 +387,29 @@ pub fn run(args: &AccuracyArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod ladder_tests {
+    use super::step_ladder;
+
+    #[test]
+    fn the_step_ladder_of_the_largest_allowed_dt_stays_in_the_range_and_halves() {
+        let range = pounding::model::settings::find(
+            pounding::model::settings::IMPACT_SETTINGS,
+            "solver.dt",
+        )
+        .and_then(|s| s.range())
+        .unwrap();
+        for dt in [range.max, range.min, 1e-6] {
+            let ladder = step_ladder(dt);
+            assert_eq!(ladder.len(), 6);
+            // The reference solve runs 16 times finer than the finest rung.
+            for &h in ladder.iter().chain([ladder[5] / 16.0].iter()) {
+                assert!(range.contains(h), "dt {dt}: rung {h} outside {range}");
+            }
+            assert!(ladder.windows(2).all(|w| w[1] == w[0] / 2.0), "{ladder:?}");
+        }
+        assert_eq!(step_ladder(1e-6)[0], 4e-6);
+    }
 }

@@ -49,7 +49,10 @@ pub(super) fn setup<'a>(
             .map_err(|e| anyhow::anyhow!("--set {e}"))?;
     }
     if let Some(path) = motion {
-        setup.motion.file = Some(path.display().to_string());
+        setup
+            .motion
+            .set_source(&path.display().to_string())
+            .map_err(|e| anyhow::anyhow!("--motion {e}"))?;
     }
     Ok((setup, preset_name))
 }
@@ -80,9 +83,10 @@ fn write_animation(
         a.animate_frames,
     );
     animation.exaggeration = args.animate_drift;
-    a.write(args.common.json, |target, path, progress| {
-        animation.write(target, path, a.animate_fps, progress)
-    })
+    a.write(
+        args.common.json || args.common.quiet,
+        |target, path, progress| animation.write(target, path, a.animate_fps, progress),
+    )
 }
 
 #[cfg(not(feature = "gui"))]
@@ -123,7 +127,10 @@ pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         );
     }
     let motion = load_motion(&setup)?;
-    let result = solve(&setup.scenario, &motion)?;
+    let quiet = args.common.quiet || args.common.json;
+    let result = super::with_control("buildings", quiet, |control| {
+        pounding::model::building::solve_with(&setup.scenario, &motion, control)
+    })?;
     write_animation(args, &setup, &motion, &result)?;
     let estimate =
         pounding::model::building::estimate_error(&setup.scenario, &motion, &result).ok();

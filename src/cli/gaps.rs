@@ -91,16 +91,7 @@ fn specs(args: &GapsArgs, base: &MotionSpec) -> anyhow::Result<Vec<MotionSpec>> 
     let mut out = Vec::new();
     for m in &args.motions {
         let mut spec = base.clone();
-        if m == "synthetic" {
-            spec.file = None;
-        } else if let Some(seed) = m.strip_prefix("synthetic:") {
-            spec.file = None;
-            spec.synthetic.seed = seed.trim().parse().map_err(|_| {
-                anyhow!("--motion {m}: the seed must be a whole number, as in synthetic:42")
-            })?;
-        } else {
-            spec.file = Some(m.clone());
-        }
+        spec.set_source(m).map_err(|e| anyhow!("--motion {e}"))?;
         out.push(spec);
     }
     if let Some(dir) = &args.motion_dir {
@@ -196,6 +187,34 @@ pub fn run(args: &GapsArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         writeln!(out)?;
     } else if !super::csv_to_stdout(args.csv.as_deref()) {
         table(&report, out)?;
+    }
+    failures(&report.records)
+}
+
+/// Names each record that failed on stderr; an error (exit 2) when none succeeded, so a script
+/// cannot take an empty result for a good one.
+fn failures(rows: &[RecordJson]) -> anyhow::Result<()> {
+    let failed: Vec<&RecordJson> = rows.iter().filter(|r| r.error.is_some()).collect();
+    if failed.is_empty() {
+        return Ok(());
+    }
+    if failed.len() == rows.len() {
+        bail!(
+            "no record succeeded ({} failed): {}",
+            failed.len(),
+            failed
+                .iter()
+                .map(|r| format!("{}: {}", r.record, r.error.as_deref().unwrap_or("")))
+                .collect::<Vec<_>>()
+                .join("; ")
+        );
+    }
+    for r in failed {
+        eprintln!(
+            "warning: {} failed: {}",
+            r.record,
+            r.error.as_deref().unwrap_or("")
+        );
     }
     Ok(())
 }

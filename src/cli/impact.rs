@@ -52,9 +52,6 @@ pub struct AnimateArgs {
     /// The animation's pixel size, WIDTHxHEIGHT
     #[arg(long, value_name = "WxH", default_value = "1280x720", value_parser = super::parse_plot_size)]
     pub animate_size: (u32, u32),
-    /// No progress bar on standard error
-    #[arg(long)]
-    pub quiet: bool,
 }
 
 impl AnimateArgs {
@@ -77,11 +74,11 @@ impl AnimateArgs {
     }
 
     /// Renders `frames` frames with `frame` into --animate, showing a progress bar on standard
-    /// error (a terminal only; hidden with --json or --quiet).
+    /// error (a terminal only; hidden with `quiet`: --json or --quiet).
     #[cfg(feature = "gui")]
     pub fn write(
         &self,
-        json: bool,
+        quiet: bool,
         write: impl FnOnce(
             &mut pounding::render::offscreen::Offscreen,
             &std::path::Path,
@@ -93,7 +90,7 @@ impl AnimateArgs {
         };
         let mut target = pounding::render::offscreen::Offscreen::headless(self.animate_size)
             .map_err(|e| anyhow::anyhow!("--animate: {e}"))?;
-        let bar = if json || self.quiet {
+        let bar = if quiet {
             indicatif::ProgressBar::hidden()
         } else {
             indicatif::ProgressBar::new(self.animate_frames as u64)
@@ -235,9 +232,10 @@ fn write_animation(
         a.animate_size,
         a.animate_frames,
     );
-    a.write(args.common.json, |target, path, progress| {
-        animation.write(target, path, a.animate_fps, progress)
-    })
+    a.write(
+        args.common.json || args.common.quiet,
+        |target, path, progress| animation.write(target, path, a.animate_fps, progress),
+    )
 }
 
 #[cfg(not(feature = "gui"))]

@@ -110,6 +110,15 @@ fn window(args: &WindowArgs) -> anyhow::Result<()> {
 
 /// Runs the command line, writing results to `out`; `Ok(())` means exit status 0.
 pub fn run(cli: Cli, out: &mut dyn std::io::Write) -> anyhow::Result<()> {
+    watch_interrupt();
+    let result = dispatch(cli, out);
+    if interrupted() {
+        anyhow::bail!("cancelled by Ctrl-C; no result was written");
+    }
+    result
+}
+
+fn dispatch(cli: Cli, out: &mut dyn std::io::Write) -> anyhow::Result<()> {
     match cli.command {
         Some(Command::Impact(args)) => impact::run(&args, out),
         Some(Command::Buildings(args)) => buildings::run(&args, out),
@@ -159,6 +168,9 @@ pub struct SceneArgs {
     /// Print one JSON object instead of the summary
     #[arg(long)]
     pub json: bool,
+    /// Show no progress bar on standard error (it shows only on a terminal, and not with --json)
+    #[arg(long)]
+    pub quiet: bool,
     /// List the keys --set accepts, and exit
     #[arg(long)]
     pub list_keys: bool,
@@ -290,12 +302,76 @@ pub(crate) fn with_bar<T: Send>(
         let job = scope.spawn(work);
         let mut drawn = quiet;
         while !job.is_finished() {
+            if interrupted() {
+                progress.cancel();
+            }
             if !drawn && progress.total() > 0 {
                 bar.set_draw_target(indicatif::ProgressDrawTarget::stderr());
                 drawn = true;
             }
             bar.set_length(progress.total() as u64);
             bar.set_position(progress.done() as u64);
+            std::thread::sleep(std::time::Duration::from_millis(20));
+        }
+        job.join()
+    });
+    bar.finish_and_clear();
+    match out {
+        Ok(v) => v,
+        Err(panic) => std::panic::resume_unwind(panic),
+    }
+}
+
+/// Set by Ctrl-C: long runs poll it and stop at their next look (their cancel flag), so the
+/// program ends with a message and a non-zero status instead of dying mid-write.
+static INTERRUPTED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// Routes SIGINT to [`INTERRUPTED`], once per process.
+fn watch_interrupt() {
+    static ONCE: std::sync::Once = std::sync::Once::new();
+    ONCE.call_once(|| {
+        // Without a handler (one already set by an embedding program) Ctrl-C ends the process
+        // as before, which is still a stop.
+        let _ = ctrlc::set_handler(|| {
+            INTERRUPTED.store(true, std::sync::atomic::Ordering::Relaxed);
+        });
+    });
+}
+
+/// Whether Ctrl-C was pressed.
+pub(crate) fn interrupted() -> bool {
+    INTERRUPTED.load(std::sync::atomic::Ordering::Relaxed)
+}
+
+/// Runs one solve with a percentage bar on standard error (hidden with `quiet`, and off a
+/// terminal); Ctrl-C cancels it through its [`Control`].
+pub(crate) fn with_control<T: Send>(
+    name: &str,
+    quiet: bool,
+    work: impl FnOnce(&pounding::model::control::Control) -> T + Send,
+) -> T {
+    let control = pounding::model::control::Control::new();
+    let bar = if quiet {
+        indicatif::ProgressBar::hidden()
+    } else {
+        indicatif::ProgressBar::with_draw_target(
+            Some(1000),
+            indicatif::ProgressDrawTarget::stderr(),
+        )
+    };
+    bar.set_style(
+        indicatif::ProgressStyle::with_template("{prefix:>20} [{bar:40}] {percent}%, {elapsed}")
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar())
+            .progress_chars("=> "),
+    );
+    bar.set_prefix(name.to_string());
+    let out = std::thread::scope(|scope| {
+        let job = scope.spawn(|| work(&control));
+        while !job.is_finished() {
+            if interrupted() {
+                control.cancel();
+            }
+            bar.set_position((control.fraction().clamp(0.0, 1.0) * 1000.0) as u64);
             std::thread::sleep(std::time::Duration::from_millis(20));
         }
         job.join()

@@ -72,7 +72,11 @@ pub fn run(args: &SweepArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let values = sweep::values(from, to, args.count, args.log);
     let setups = sweep::setups(&base, param, &values).map_err(flagged)?;
     let start = Instant::now();
-    let points = sweep::run(&setups, &values, &models, &Progress::new())?;
+    let progress = Progress::new();
+    let quiet = args.common.quiet || args.common.json;
+    let points = super::with_bar("sweep", &progress, quiet, || {
+        sweep::run(&setups, &values, &models, &progress)
+    })?;
     let report = SweepReport {
         param: param.to_string(),
         models: models.iter().map(|m| m.name().to_string()).collect(),

@@ -128,7 +128,7 @@ impl BuildingSetup {
             "impact.merge_gap_s" => sc.merge_gap_s = number(key, value)?,
             "motion.file" => {
                 let name = text(key, value)?;
-                m.file = (name != SYNTHETIC).then(|| name.to_string());
+                m.set_source(name).map_err(|e| InputError::new(key, e))?;
             }
             "motion.units" => m.units = choice(BUILDING_SETTINGS, key, value, Units::from_name)?,
             "motion.scale" => {
@@ -144,7 +144,19 @@ impl BuildingSetup {
             "motion.duration" => m.duration_s = Some(checked(key, value)?),
             "motion.dt" => m.dt_s = Some(checked(key, value)?),
             "motion.pga" => m.synthetic.pga_g = checked(key, value)?,
-            "motion.seed" => m.synthetic.seed = checked(key, value)? as u64,
+            "motion.seed" => {
+                let x = checked(key, value)?;
+                if x.fract() != 0.0 || x < 0.0 {
+                    return Err(InputError::new(
+                        key,
+                        format!(
+                            "{} is not a whole number; the seed is a whole number >= 0",
+                            crate::model::settings::shown(x)
+                        ),
+                    ));
+                }
+                m.synthetic.seed = x as u64;
+            }
             "motion.length" => m.synthetic.duration_s = checked(key, value)?,
             "solver.tolerance" => sc.tolerance = number(key, value)?,
             "solver.steps_per_scale" => {

@@ -2,6 +2,7 @@
 
 pub mod building_settings;
 pub mod csv;
+pub mod file;
 pub mod motion;
 pub mod preset;
 pub mod settings;

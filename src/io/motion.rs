@@ -63,13 +63,13 @@ pub fn load(spec: &MotionSpec) -> Result<GroundMotion, MotionError> {
     let mut motion = match &spec.file {
         Some(name) if built_in(name).is_some() => built_in(name).expect("just found"),
         Some(path) => {
-            let text = std::fs::read_to_string(path).map_err(|e| {
+            let text = super::file::read_text(std::path::Path::new(path)).map_err(|e| {
                 let names: Vec<&str> = BUILT_IN.iter().map(|b| b.name).collect();
                 err(
                     path,
                     None,
                     format!(
-                        "cannot read: {e} (built-in records: {}; or a .AT2 or text file)",
+                        "{e} (built-in records: {}; synthetic or synthetic:SEED; or a .AT2 or text file)",
                         names.join(", ")
                     ),
                 )
@@ -195,17 +195,67 @@ fn err(source: &str, line: Option<usize>, message: impl Into<String>) -> MotionE
     }
 }
 
+/// The value `motion.file` and `--motion` take, in one grammar everywhere: `synthetic`,
+/// `synthetic:SEED` (a whole number), a built-in record's name, or a file path.
+#[derive(Debug, Clone, PartialEq)]
+pub enum RecordSource {
+    Synthetic(Option<u64>),
+    File(String),
+}
+
+impl RecordSource {
+    pub fn parse(text: &str) -> Result<Self, String> {
+        let t = text.trim();
+        if t == "synthetic" {
+            return Ok(RecordSource::Synthetic(None));
+        }
+        if let Some(seed) = t.strip_prefix("synthetic:") {
+            return seed
+                .trim()
+                .parse::<u64>()
+                .map(|s| RecordSource::Synthetic(Some(s)))
+                .map_err(|_| {
+                    format!(
+                        "'{}': the seed must be a whole number >= 0, as in synthetic:42",
+                        super::file::excerpt(seed)
+                    )
+                });
+        }
+        Ok(RecordSource::File(text.to_string()))
+    }
+}
+
+impl MotionSpec {
+    /// Points the spec at a source given as text (see [`RecordSource`]).
+    pub fn set_source(&mut self, text: &str) -> Result<(), String> {
+        match RecordSource::parse(text)? {
+            RecordSource::Synthetic(seed) => {
+                self.file = None;
+                if let Some(s) = seed {
+                    self.synthetic.seed = s;
+                }
+            }
+            RecordSource::File(f) => self.file = Some(f),
+        }
+        Ok(())
+    }
+}
+
 fn number(token: &str, source: &str, line: usize) -> Result<f64, MotionError> {
-    let v: f64 = token
-        .parse()
-        .map_err(|_| err(source, Some(line), format!("'{token}' is not a number")))?;
+    let v: f64 = token.parse().map_err(|_| {
+        err(
+            source,
+            Some(line),
+            format!("'{}' is not a number", super::file::excerpt(token)),
+        )
+    })?;
     if v.is_finite() {
         Ok(v)
     } else {
         Err(err(
             source,
             Some(line),
-            format!("'{token}' is not a finite number"),
+            format!("'{}' is not a finite number", super::file::excerpt(token)),
         ))
     }
 }

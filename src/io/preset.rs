@@ -76,14 +76,14 @@ impl std::error::Error for PresetError {}
 /// working directory, else a compiled-in preset. Returns (text, where it came from).
 pub fn find(name_or_path: &str) -> Result<(String, String), PresetError> {
     let path = Path::new(name_or_path);
-    if path.is_file() {
-        return std::fs::read_to_string(path)
+    if path.exists() && !path.is_dir() {
+        return super::file::read_text(path)
             .map(|t| (t, name_or_path.to_string()))
-            .map_err(|e| PresetError {
+            .map_err(|message| PresetError {
                 source: name_or_path.to_string(),
                 line: None,
                 key: None,
-                message: format!("cannot read: {e}"),
+                message,
             });
     }
     let local = Path::new("assets/presets").join(format!("{name_or_path}.toml"));
@@ -294,6 +294,8 @@ pub fn load_for<S: Configurable + Default>(
     wanted: &str,
 ) -> Result<S, PresetError> {
     let (text, source) = find(name_or_path)?;
+    // A syntax error hides the scene line, so it is reported before the scene is judged.
+    parse(&text, &source)?;
     let found = scene(&text);
     if found != wanted {
         return Err(PresetError {

@@ -25,10 +25,18 @@ pub fn values(from: f64, to: f64, count: usize, log: bool) -> Vec<f64> {
     (0..count)
         .map(|i| {
             let f = i as f64 / (count.max(2) - 1) as f64;
-            if log {
-                (from.ln() + f * (to.ln() - from.ln())).exp()
+            // The ends are the user's own values, exactly: exp(ln x) can land an ulp outside a
+            // key's range. Rounding inside is held within the ends for the same reason.
+            if i == 0 {
+                from
+            } else if i + 1 == count {
+                to
+            } else if log {
+                (from.ln() + f * (to.ln() - from.ln()))
+                    .exp()
+                    .clamp(from.min(to), from.max(to))
             } else {
-                from + f * (to - from)
+                (from + f * (to - from)).clamp(from.min(to), from.max(to))
             }
         })
         .collect()

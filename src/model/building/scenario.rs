@@ -375,6 +375,20 @@ impl BuildingScenario {
                 }
             }
             check(&format!("{name}.damping_ratio"), b.damping_ratio)?;
+            spread_of_modes(name, b)?;
+            // One storey has one mode, which Rayleigh damping gives the ratio: only the default
+            // pair 1,2 is meaningful there, and any other pair would be silently ignored.
+            if let DampingModel::Rayleigh { modes: [i, j] } = b.damping
+                && b.storeys == 1
+                && !matches!((i, j), (1, 2) | (2, 1))
+            {
+                return Err(InputError::new(
+                    format!("{name}.rayleigh_modes"),
+                    format!(
+                        "modes {i} and {j} are not allowed: one storey has one mode, which Rayleigh damping gives the ratio; leave rayleigh_modes at 1,2 or use {name}.damping = modal"
+                    ),
+                ));
+            }
             if let DampingModel::Rayleigh { modes: [i, j] } = b.damping
                 && (i == 0 || j == 0 || i > b.storeys || j > b.storeys || i == j)
                 && b.storeys > 1
@@ -433,4 +447,27 @@ impl BuildingScenario {
 /// force of the paper's case, hence 8 (1e-3 / tolerance)^(1/p).
 pub fn steps_for_tolerance(tolerance: f64, order: f64) -> f64 {
     (8.0 * (1e-3 / tolerance).powf(1.0 / order)).max(1.0)
+}
+
+/// The widest spread of squared frequencies whose smallest is still computed to about 1e-6:
+/// the eigen solver's round-off is relative to the largest.
+const MAX_MODE_SPREAD: f64 = 1e10;
+
+/// Refuses a building whose storeys differ so much that its longest period is lost to
+/// round-off (it would come out as infinite, or as noise).
+fn spread_of_modes(name: &str, b: &Building) -> Result<(), InputError> {
+    if b.storeys < 2 {
+        return Ok(());
+    }
+    let w = b.modes().omega_rad_s;
+    let (lo, hi) = (w[0] * w[0], w[w.len() - 1] * w[w.len() - 1]);
+    if lo > 0.0 && hi.is_finite() && hi / lo <= MAX_MODE_SPREAD {
+        return Ok(());
+    }
+    Err(InputError::new(
+        format!("{name}.stiffnesses"),
+        format!(
+            "the storeys' stiffnesses and masses differ so much that the squared frequencies span more than {MAX_MODE_SPREAD:e}, so the longest period is lost to round-off; bring the storey stiffnesses (and masses) within a factor of about 1e9 of each other"
+        ),
+    ))
 }

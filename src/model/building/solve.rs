@@ -142,11 +142,7 @@ pub fn solve_with(
     let modes = [sc.left.modes(), sc.right.modes()];
     let (grid, grid_warning) = plan(sc, motion, &levels, &modes);
     if grid.total > sc.max_steps {
-        return Err(SolveError::Budget {
-            max_steps: sc.max_steps,
-            dt_s: grid.h,
-            reached_s: 0.0,
-        });
+        return Err(step_budget(sc.max_steps, grid.h, 0.0));
     }
     let mut warnings: Vec<Warning> = grid_warning.into_iter().collect();
     if sc.contact == ContactModel::Sears && sc.reading == SlabReading::Paper {
@@ -268,4 +264,15 @@ pub fn solve_with(
         },
         warnings,
     })
+}
+
+/// A building run over its step budget, with the building command's own keys as the remedy
+/// (the impact scene's solver.dt and solver.window do not exist here).
+pub(crate) fn step_budget(max_steps: usize, dt_s: f64, reached_s: f64) -> SolveError {
+    SolveError::Input(crate::model::scenario::InputError::new(
+        "solver.max_steps",
+        format!(
+            "step budget exceeded: the run needs more than solver.max_steps = {max_steps} steps (step {dt_s:e} s, reached t = {reached_s:e} s); raise solver.max_steps, or shorten the record with motion.duration"
+        ),
+    ))
 }

@@ -360,13 +360,11 @@ pub enum SolveError {
         bytes: f64,
     },
     /// A run whose numbers grew without bound; no result is given.
-    #[error(
-        "the run diverged at t = {at_s:.4} s: {why}; the Sears paper reading does this above a tau = pi/2 (use contact.reading = end or a softer contact.stiffness)"
-    )]
+    #[error("the run diverged at t = {at_s:.4} s: {why}")]
     Diverged {
         /// When the run stopped [s].
         at_s: f64,
-        /// What grew.
+        /// What grew, and what to change (fitted to the element and command that failed).
         why: String,
     },
     /// Stopped through its [`Control`] (a newer request in the window, or Cancel).

@@ -126,6 +126,8 @@ fn layout(sc: &ImpactScenario) -> Result<Layout, InputError> {
         round_trip_s: [0.0; 2],
         masses_kg: [0.0; 2],
     };
+    // Limits are printed in full: a rounded bound (0.0000) would be false.
+    let shown = crate::model::settings::shown;
     for i in 0..2 {
         let (bar, d) = (&bars[i], zones[i]);
         let c = bar.wave_speed_m_s();
@@ -137,9 +139,10 @@ fn layout(sc: &ImpactScenario) -> Result<Layout, InputError> {
                     return Err(InputError::new(
                         "contact.zone_scale",
                         format!(
-                            "the paper reading is undefined here: {name}'s zone d = {d:.4} m exceeds twice its length ({:.4} m), so a reflection would arrive before it left; allowed: contact.zone_scale < {:.4} (or sears.reading = end)",
-                            2.0 * l,
-                            sc.contact.zone_scale * 2.0 * l / d
+                            "the paper reading is undefined here: {name}'s zone d = {} m exceeds twice its length ({} m), so a reflection would arrive before it left; allowed: contact.zone_scale < {} (or sears.reading = end)",
+                            shown(d),
+                            shown(2.0 * l),
+                            shown(sc.contact.zone_scale * 2.0 * l / d)
                         ),
                     ));
                 }
@@ -151,8 +154,10 @@ fn layout(sc: &ImpactScenario) -> Result<Layout, InputError> {
                     return Err(InputError::new(
                         "contact.zone_scale",
                         format!(
-                            "the collocated reading needs the zone shorter than the bar: {name}'s d = {d:.4} m >= L = {l:.4} m; allowed: contact.zone_scale < {:.4}",
-                            sc.contact.zone_scale * l / d
+                            "the collocated reading needs the zone shorter than the bar: {name}'s d = {} m >= L = {} m; allowed: contact.zone_scale < {}",
+                            shown(d),
+                            shown(l),
+                            shown(sc.contact.zone_scale * l / d)
                         ),
                     ));
                 }

@@ -372,11 +372,11 @@ impl<'a> Stepper<'a> {
     fn count_step(&mut self) -> Result<(), SolveError> {
         self.steps += 1;
         if self.steps > self.sc.max_steps {
-            return Err(SolveError::Budget {
-                max_steps: self.sc.max_steps,
-                dt_s: self.grid.h,
-                reached_s: self.time(),
-            });
+            return Err(super::solve::step_budget(
+                self.sc.max_steps,
+                self.grid.h,
+                self.time(),
+            ));
         }
         Ok(())
     }
@@ -445,8 +445,10 @@ impl<'a> Stepper<'a> {
         Err(SolveError::Diverged {
             at_s: self.time(),
             why: format!(
-                "the contacts handed the buildings {:.3e} J against {:.3e} J that entered",
-                l.contact_work_j, entered
+                "the contacts handed the buildings {:.3e} J against {:.3e} J that entered; {}",
+                l.contact_work_j,
+                entered,
+                divergence_hint(self.sc)
             ),
         })
     }
@@ -525,4 +527,14 @@ fn hermite_argmax(y0: f64, v0: f64, y1: f64, v1: f64, l: f64) -> Option<f64> {
 /// The cubic's largest value inside the step (or minus infinity).
 fn hermite_max(y0: f64, v0: f64, y1: f64, v1: f64, l: f64) -> f64 {
     hermite_argmax(y0, v0, y1, v1, l).map_or(f64::NEG_INFINITY, |x| hermite(y0, v0, y1, v1, l, x))
+}
+
+/// What to change when a run diverges, for the element that diverged: only the Sears paper
+/// reading has a reading to change.
+fn divergence_hint(sc: &BuildingScenario) -> &'static str {
+    if sc.contact == ContactModel::Sears && sc.reading == SlabReading::Paper {
+        "the Sears paper reading does this above a tau = pi/2 (use contact.reading = end or a softer contact.stiffness)"
+    } else {
+        "use a softer contact.stiffness or a smaller solver.max_step"
+    }
 }

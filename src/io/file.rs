@@ -1,0 +1,104 @@
+//! Reading a user's text file (a record or a preset) with the limits that keep a hostile file
+//! from hanging or swelling the program: only regular files, at most [`MAX_BYTES`], UTF-8 checked
+//! with the bad byte's line and column, and short quotes of bad lines.
+
+use std::io::Read;
+use std::path::Path;
+
+/// The largest record or preset file read. The longest PEER records are a few megabytes; a file
+/// past this is refused before it is read, so a mistaken path cannot take the machine's memory.
+pub const MAX_BYTES: u64 = 64 * 1024 * 1024;
+
+/// How many characters of an offending line or token an error message quotes.
+pub const EXCERPT_CHARS: usize = 40;
+
+/// Reads `path` as UTF-8 text, refusing devices, pipes and folders, files over [`MAX_BYTES`],
+/// and invalid UTF-8 (named by line and byte). The error is a sentence without the path.
+pub fn read_text(path: &Path) -> Result<String, String> {
+    read_text_limited(path, MAX_BYTES)
+}
+
+/// [`read_text`] with a given size limit.
+pub fn read_text_limited(path: &Path, max_bytes: u64) -> Result<String, String> {
+    let meta = std::fs::metadata(path).map_err(|e| format!("cannot read: {e}"))?;
+    if !meta.is_file() {
+        return Err(
+            "not a regular file (a folder, device or pipe); give a record or preset file".into(),
+        );
+    }
+    if meta.len() > max_bytes {
+        return Err(too_big(max_bytes));
+    }
+    let file = std::fs::File::open(path).map_err(|e| format!("cannot read: {e}"))?;
+    // Read at most one byte past the limit: a file that grows while being read is still bounded.
+    let mut bytes = Vec::new();
+    file.take(max_bytes + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| format!("cannot read: {e}"))?;
+    if bytes.len() as u64 > max_bytes {
+        return Err(too_big(max_bytes));
+    }
+    utf8(bytes)
+}
+
+fn too_big(max_bytes: u64) -> String {
+    format!(
+        "larger than {} MiB, the most a record or preset file may hold",
+        max_bytes as f64 / (1024.0 * 1024.0)
+    )
+}
+
+/// The text of `bytes`, or an error naming the line and the byte (1-based, within the line) of
+/// the first invalid UTF-8 sequence.
+pub fn utf8(bytes: Vec<u8>) -> Result<String, String> {
+    String::from_utf8(bytes).map_err(|e| {
+        let at = e.utf8_error().valid_up_to();
+        let bytes = e.as_bytes();
+        let line = bytes[..at].iter().filter(|&&b| b == b'\n').count() + 1;
+        let line_start = bytes[..at]
+            .iter()
+            .rposition(|&b| b == b'\n')
+            .map_or(0, |i| i + 1);
+        format!(
+            "line {line}, byte {} (offset {at} in the file): 0x{:02X} is not valid UTF-8; save the file as UTF-8 text",
+            at - line_start + 1,
+            bytes[at]
+        )
+    })
+}
+
+/// At most [`EXCERPT_CHARS`] characters of `text`, with non-printing characters escaped and a
+/// note of how much was left out.
+pub fn excerpt(text: &str) -> String {
+    let count = text.chars().count();
+    let shown: String = text
+        .chars()
+        .take(EXCERPT_CHARS)
+        .flat_map(|c| c.escape_debug())
+        .collect();
+    if count > EXCERPT_CHARS {
+        format!("{shown}... ({count} characters)")
+    } else {
+        shown
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_invalid_byte_is_named_by_line_and_column() {
+        let e = utf8(b"a = 1\nb = \xFF2\n".to_vec()).unwrap_err();
+        assert!(e.contains("line 2, byte 5"), "{e}");
+        assert!(e.contains("0xFF"), "{e}");
+    }
+
+    #[test]
+    fn an_excerpt_of_a_long_token_is_short() {
+        let long = "\0".repeat(1_000_000);
+        let e = excerpt(&long);
+        assert!(e.len() < 300, "{}", e.len());
+        assert!(e.contains("1000000 characters"), "{e}");
+    }
+}
