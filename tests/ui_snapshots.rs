@@ -79,6 +79,8 @@ fn lecture_mode_at_projector_size_matches_its_snapshot() {
         // "Lengthen bar 2": one unlocked setting, a task, two plots.
         lesson_step: Some(4),
         lecture: true,
+        // Paused, so that the time line stands where the snapshot has it.
+        time_s: Some(5e-3),
         ..Default::default()
     };
     let mut harness = Harness::builder()

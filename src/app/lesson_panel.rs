@@ -115,6 +115,8 @@ impl PoundingApp {
 
     fn load_scene(&mut self, scene: SceneKind, setup: SceneSetup) {
         self.scene = scene;
+        // A launch time (`--time`) holds the animation there, paused, in every step.
+        let (t0, playing) = self.launch.time_s.map_or((0.0, true), |t| (t, false));
         match setup {
             SceneSetup::Impact(s) => {
                 let target = if scene == SceneKind::WaveVsLumped {
@@ -124,14 +126,15 @@ impl PoundingApp {
                 };
                 target.setup = s;
                 target.fields.clear();
-                target.playback.t = 0.0;
-                target.playback.playing = true;
+                target.playback.t = t0;
+                target.playback.playing = playing;
                 target.request();
             }
             SceneSetup::Buildings(s) => {
                 self.buildings.setup = s;
                 self.buildings.reset_fields();
-                self.buildings.playback.t = 0.0;
+                self.buildings.playback.t = t0;
+                self.buildings.playback.playing = playing;
                 self.buildings.request();
             }
         }
