@@ -310,10 +310,12 @@ fn a_bad_line_is_quoted_by_a_short_excerpt() {
     );
 }
 
+/// Ctrl-C reaches a run that watches for it: the sweep stops at its next solve. (100 000 FE
+/// solves take some 20 s; the signal comes after 3, once the handler has long been set up.)
 #[test]
 fn ctrl_c_stops_a_long_sweep_with_a_message_and_a_failing_status() {
-    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_pounding"))
-        .args([
+    let out = interrupted_run(
+        &[
             "sweep",
             "--param",
             "bar1.length",
@@ -323,30 +325,66 @@ fn ctrl_c_stops_a_long_sweep_with_a_message_and_a_failing_status() {
             "1",
             "--count",
             "100000",
+            "--model",
+            "fe",
             "--quiet",
-        ])
+        ],
+        Duration::from_secs(20),
+    );
+    assert!(!out.status.success());
+    let e = String::from_utf8_lossy(&out.stderr);
+    assert!(e.contains("cancelled"), "{e}");
+}
+
+/// Starts `pounding ARGS`, sends it Ctrl-C after three seconds, and returns what it left.
+fn interrupted_run(args: &[&str], limit: Duration) -> std::process::Output {
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_pounding"))
+        .args(args)
         .stdout(std::process::Stdio::piped())
         .stderr(std::process::Stdio::piped())
         .spawn()
         .unwrap();
-    std::thread::sleep(Duration::from_millis(1500));
+    std::thread::sleep(Duration::from_millis(3000));
+    assert!(
+        child.try_wait().unwrap().is_none(),
+        "`pounding {}` ended before the Ctrl-C",
+        args.join(" ")
+    );
     let sent = std::process::Command::new("kill")
         .args(["-INT", &child.id().to_string()])
         .status()
         .unwrap();
     assert!(sent.success());
     let start = Instant::now();
-    let out = loop {
+    loop {
         if child.try_wait().unwrap().is_some() {
-            break child.wait_with_output().unwrap();
+            return child.wait_with_output().unwrap();
         }
-        assert!(
-            start.elapsed() < Duration::from_secs(20),
-            "still running after Ctrl-C"
-        );
+        assert!(start.elapsed() < limit, "still running after Ctrl-C");
         std::thread::sleep(Duration::from_millis(50));
-    };
-    assert!(!out.status.success());
-    let e = String::from_utf8_lossy(&out.stderr);
-    assert!(e.contains("cancelled"), "{e}");
+    }
+}
+
+#[test]
+fn ctrl_c_ends_a_run_that_does_not_watch_for_it_at_once() {
+    // An animation export has no cancel of its own: Ctrl-C must still end it, as it would
+    // without a handler, not be swallowed until the export is done.
+    let dir = std::env::temp_dir().join(format!("pounding-ctrl-c-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let gif = dir.join("long.gif");
+    let out = interrupted_run(
+        &[
+            "impact",
+            "--preset",
+            "long-bars",
+            "--animate",
+            gif.to_str().unwrap(),
+            "--animate-frames",
+            "2000",
+            "--quiet",
+        ],
+        Duration::from_secs(10),
+    );
+    assert_eq!(out.status.code(), Some(130));
+    let _ = std::fs::remove_dir_all(&dir);
 }

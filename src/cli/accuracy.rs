@@ -13,6 +13,7 @@ use pounding::model::building::{BuildingScenario, ContactModel};
 use pounding::model::impact::estimate::rel;
 use pounding::model::impact::{ImpactResult, ModelKind, solve};
 use pounding::model::scenario::{ImpactScenario, Reading};
+use pounding::study::Progress;
 use serde::Serialize;
 use std::io::Write;
 use std::path::PathBuf;
@@ -41,6 +42,9 @@ pub struct AccuracyArgs {
     /// Print one JSON object instead of the table
     #[arg(long)]
     pub json: bool,
+    /// Show no progress bar on standard error (it shows only on a terminal, and not with --json)
+    #[arg(long)]
+    pub quiet: bool,
 }
 
 /// One rung of a ladder.
@@ -124,7 +128,16 @@ pub fn step_ladder(dt: f64) -> Vec<f64> {
 }
 
 /// The impact models' ladders.
-pub fn impact_ladders(base: &ImpactScenario) -> anyhow::Result<Vec<Rung>> {
+/// Counts a rung (or a reference) done, and stops when Ctrl-C asked.
+fn rung_done(progress: &Progress) -> anyhow::Result<()> {
+    progress.tick();
+    if progress.cancelled() {
+        anyhow::bail!("cancelled");
+    }
+    Ok(())
+}
+
+pub fn impact_ladders(base: &ImpactScenario, progress: &Progress) -> anyhow::Result<Vec<Rung>> {
     let cases: [(&str, ModelKind, Reading); 6] = [
         ("sears paper", ModelKind::Sears, Reading::Paper),
         ("sears collocated", ModelKind::Sears, Reading::Collocated),
@@ -135,6 +148,7 @@ pub fn impact_ladders(base: &ImpactScenario) -> anyhow::Result<Vec<Rung>> {
     ];
     let steps = step_ladder(base.solver.dt_s);
     let meshes = [25usize, 50, 100, 200, 400, 800];
+    progress.plan(cases.len() * (1 + steps.len().max(meshes.len())));
     let mut rows = vec![];
     for (name, model, reading) in cases {
         let mut sc = *base;
@@ -156,11 +170,13 @@ pub fn impact_ladders(base: &ImpactScenario) -> anyhow::Result<Vec<Rung>> {
             (steps.clone(), steps[steps.len() - 1] / 16.0)
         };
         let reference = solve(model, &at(reference_res))?;
+        rung_done(progress)?;
         let mut prev: Option<Rung> = None;
         for &res in &ladder {
             let s = at(res);
             let (r, wall) = min_time(|| solve(model, &s));
             let r = r?;
+            rung_done(progress)?;
             let err = l2_error(&r, &reference);
             let rung = Rung {
                 model: name.into(),
@@ -188,7 +204,10 @@ pub fn impact_ladders(base: &ImpactScenario) -> anyhow::Result<Vec<Rung>> {
 pub fn building_ladders(
     setup: &BuildingSetup,
     motion: &pounding::model::motion::GroundMotion,
+    progress: &Progress,
 ) -> anyhow::Result<Vec<Rung>> {
+    let ladder = [2.0, 4.0, 8.0, 16.0, 32.0];
+    progress.plan(2 * (1 + ladder.len()));
     let mut rows = vec![];
     for model in [ContactModel::Sears, ContactModel::Linear] {
         // Every discretisation parameter with the steps per contact time scale: the grid on
@@ -200,11 +219,13 @@ pub fn building_ladders(
             ..setup.scenario.clone()
         };
         let reference = pounding::model::building::solve(&at(128.0), motion)?;
+        rung_done(progress)?;
         let mut prev: Option<Rung> = None;
-        for sps in [2.0, 4.0, 8.0, 16.0, 32.0] {
+        for sps in ladder {
             let s = at(sps);
             let (r, wall) = min_time(|| pounding::model::building::solve(&s, motion));
             let r = r?;
+            rung_done(progress)?;
             let force_err = rel(r.max_pounding_force_n, reference.max_pounding_force_n);
             let disp_err = rel(r.peak_displacement_m[0], reference.peak_displacement_m[0]).max(
                 rel(r.peak_displacement_m[1], reference.peak_displacement_m[1]),
@@ -237,6 +258,7 @@ pub fn run(args: &AccuracyArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         "buildings" => true,
         other => anyhow::bail!("--scene: unknown scene '{other}': allowed impact|buildings"),
     };
+    let quiet = args.quiet || args.json;
     let rows = if buildings {
         let mut setup: BuildingSetup = preset::load_for(
             args.preset.as_deref().unwrap_or("paper-buildings"),
@@ -252,7 +274,10 @@ pub fn run(args: &AccuracyArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             setup.motion.file = Some(m.display().to_string());
         }
         let motion = super::buildings::load_motion(&setup)?;
-        building_ladders(&setup, &motion)?
+        let progress = Progress::new();
+        super::with_bar("accuracy", &progress, quiet, || {
+            building_ladders(&setup, &motion, &progress)
+        })?
     } else {
         let mut setup: ImpactSetup = preset::load_for(
             args.preset.as_deref().unwrap_or(preset::DEFAULT_PRESET),
@@ -264,7 +289,10 @@ pub fn run(args: &AccuracyArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 .apply_assignment(a)
                 .map_err(|e| anyhow::anyhow!("--set {e}"))?;
         }
-        impact_ladders(&setup.scenario)?
+        let progress = Progress::new();
+        super::with_bar("accuracy", &progress, quiet, || {
+            impact_ladders(&setup.scenario, &progress)
+        })?
     };
     if let Some(path) = &args.csv {
         super::write_csv(out, path, |w| {

@@ -298,6 +298,7 @@ pub(crate) fn with_bar<T: Send>(
         .progress_chars("=> "),
     );
     bar.set_prefix(name.to_string());
+    let _polling = Polling::start();
     let out = std::thread::scope(|scope| {
         let job = scope.spawn(work);
         let mut drawn = quiet;
@@ -326,14 +327,40 @@ pub(crate) fn with_bar<T: Send>(
 /// program ends with a message and a non-zero status instead of dying mid-write.
 static INTERRUPTED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
 
-/// Routes SIGINT to [`INTERRUPTED`], once per process.
+/// How many runs are polling [`INTERRUPTED`] now (inside [`with_bar`] or [`with_control`]).
+static POLLING: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+
+/// Marks a run that polls [`interrupted`] while it lives.
+struct Polling;
+
+impl Polling {
+    fn start() -> Self {
+        POLLING.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        Polling
+    }
+}
+
+impl Drop for Polling {
+    fn drop(&mut self) {
+        POLLING.fetch_sub(1, std::sync::atomic::Ordering::Relaxed);
+    }
+}
+
+/// Routes SIGINT to [`INTERRUPTED`] while a run polls it, once per process; otherwise Ctrl-C
+/// ends the process at once.
 fn watch_interrupt() {
     static ONCE: std::sync::Once = std::sync::Once::new();
     ONCE.call_once(|| {
         // Without a handler (one already set by an embedding program) Ctrl-C ends the process
         // as before, which is still a stop.
         let _ = ctrlc::set_handler(|| {
-            INTERRUPTED.store(true, std::sync::atomic::Ordering::Relaxed);
+            if POLLING.load(std::sync::atomic::Ordering::Relaxed) > 0 {
+                INTERRUPTED.store(true, std::sync::atomic::Ordering::Relaxed);
+            } else {
+                // Nothing is watching for the flag (a window, a short command): stop at once,
+                // as an unhandled Ctrl-C would.
+                std::process::exit(130);
+            }
         });
     });
 }
@@ -365,6 +392,7 @@ pub(crate) fn with_control<T: Send>(
             .progress_chars("=> "),
     );
     bar.set_prefix(name.to_string());
+    let _polling = Polling::start();
     let out = std::thread::scope(|scope| {
         let job = scope.spawn(|| work(&control));
         while !job.is_finished() {
