@@ -388,3 +388,56 @@ fn ctrl_c_ends_a_run_that_does_not_watch_for_it_at_once() {
     assert_eq!(out.status.code(), Some(130));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn accuracy_takes_the_users_own_step_at_the_top_of_the_range_and_keeps_its_ladder_inside_it() {
+    // `accuracy --set solver.dt=1` was refused ("solver.dt: 4 is not allowed"): the ladder's
+    // coarsest rung was four times the user's step, past the key's range.
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_pounding"))
+        .args(["accuracy", "--set", "solver.dt=1", "--json"])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
+    let range =
+        pounding::model::settings::find(pounding::model::settings::IMPACT_SETTINGS, "solver.dt")
+            .and_then(|s| s.range())
+            .unwrap();
+    let steps: Vec<f64> = v["rungs"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|r| r["model"].as_str().unwrap().starts_with("sears"))
+        .map(|r| r["resolution"].as_f64().unwrap())
+        .collect();
+    assert!(!steps.is_empty());
+    assert!(steps.iter().all(|&h| range.contains(h)), "{steps:?}");
+    assert!(
+        steps.contains(&1.0),
+        "the user's own step is a rung: {steps:?}"
+    );
+}
+
+#[test]
+fn study_reads_the_synthetic_record_as_buildings_does() {
+    // `study ... --motion synthetic` said "cannot read: No such file or directory".
+    let dir = std::env::temp_dir().join(format!("pounding-study-synth-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for motion in ["synthetic", "synthetic:1"] {
+        let o = std::process::Command::new(env!("CARGO_BIN_EXE_pounding"))
+            .args([
+                "study",
+                "fig12-displacements",
+                "--motion",
+                motion,
+                "--quiet",
+            ])
+            .current_dir(&dir)
+            .output()
+            .unwrap();
+        let e = String::from_utf8_lossy(&o.stderr);
+        assert!(o.status.success(), "{motion}: {e}");
+        assert!(!e.contains("cannot read"), "{motion}: {e}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

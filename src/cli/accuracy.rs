@@ -127,7 +127,6 @@ pub fn step_ladder(dt: f64) -> Vec<f64> {
     (0..6).map(|i| top * 0.5f64.powi(i)).collect()
 }
 
-/// The impact models' ladders.
 /// Counts a rung (or a reference) done, and stops when Ctrl-C asked.
 fn rung_done(progress: &Progress) -> anyhow::Result<()> {
     progress.tick();
@@ -137,6 +136,7 @@ fn rung_done(progress: &Progress) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// The impact models' ladders.
 pub fn impact_ladders(base: &ImpactScenario, progress: &Progress) -> anyhow::Result<Vec<Rung>> {
     let cases: [(&str, ModelKind, Reading); 6] = [
         ("sears paper", ModelKind::Sears, Reading::Paper),
