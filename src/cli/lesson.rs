@@ -2,7 +2,6 @@
 
 use clap::Args;
 use pounding::lesson::{self, Lesson};
-use pounding::model::control::Control;
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -24,6 +23,9 @@ pub struct LessonArgs {
     /// With --handout: the teacher's version, with the answers, explanations and notes
     #[arg(long, requires = "handout")]
     pub teacher: bool,
+    /// Show no progress bar on standard error (it shows only on a terminal)
+    #[arg(long)]
+    pub quiet: bool,
 }
 
 pub fn run(args: &LessonArgs, out: &mut dyn Write) -> anyhow::Result<()> {
@@ -31,7 +33,7 @@ pub fn run(args: &LessonArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         return list(out);
     }
     if let Some(name) = &args.check {
-        return check(name, out);
+        return check(name, args.quiet, out);
     }
     let Some(name) = &args.lesson else {
         anyhow::bail!(
@@ -41,7 +43,7 @@ pub fn run(args: &LessonArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     };
     let lesson = lesson::load(name)?;
     match &args.handout {
-        Some(dir) => handout(&lesson, dir, args.teacher, out),
+        Some(dir) => handout(&lesson, dir, args.teacher, args.quiet, out),
         None => outline(&lesson, out),
     }
 }
@@ -61,9 +63,9 @@ fn list(out: &mut dyn Write) -> anyhow::Result<()> {
     Ok(())
 }
 
-fn check(name: &str, out: &mut dyn Write) -> anyhow::Result<()> {
+fn check(name: &str, quiet: bool, out: &mut dyn Write) -> anyhow::Result<()> {
     let lesson = lesson::load(name)?;
-    let report = lesson::check(&lesson, Control::never())?;
+    let report = super::with_control("lesson --check", quiet, |c| lesson::check(&lesson, c))?;
     writeln!(out, "{}: {}", lesson.source, lesson.title)?;
     for (i, s) in report.steps.iter().enumerate() {
         let mut parts = Vec::new();
@@ -124,10 +126,13 @@ fn handout(
     lesson: &Lesson,
     dir: &std::path::Path,
     teacher: bool,
+    quiet: bool,
     out: &mut dyn Write,
 ) -> anyhow::Result<()> {
     let start = std::time::Instant::now();
-    let h = lesson::handout::write(lesson, dir, teacher, Control::never())?;
+    let h = super::with_control("lesson --handout", quiet, |c| {
+        lesson::handout::write(lesson, dir, teacher, c)
+    })?;
     writeln!(
         out,
         "wrote {} and {} figure(s) in {:.2} s",

@@ -52,8 +52,13 @@ fn truth(
 /// holds, each choice's answer key is confirmed by the model, each number answer is a number,
 /// and each task's solution meets a goal not met before it.
 pub fn check(lesson: &Lesson, control: &Control) -> Result<CheckReport, LessonError> {
+    let n = lesson.steps.len() as u32;
     let steps = (0..lesson.steps.len())
-        .map(|i| check_step(lesson, i, control))
+        .map(|i| {
+            // Each step is an equal part of the progress a caller shows.
+            control.stage(i as u32, n);
+            check_step(lesson, i, control)
+        })
         .collect::<Result<Vec<_>, _>>()?;
     Ok(CheckReport {
         lesson: lesson.name.clone(),

@@ -56,6 +56,7 @@ pub fn write(
     }
     let mut figures = Vec::new();
     for (i, step) in lesson.steps.iter().enumerate() {
+        control.stage(i as u32, lesson.steps.len() as u32);
         let solved = solve_step(step, &[], control, &lesson.source)?;
         let _ = writeln!(
             md,
