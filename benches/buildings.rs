@@ -8,7 +8,7 @@ use pounding::io::preset;
 use pounding::model::building::{BuildingScenario, ContactModel, solve};
 use pounding::model::motion::GroundMotion;
 use pounding::model::motion::synthetic::SyntheticSpec;
-use pounding::study::Progress;
+use pounding::study::Control;
 use pounding::study::gaps::record_gaps;
 use std::hint::black_box;
 
@@ -74,7 +74,7 @@ fn gaps_20_records(c: &mut Criterion) {
     let mut g = c.benchmark_group("gaps");
     g.sample_size(10);
     g.bench_function("mdof_3_5_20_records", |b| {
-        b.iter(|| record_gaps(black_box(&base), &motions, &Progress::new()).expect("runs"))
+        b.iter(|| record_gaps(black_box(&base), &motions, &Control::new()).expect("runs"))
     });
     g.finish();
 }

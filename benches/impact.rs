@@ -71,7 +71,7 @@ fn fe_fine_mesh(c: &mut Criterion) {
 /// values to the last point.
 fn sweep_1000(c: &mut Criterion) {
     use pounding::io::settings::ImpactSetup;
-    use pounding::study::{Progress, sweep};
+    use pounding::study::{Control, sweep};
     let base = ImpactSetup::default();
     let mut group = c.benchmark_group("sweep");
     group.sample_size(10);
@@ -79,7 +79,7 @@ fn sweep_1000(c: &mut Criterion) {
         b.iter(|| {
             let values = sweep::values(0.5, 10.0, 1000, false);
             let setups = sweep::setups(black_box(&base), "bar2.length", &values).expect("valid");
-            sweep::run(&setups, &values, &[ModelKind::Sears], &Progress::new()).expect("sweeps")
+            sweep::run(&setups, &values, &[ModelKind::Sears], &Control::new()).expect("sweeps")
         })
     });
     group.finish();
@@ -88,13 +88,13 @@ fn sweep_1000(c: &mut Criterion) {
 /// Every impact study of the paper (Figures 4-9, Sections 3.3-3.5) solved, without writing
 /// files: what `pounding study` spends on solving.
 fn paper_studies(c: &mut Criterion) {
-    use pounding::study::{self, Context, Progress};
+    use pounding::study::{self, Context, Control};
     let mut group = c.benchmark_group("study");
     group.sample_size(10);
     for s in study::studies().into_iter().filter(|s| !s.buildings) {
         group.bench_function(s.name, |b| {
             b.iter(|| {
-                let progress = Progress::new();
+                let progress = Control::new();
                 (s.run)(&Context::new(&progress)).expect("the study runs")
             })
         });

@@ -4,13 +4,13 @@
 
 use pounding::io::building_settings::BuildingSetup;
 use pounding::io::preset;
-use pounding::study::{self, Cancelled, Context, Progress, StudyOutput, sweep};
+use pounding::study::{self, Cancelled, Context, Control, StudyOutput, sweep};
 
 mod common;
 use common::pounding;
 
 fn run(name: &str) -> StudyOutput {
-    let progress = Progress::new();
+    let progress = Control::new();
     let s = study::find(name).unwrap_or_else(|| panic!("study {name} exists"));
     let setup: BuildingSetup = preset::load_for("paper-buildings", "buildings").unwrap();
     let motion = pounding::io::motion::load(&setup.motion).unwrap();
@@ -228,11 +228,11 @@ fn a_cancelled_sweep_stops_without_solving_and_counts_its_jobs() {
     let values = sweep::values(0.5, 10.0, 40, false);
     let setups = sweep::setups(&base, "bar2.length", &values).unwrap();
     let models = [pounding::model::impact::ModelKind::Sears];
-    let p = Progress::new();
+    let p = Control::new();
     p.cancel();
     assert_eq!(sweep::run(&setups, &values, &models, &p), Err(Cancelled));
     assert_eq!((p.done(), p.total()), (0, 40));
-    let p = Progress::new();
+    let p = Control::new();
     let points = sweep::run(&setups, &values, &models, &p).unwrap();
     assert_eq!((points.len(), p.done()), (40, 40));
 }

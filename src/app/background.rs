@@ -2,21 +2,21 @@
 //! its outcome is taken once it lands (the window is repainted when it does). A panic in the
 //! study is caught and lands as its outcome, so the scene never waits for ever.
 
-use crate::study::Progress;
+use crate::study::Control;
 use eframe::egui;
 use std::sync::Arc;
 use std::sync::mpsc::{Receiver, channel};
 use std::time::{Duration, Instant};
 
 pub struct Background<T> {
-    progress: Arc<Progress>,
+    progress: Arc<Control>,
     rx: Receiver<Result<T, String>>,
     started: Instant,
 }
 
 impl<T: Send + 'static> Background<T> {
-    pub fn spawn(ctx: &egui::Context, work: impl FnOnce(&Progress) -> T + Send + 'static) -> Self {
-        let progress = Arc::new(Progress::new());
+    pub fn spawn(ctx: &egui::Context, work: impl FnOnce(&Control) -> T + Send + 'static) -> Self {
+        let progress = Arc::new(Control::new());
         let (tx, rx) = channel();
         let (p, ctx) = (progress.clone(), ctx.clone());
         std::thread::Builder::new()

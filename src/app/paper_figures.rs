@@ -4,7 +4,7 @@
 use super::background::Background;
 use super::export::{Exporter, ShownPlot};
 use super::plot_view;
-use crate::study::{self, Cancelled, Context, Progress, StudyOutput};
+use crate::study::{self, Cancelled, Context, Control, StudyOutput};
 use eframe::egui;
 use std::time::Duration;
 
@@ -61,7 +61,7 @@ impl PaperFigures {
             return;
         };
         let run = s.run;
-        self.running = Some(Background::spawn(&self.ctx, move |p: &Progress| {
+        self.running = Some(Background::spawn(&self.ctx, move |p: &Control| {
             run(&Context::new(p))
         }));
         self.status = None;

@@ -13,7 +13,7 @@ use pounding::model::building::{BuildingScenario, ContactModel};
 use pounding::model::impact::estimate::rel;
 use pounding::model::impact::{ImpactResult, ModelKind, solve};
 use pounding::model::scenario::{ImpactScenario, Reading};
-use pounding::study::Progress;
+use pounding::study::Control;
 use serde::Serialize;
 use std::io::Write;
 use std::path::PathBuf;
@@ -128,7 +128,7 @@ pub fn step_ladder(dt: f64) -> Vec<f64> {
 }
 
 /// Counts a rung (or a reference) done, and stops when Ctrl-C asked.
-fn rung_done(progress: &Progress) -> anyhow::Result<()> {
+fn rung_done(progress: &Control) -> anyhow::Result<()> {
     progress.tick();
     if progress.cancelled() {
         anyhow::bail!("cancelled");
@@ -137,7 +137,7 @@ fn rung_done(progress: &Progress) -> anyhow::Result<()> {
 }
 
 /// The impact models' ladders.
-pub fn impact_ladders(base: &ImpactScenario, progress: &Progress) -> anyhow::Result<Vec<Rung>> {
+pub fn impact_ladders(base: &ImpactScenario, progress: &Control) -> anyhow::Result<Vec<Rung>> {
     let cases: [(&str, ModelKind, Reading); 6] = [
         ("sears paper", ModelKind::Sears, Reading::Paper),
         ("sears collocated", ModelKind::Sears, Reading::Collocated),
@@ -204,7 +204,7 @@ pub fn impact_ladders(base: &ImpactScenario, progress: &Progress) -> anyhow::Res
 pub fn building_ladders(
     setup: &BuildingSetup,
     motion: &pounding::model::motion::GroundMotion,
-    progress: &Progress,
+    progress: &Control,
 ) -> anyhow::Result<Vec<Rung>> {
     let ladder = [2.0, 4.0, 8.0, 16.0, 32.0];
     progress.plan(2 * (1 + ladder.len()));
@@ -274,7 +274,7 @@ pub fn run(args: &AccuracyArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             setup.motion.file = Some(m.display().to_string());
         }
         let motion = super::buildings::load_motion(&setup)?;
-        let progress = Progress::new();
+        let progress = Control::new();
         super::with_bar("accuracy", &progress, quiet, || {
             building_ladders(&setup, &motion, &progress)
         })?
@@ -289,7 +289,7 @@ pub fn run(args: &AccuracyArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 .apply_assignment(a)
                 .map_err(|e| anyhow::anyhow!("--set {e}"))?;
         }
-        let progress = Progress::new();
+        let progress = Control::new();
         super::with_bar("accuracy", &progress, quiet, || {
             impact_ladders(&setup.scenario, &progress)
         })?

@@ -7,7 +7,7 @@ use pounding::export::plot::{LinePlot, Series};
 use pounding::io::building_settings::BuildingSetup;
 use pounding::io::motion::{MotionSpec, load};
 use pounding::model::motion::GroundMotion;
-use pounding::study::Progress;
+use pounding::study::Control;
 use pounding::study::gaps::{RecordGaps, record_gaps};
 use serde::Serialize;
 use std::io::Write;
@@ -142,7 +142,7 @@ pub fn run(args: &GapsArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         })
         .collect();
     let loaded: Vec<GroundMotion> = motions.iter().filter_map(|(_, m)| m.clone().ok()).collect();
-    let progress = Progress::new();
+    let progress = Control::new();
     let start = Instant::now();
     let results = super::with_bar("gaps", &progress, args.quiet, || {
         record_gaps(&setup.scenario, &loaded, &progress)

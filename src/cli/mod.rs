@@ -285,7 +285,7 @@ pub fn is_broken_pipe(e: &anyhow::Error) -> bool {
 /// with `quiet`, and until the work has planned its solves, so it never shows an empty 0/0 bar).
 pub(crate) fn with_bar<T: Send>(
     name: &str,
-    progress: &pounding::study::Progress,
+    progress: &pounding::study::Control,
     quiet: bool,
     work: impl FnOnce() -> T + Send,
 ) -> T {

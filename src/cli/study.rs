@@ -4,7 +4,7 @@
 use anyhow::{Context as _, anyhow, bail};
 use clap::Args;
 use pounding::export::plot::LinePlot;
-use pounding::study::{self, Context, Finding, Progress, Study};
+use pounding::study::{self, Context, Control, Finding, Study};
 use serde::Serialize;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -127,7 +127,7 @@ pub fn run(args: &StudyArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let mut reports = Vec::new();
     let mut solves = 0;
     for s in chosen {
-        let progress = Progress::new();
+        let progress = Control::new();
         let ctx = Context {
             progress: &progress,
             motion: motion.as_ref(),

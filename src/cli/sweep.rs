@@ -6,7 +6,7 @@ use clap::Args;
 use pounding::export::plot::{LinePlot, Series};
 use pounding::model::impact::ModelKind;
 use pounding::model::settings::{IMPACT_SETTINGS, axis_label};
-use pounding::study::Progress;
+use pounding::study::Control;
 use pounding::study::sweep::{self, Part, Point};
 use serde::Serialize;
 use std::io::Write;
@@ -72,7 +72,7 @@ pub fn run(args: &SweepArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let values = sweep::values(from, to, args.count, args.log);
     let setups = sweep::setups(&base, param, &values).map_err(flagged)?;
     let start = Instant::now();
-    let progress = Progress::new();
+    let progress = Control::new();
     let quiet = args.common.quiet || args.common.json;
     let points = super::with_bar("sweep", &progress, quiet, || {
         sweep::run(&setups, &values, &models, &progress)

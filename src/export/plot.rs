@@ -43,6 +43,20 @@ pub enum PlotError {
     },
 }
 
+/// Why drawing or encoding failed, before the path is attached.
+#[derive(Debug, thiserror::Error)]
+enum Failure {
+    #[error("{0}")]
+    Draw(String),
+    #[error(transparent)]
+    Encode(#[from] png::EncodingError),
+}
+
+/// plotters' errors are generic over the backend: their text is what a user can act on.
+fn draw_failed(e: impl std::fmt::Display) -> Failure {
+    Failure::Draw(e.to_string())
+}
+
 static FONT: Once = Once::new();
 
 pub(crate) fn register_font() {
@@ -146,10 +160,7 @@ impl LinePlot {
 
     /// PNG through a pixel buffer and the png crate (plotters' own encoder brings a second
     /// image crate along).
-    fn write_png(
-        &self,
-        path: &Path,
-    ) -> Result<(), Box<dyn std::error::Error + Send + Sync + 'static>> {
+    fn write_png(&self, path: &Path) -> Result<(), Failure> {
         let (w, h) = self.size;
         let mut rgb = vec![255u8; (w * h * 3) as usize];
         self.draw(BitMapBackend::with_buffer(&mut rgb, self.size).into_drawing_area())?;
@@ -182,11 +193,11 @@ impl LinePlot {
     fn draw<DB: DrawingBackend>(
         &self,
         area: DrawingArea<DB, plotters::coord::Shift>,
-    ) -> Result<(), Box<dyn std::error::Error + Send + Sync + 'static>>
+    ) -> Result<(), Failure>
     where
         DB::ErrorType: 'static,
     {
-        area.fill(&WHITE).map_err(|e| e.to_string())?;
+        area.fill(&WHITE).map_err(draw_failed)?;
         let points = || self.series.iter().flat_map(|s| s.points.iter());
         let log_x = log_axis_pays(self.log_x, points().map(|p| p.0));
         let log_y = log_axis_pays(self.log_y, points().map(|p| p.1));
@@ -221,7 +232,7 @@ impl LinePlot {
                     .label_style(("sans-serif", px(14.0)))
                     .axis_desc_style(("sans-serif", px(16.0)))
                     .draw()
-                    .map_err(|e| e.to_string())?;
+                    .map_err(draw_failed)?;
                 for (i, s) in self.series.iter().enumerate() {
                     let colour = PALETTE[i % PALETTE.len()];
                     let pts: Vec<(f64, f64)> = s
@@ -237,7 +248,7 @@ impl LinePlot {
                         .collect();
                     chart
                         .draw_series(LineSeries::new(pts.clone(), colour.stroke_width(px(2.0))))
-                        .map_err(|e| e.to_string())?
+                        .map_err(draw_failed)?
                         .label(s.name.as_str())
                         .legend(move |(x, y)| {
                             PathElement::new(
@@ -251,7 +262,7 @@ impl LinePlot {
                                 pts.iter()
                                     .map(|&p| Circle::new(p, px(3.0), colour.filled())),
                             )
-                            .map_err(|e| e.to_string())?;
+                            .map_err(draw_failed)?;
                     }
                 }
                 chart
@@ -261,32 +272,32 @@ impl LinePlot {
                     .legend_area_size(px(30.0))
                     .label_font(("sans-serif", px(14.0)))
                     .draw()
-                    .map_err(|e| e.to_string())?;
+                    .map_err(draw_failed)?;
             }};
         }
         match (log_x, log_y) {
             (true, true) => finish!(
                 builder
                     .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
-                    .map_err(|e| e.to_string())?
+                    .map_err(draw_failed)?
             ),
             (true, false) => finish!(
                 builder
                     .build_cartesian_2d((x0..x1).log_scale(), y0..y1)
-                    .map_err(|e| e.to_string())?
+                    .map_err(draw_failed)?
             ),
             (false, true) => finish!(
                 builder
                     .build_cartesian_2d(x0..x1, (y0..y1).log_scale())
-                    .map_err(|e| e.to_string())?
+                    .map_err(draw_failed)?
             ),
             (false, false) => finish!(
                 builder
                     .build_cartesian_2d(x0..x1, y0..y1)
-                    .map_err(|e| e.to_string())?
+                    .map_err(draw_failed)?
             ),
         }
-        area.present().map_err(|e| e.to_string())?;
+        area.present().map_err(draw_failed)?;
         Ok(())
     }
 }

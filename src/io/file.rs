@@ -12,45 +12,62 @@ pub const MAX_BYTES: u64 = 64 * 1024 * 1024;
 /// How many characters of an offending line or token an error message quotes.
 pub const EXCERPT_CHARS: usize = 40;
 
+/// Why a file was not read. The message is a sentence without the path: the caller names the
+/// file (and knows whether it was a record or a preset).
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum FileError {
+    /// The system refused (missing, no permission, an I/O error).
+    #[error("cannot read: {0}")]
+    Read(String),
+    /// A folder, a device or a pipe: reading one could block or never end.
+    #[error("not a regular file (a folder, device or pipe); give a record or preset file")]
+    NotRegular,
+    /// Past the size limit.
+    #[error("larger than {} MiB, the most a record or preset file may hold", *.max_bytes as f64 / (1024.0 * 1024.0))]
+    TooBig { max_bytes: u64 },
+    /// Invalid UTF-8: the line and the byte within it (from 1), the offset in the file, the byte.
+    #[error(
+        "line {line}, byte {byte} (offset {offset} in the file): 0x{value:02X} is not valid UTF-8; save the file as UTF-8 text"
+    )]
+    NotUtf8 {
+        line: usize,
+        byte: usize,
+        offset: usize,
+        value: u8,
+    },
+}
+
 /// Reads `path` as UTF-8 text, refusing devices, pipes and folders, files over [`MAX_BYTES`],
-/// and invalid UTF-8 (named by line and byte). The error is a sentence without the path.
-pub fn read_text(path: &Path) -> Result<String, String> {
+/// and invalid UTF-8 (named by line and byte).
+pub fn read_text(path: &Path) -> Result<String, FileError> {
     read_text_limited(path, MAX_BYTES)
 }
 
 /// [`read_text`] with a given size limit.
-pub fn read_text_limited(path: &Path, max_bytes: u64) -> Result<String, String> {
-    let meta = std::fs::metadata(path).map_err(|e| format!("cannot read: {e}"))?;
+pub fn read_text_limited(path: &Path, max_bytes: u64) -> Result<String, FileError> {
+    let cannot = |e: std::io::Error| FileError::Read(e.to_string());
+    let meta = std::fs::metadata(path).map_err(cannot)?;
     if !meta.is_file() {
-        return Err(
-            "not a regular file (a folder, device or pipe); give a record or preset file".into(),
-        );
+        return Err(FileError::NotRegular);
     }
     if meta.len() > max_bytes {
-        return Err(too_big(max_bytes));
+        return Err(FileError::TooBig { max_bytes });
     }
-    let file = std::fs::File::open(path).map_err(|e| format!("cannot read: {e}"))?;
+    let file = std::fs::File::open(path).map_err(cannot)?;
     // Read at most one byte past the limit: a file that grows while being read is still bounded.
     let mut bytes = Vec::new();
     file.take(max_bytes + 1)
         .read_to_end(&mut bytes)
-        .map_err(|e| format!("cannot read: {e}"))?;
+        .map_err(cannot)?;
     if bytes.len() as u64 > max_bytes {
-        return Err(too_big(max_bytes));
+        return Err(FileError::TooBig { max_bytes });
     }
     utf8(bytes)
 }
 
-fn too_big(max_bytes: u64) -> String {
-    format!(
-        "larger than {} MiB, the most a record or preset file may hold",
-        max_bytes as f64 / (1024.0 * 1024.0)
-    )
-}
-
 /// The text of `bytes`, or an error naming the line and the byte (1-based, within the line) of
 /// the first invalid UTF-8 sequence.
-pub fn utf8(bytes: Vec<u8>) -> Result<String, String> {
+pub fn utf8(bytes: Vec<u8>) -> Result<String, FileError> {
     String::from_utf8(bytes).map_err(|e| {
         let at = e.utf8_error().valid_up_to();
         let bytes = e.as_bytes();
@@ -59,11 +76,12 @@ pub fn utf8(bytes: Vec<u8>) -> Result<String, String> {
             .iter()
             .rposition(|&b| b == b'\n')
             .map_or(0, |i| i + 1);
-        format!(
-            "line {line}, byte {} (offset {at} in the file): 0x{:02X} is not valid UTF-8; save the file as UTF-8 text",
-            at - line_start + 1,
-            bytes[at]
-        )
+        FileError::NotUtf8 {
+            line,
+            byte: at - line_start + 1,
+            offset: at,
+            value: bytes[at],
+        }
     })
 }
 
@@ -90,8 +108,18 @@ mod tests {
     #[test]
     fn an_invalid_byte_is_named_by_line_and_column() {
         let e = utf8(b"a = 1\nb = \xFF2\n".to_vec()).unwrap_err();
-        assert!(e.contains("line 2, byte 5"), "{e}");
-        assert!(e.contains("0xFF"), "{e}");
+        assert_eq!(
+            e,
+            FileError::NotUtf8 {
+                line: 2,
+                byte: 5,
+                offset: 10,
+                value: 0xFF
+            }
+        );
+        let text = e.to_string();
+        assert!(text.contains("line 2, byte 5"), "{text}");
+        assert!(text.contains("0xFF"), "{text}");
     }
 
     #[test]

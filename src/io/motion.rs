@@ -4,7 +4,6 @@
 
 use crate::model::motion::synthetic::SyntheticSpec;
 use crate::model::motion::{G, GroundMotion};
-use std::fmt;
 
 /// A record shipped with the program: its name, what it is, and its text (our header, then
 /// time and acceleration in g).
@@ -152,23 +151,15 @@ impl Units {
     }
 }
 
-#[derive(Debug, Clone, PartialEq)]
+/// A record that could not be read: which file, which line, why.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{file}{}: {message}", super::preset::at_line(*.line))]
 pub struct MotionError {
-    pub source: String,
+    /// The file (or the record's name).
+    pub file: String,
     pub line: Option<usize>,
     pub message: String,
 }
-
-impl fmt::Display for MotionError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self.line {
-            Some(l) => write!(f, "{}, line {l}: {}", self.source, self.message),
-            None => write!(f, "{}: {}", self.source, self.message),
-        }
-    }
-}
-
-impl std::error::Error for MotionError {}
 
 /// Reads a record. `.AT2` files (by extension or by their PEER header) carry their own step and
 /// are in g; other files are text in `units`, with `dt_s` required for a values-only file.
@@ -189,7 +180,7 @@ pub fn parse(
 
 fn err(source: &str, line: Option<usize>, message: impl Into<String>) -> MotionError {
     MotionError {
-        source: source.to_string(),
+        file: source.to_string(),
         line,
         message: message.into(),
     }

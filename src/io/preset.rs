@@ -2,7 +2,6 @@
 //! are also compiled in, so the binary works from any directory); a path is read as it is.
 
 use super::settings::{ImpactSetup, SettingValue};
-use std::fmt;
 use std::path::Path;
 
 /// Presets shipped with Pounding Lab, compiled in.
@@ -49,28 +48,20 @@ pub const EMBEDDED: &[(&str, &str)] = &[
 pub const DEFAULT_PRESET: &str = "paper-base";
 
 /// A preset that could not be used: which file, which line, which key, why.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{file}{}{}: {message}", at_line(*.line), .key.as_ref().map(|k| format!(", {k}")).unwrap_or_default())]
 pub struct PresetError {
-    pub source: String,
+    /// The file, or the name of a compiled-in preset.
+    pub file: String,
     pub line: Option<usize>,
     pub key: Option<String>,
     pub message: String,
 }
 
-impl fmt::Display for PresetError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}", self.source)?;
-        if let Some(l) = self.line {
-            write!(f, ", line {l}")?;
-        }
-        if let Some(k) = &self.key {
-            write!(f, ", {k}")?;
-        }
-        write!(f, ": {}", self.message)
-    }
+/// ", line N" where a line is known.
+pub(crate) fn at_line(line: Option<usize>) -> String {
+    line.map(|l| format!(", line {l}")).unwrap_or_default()
 }
-
-impl std::error::Error for PresetError {}
 
 /// Finds a preset's text: an existing file path, else `assets/presets/NAME.toml` under the
 /// working directory, else a compiled-in preset. Returns (text, where it came from).
@@ -79,11 +70,11 @@ pub fn find(name_or_path: &str) -> Result<(String, String), PresetError> {
     if path.exists() && !path.is_dir() {
         return super::file::read_text(path)
             .map(|t| (t, name_or_path.to_string()))
-            .map_err(|message| PresetError {
-                source: name_or_path.to_string(),
+            .map_err(|e| PresetError {
+                file: name_or_path.to_string(),
                 line: None,
                 key: None,
-                message,
+                message: e.to_string(),
             });
     }
     let local = Path::new("assets/presets").join(format!("{name_or_path}.toml"));
@@ -97,7 +88,7 @@ pub fn find(name_or_path: &str) -> Result<(String, String), PresetError> {
     }
     let names: Vec<&str> = EMBEDDED.iter().map(|(n, _)| *n).collect();
     Err(PresetError {
-        source: name_or_path.to_string(),
+        file: name_or_path.to_string(),
         line: None,
         key: None,
         message: format!("no such file or preset; presets: {}", names.join(", ")),
@@ -117,7 +108,7 @@ fn line_of(text: &str, offset: usize) -> usize {
 pub fn parse(text: &str, source: &str) -> Result<Vec<(String, SettingValue, usize)>, PresetError> {
     use toml::de::{DeTable, DeValue};
     let err = |line, key: Option<String>, message: String| PresetError {
-        source: source.to_string(),
+        file: source.to_string(),
         line,
         key,
         message,
@@ -257,7 +248,7 @@ pub fn apply_text<S: Configurable>(
 ) -> Result<(), PresetError> {
     for (key, value, line) in parse(text, source)? {
         setup.apply_setting(&key, &value).map_err(|e| PresetError {
-            source: source.to_string(),
+            file: source.to_string(),
             line: Some(line),
             key: Some(e.field.clone()),
             message: e.message,
@@ -299,7 +290,7 @@ pub fn load_for<S: Configurable + Default>(
     let found = scene(&text);
     if found != wanted {
         return Err(PresetError {
-            source,
+            file: source,
             line: None,
             key: Some("scene".into()),
             message: format!("this preset is for the {found} scene; use `pounding {found}`"),

@@ -1,8 +1,13 @@
 //! A solve's line to whoever waits for it: a request to stop, and how far it has got. The
 //! window's solver threads hand one to each solve, cancel it when a newer request arrives, and
 //! read its progress while drawing; the command line and the tests use [`Control::never`].
+//!
+//! One solve reports the fraction of its steps done ([`Control::report`]); a job of many solves
+//! (a study, a sweep, an accuracy ladder) counts the solves it plans and finishes
+//! ([`Control::plan`], [`Control::tick`]). Both are read from the same control, and one cancel
+//! stops either.
 
-use std::sync::atomic::{AtomicBool, AtomicU32, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU32, AtomicUsize, Ordering};
 
 /// How many steps a solver loop may take between two looks at its [`Control`].
 pub const CHECK_EVERY: usize = 4096;
@@ -20,6 +25,9 @@ pub struct Control {
     /// (0: never).
     looks: AtomicU32,
     stop_at_look: AtomicU32,
+    /// A job of many solves: how many it planned and how many are done.
+    jobs_total: AtomicUsize,
+    jobs_done: AtomicUsize,
 }
 
 static NEVER: Control = Control::new();
@@ -39,6 +47,8 @@ impl Control {
             stages: AtomicU32::new(1),
             looks: AtomicU32::new(0),
             stop_at_look: AtomicU32::new(0),
+            jobs_total: AtomicUsize::new(0),
+            jobs_done: AtomicUsize::new(0),
         }
     }
 
@@ -105,6 +115,30 @@ impl Control {
     pub fn fraction(&self) -> f64 {
         f64::from(self.done_ppm.load(Ordering::Relaxed)) * 1e-6
     }
+
+    /// Announces `n` more solves of a job of many.
+    pub fn plan(&self, n: usize) {
+        if !std::ptr::eq(self, &NEVER) {
+            self.jobs_total.fetch_add(n, Ordering::Relaxed);
+        }
+    }
+
+    /// One planned solve is done.
+    pub fn tick(&self) {
+        if !std::ptr::eq(self, &NEVER) {
+            self.jobs_done.fetch_add(1, Ordering::Relaxed);
+        }
+    }
+
+    /// Solves done.
+    pub fn done(&self) -> usize {
+        self.jobs_done.load(Ordering::Relaxed)
+    }
+
+    /// Solves planned.
+    pub fn total(&self) -> usize {
+        self.jobs_total.load(Ordering::Relaxed)
+    }
 }
 
 #[cfg(test)]
@@ -125,5 +159,19 @@ mod tests {
         c.report(0.5).unwrap();
         assert!((c.fraction() - 0.375).abs() < 1e-6);
         assert_eq!(Control::never().fraction(), 0.0);
+    }
+
+    #[test]
+    fn a_job_of_many_solves_counts_what_it_planned_and_finished() {
+        let c = Control::new();
+        c.plan(3);
+        c.plan(2);
+        c.tick();
+        c.tick();
+        assert_eq!((c.done(), c.total()), (2, 5));
+        // The shared control nobody reads keeps no count.
+        Control::never().plan(7);
+        Control::never().tick();
+        assert_eq!((Control::never().done(), Control::never().total()), (0, 0));
     }
 }

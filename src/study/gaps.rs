@@ -1,7 +1,7 @@
 //! The gap that avoids pounding, record by record: each record's run without contact, solved in
 //! parallel, and its gaps against the code rules (see `model::building::gaps`).
 
-use super::{Cancelled, Progress, par_map};
+use super::{Cancelled, Control, par_map};
 use crate::model::building::gaps::{GapAssessment, assess};
 use crate::model::building::{BuildingScenario, ContactModel, solve};
 use crate::model::impact::SolveError;
@@ -21,7 +21,7 @@ pub struct RecordGaps {
 pub fn record_gaps(
     scenario: &BuildingScenario,
     motions: &[GroundMotion],
-    progress: &Progress,
+    progress: &Control,
 ) -> Result<Vec<Result<RecordGaps, SolveError>>, Cancelled> {
     let free = BuildingScenario {
         contact: ContactModel::None,

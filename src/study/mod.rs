@@ -1,8 +1,8 @@
 //! Studies: many solves run in parallel across cores, reported as figures (plots whose data is
 //! also their CSV) and findings (the numbers a claim is checked against).
 //!
-//! [`Progress`] is shared with whoever runs a study: the command line draws a progress bar from
-//! it, the window a progress bar and a cancel button.
+//! A [`Control`] is shared with whoever runs a study: the study counts its solves in it, the
+//! command line draws a progress bar from it, the window a progress bar and a cancel button.
 
 pub mod buildings;
 pub mod gaps;
@@ -14,46 +14,8 @@ use crate::model::building::BuildingScenario;
 use crate::model::motion::GroundMotion;
 use rayon::prelude::*;
 use serde::Serialize;
-use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
-/// Jobs planned and done, and a request to stop.
-#[derive(Debug, Default)]
-pub struct Progress {
-    done: AtomicUsize,
-    total: AtomicUsize,
-    cancel: AtomicBool,
-}
-
-impl Progress {
-    pub fn new() -> Self {
-        Self::default()
-    }
-    /// Announces `n` more jobs.
-    pub fn plan(&self, n: usize) {
-        self.total.fetch_add(n, Ordering::Relaxed);
-    }
-    pub fn tick(&self) {
-        self.done.fetch_add(1, Ordering::Relaxed);
-    }
-    pub fn done(&self) -> usize {
-        self.done.load(Ordering::Relaxed)
-    }
-    pub fn total(&self) -> usize {
-        self.total.load(Ordering::Relaxed)
-    }
-    /// Asks the running study to stop; jobs already started finish, no new one starts.
-    pub fn cancel(&self) {
-        self.cancel.store(true, Ordering::Relaxed);
-    }
-    pub fn cancelled(&self) -> bool {
-        self.cancel.load(Ordering::Relaxed)
-    }
-}
-
-/// A study stopped by [`Progress::cancel`].
-#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
-#[error("cancelled")]
-pub struct Cancelled;
+pub use crate::model::control::{Cancelled, Control};
 
 /// Why a study produced nothing.
 #[derive(Debug, thiserror::Error)]
@@ -83,7 +45,7 @@ pub enum StudyError {
 
 /// `f` over `items` on every core, counted in `progress`; stops early when cancelled.
 pub fn par_map<I: Sync, T: Send>(
-    progress: &Progress,
+    progress: &Control,
     items: &[I],
     f: impl Fn(&I) -> T + Sync,
 ) -> Result<Vec<T>, Cancelled> {
@@ -158,14 +120,14 @@ pub struct StudyOutput {
 
 /// What a study runs with.
 pub struct Context<'a> {
-    pub progress: &'a Progress,
+    pub progress: &'a Control,
     /// The building studies' ground motion and buildings (the paper's Section 4 by default).
     pub motion: Option<&'a GroundMotion>,
     pub buildings: BuildingScenario,
 }
 
 impl<'a> Context<'a> {
-    pub fn new(progress: &'a Progress) -> Self {
+    pub fn new(progress: &'a Control) -> Self {
         Context {
             progress,
             motion: None,

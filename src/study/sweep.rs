@@ -1,7 +1,7 @@
 //! One impact setting varied over a range: peak force, contact duration and e against it for each
 //! model. The command line's `pounding sweep` and the window's Parameter study run this.
 
-use super::{Cancelled, Progress, par_map};
+use super::{Cancelled, Control, par_map};
 use crate::io::settings::ImpactSetup;
 use crate::model::impact::{ModelKind, Workspace, summary_with};
 use crate::model::scenario::InputError;
@@ -145,7 +145,7 @@ pub fn run(
     setups: &[ImpactSetup],
     values: &[f64],
     models: &[ModelKind],
-    progress: &Progress,
+    progress: &Control,
 ) -> Result<Vec<Point>, Cancelled> {
     let jobs: Vec<(ModelKind, usize)> = models
         .iter()

@@ -320,7 +320,7 @@ impl ImpactResult {
 }
 
 /// Errors a solve can end with.
-#[derive(Debug, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SolveError {
     /// An input refused, by name.
     #[error(transparent)]

@@ -18,7 +18,7 @@ use super::{Context, Figure, Finding, Study, StudyError, finding, par_map};
 use crate::export::plot::{LinePlot, Series};
 use crate::io::preset;
 use crate::io::settings::ImpactSetup;
-use crate::model::impact::{ImpactResult, ModelKind, solve};
+use crate::model::impact::{ImpactResult, ModelKind, SolveError, solve};
 
 pub const STUDIES: &[Study] = &[
     Study {
@@ -132,11 +132,9 @@ pub(super) fn summarise(r: &ImpactResult) -> Summary {
 pub(super) fn summaries(
     ctx: &Context,
     jobs: &[(ModelKind, ImpactSetup)],
-) -> Result<Vec<Result<Summary, String>>, StudyError> {
+) -> Result<Vec<Result<Summary, SolveError>>, StudyError> {
     Ok(par_map(ctx.progress, jobs, |(m, s)| {
-        solve(*m, &s.scenario)
-            .map(|r| summarise(&r))
-            .map_err(|e| e.to_string())
+        solve(*m, &s.scenario).map(|r| summarise(&r))
     })?)
 }
 
@@ -196,7 +194,7 @@ pub(super) fn force_plot(title: &str, series: Vec<Series>) -> LinePlot {
 pub(super) fn curve(
     name: impl Into<String>,
     xs: &[f64],
-    points: &[Result<Summary, String>],
+    points: &[Result<Summary, SolveError>],
     f: impl Fn(&Summary) -> f64,
 ) -> Series {
     Series {
@@ -210,7 +208,11 @@ pub(super) fn curve(
     }
 }
 
-pub(super) fn failures(points: &[Result<Summary, String>], xs: &[f64], what: &str) -> Vec<String> {
+pub(super) fn failures(
+    points: &[Result<Summary, SolveError>],
+    xs: &[f64],
+    what: &str,
+) -> Vec<String> {
     points
         .iter()
         .zip(xs.iter().cycle())
