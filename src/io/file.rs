@@ -85,6 +85,12 @@ pub fn utf8(bytes: Vec<u8>) -> Result<String, FileError> {
     })
 }
 
+/// ", line N" where a line is known: how the errors of files with lines (presets, records,
+/// lessons) place it after the file's name.
+pub fn at_line(line: Option<usize>) -> String {
+    line.map(|l| format!(", line {l}")).unwrap_or_default()
+}
+
 /// At most [`EXCERPT_CHARS`] characters of `text`, with non-printing characters escaped and a
 /// note of how much was left out.
 pub fn excerpt(text: &str) -> String {

@@ -153,7 +153,7 @@ impl Units {
 
 /// A record that could not be read: which file, which line, why.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{file}{}: {message}", super::preset::at_line(*.line))]
+#[error("{file}{}: {message}", super::file::at_line(*.line))]
 pub struct MotionError {
     /// The file (or the record's name).
     pub file: String,

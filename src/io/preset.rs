@@ -49,18 +49,13 @@ pub const DEFAULT_PRESET: &str = "paper-base";
 
 /// A preset that could not be used: which file, which line, which key, why.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{file}{}{}: {message}", at_line(*.line), .key.as_ref().map(|k| format!(", {k}")).unwrap_or_default())]
+#[error("{file}{}{}: {message}", super::file::at_line(*.line), .key.as_ref().map(|k| format!(", {k}")).unwrap_or_default())]
 pub struct PresetError {
     /// The file, or the name of a compiled-in preset.
     pub file: String,
     pub line: Option<usize>,
     pub key: Option<String>,
     pub message: String,
-}
-
-/// ", line N" where a line is known.
-pub(crate) fn at_line(line: Option<usize>) -> String {
-    line.map(|l| format!(", line {l}")).unwrap_or_default()
 }
 
 /// Finds a preset's text: an existing file path, else `assets/presets/NAME.toml` under the

@@ -21,8 +21,6 @@ pub use context::{Context, Vocabulary};
 pub use expr::{Expr, ExprError, Value};
 pub use solve::{SceneSetup, Solved, solve_step};
 
-use std::fmt;
-
 /// Lessons shipped with Pounding Lab, compiled in (name = file stem).
 pub const EMBEDDED: &[(&str, &str)] = &[
     (
@@ -339,6 +337,7 @@ pub struct Task {
 
 /// A lesson that could not be read or checked: where, which field, why.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{file}{}{}: {message}", crate::io::file::at_line(*.line), .field.as_ref().map(|k| format!(", {k}")).unwrap_or_default())]
 pub struct LessonError {
     /// The file, or `lesson NAME` for a shipped one.
     pub file: String,
@@ -346,19 +345,6 @@ pub struct LessonError {
     /// The field: `step[2].task.goal`, `title`, ...
     pub field: Option<String>,
     pub message: String,
-}
-
-impl fmt::Display for LessonError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}", self.file)?;
-        if let Some(l) = self.line {
-            write!(f, ", line {l}")?;
-        }
-        if let Some(k) = &self.field {
-            write!(f, ", {k}")?;
-        }
-        write!(f, ": {}", self.message)
-    }
 }
 
 /// The shipped lessons' names.
