@@ -1,6 +1,7 @@
 //! Ground motion: a uniformly sampled acceleration record and the numbers that describe it.
 //! Parsing lives in `io::motion`; the synthetic generator in [`synthetic`].
 
+pub mod baseline;
 pub mod synthetic;
 
 /// Standard gravity [m/s^2].
