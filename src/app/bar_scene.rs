@@ -417,14 +417,16 @@ impl BarScene {
         }
         if self.compare {
             ui.horizontal(|ui| {
-                ui.label("energy of");
+                let label = ui.label("energy of").id;
                 egui::ComboBox::from_id_salt("energy-model")
                     .selected_text(self.energy_model.name())
                     .show_ui(ui, |ui| {
                         for (m, _) in &self.peers {
                             ui.selectable_value(&mut self.energy_model, *m, m.name());
                         }
-                    });
+                    })
+                    .response
+                    .labelled_by(label);
             });
         }
         let model = if self.compare {
