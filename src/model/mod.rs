@@ -8,6 +8,7 @@ pub mod contact;
 pub mod control;
 pub mod field;
 pub mod history;
+pub mod hysteresis;
 pub mod impact;
 pub mod material;
 pub mod motion;

@@ -1,0 +1,378 @@
+//! Storey springs that yield: the force a storey carries as a function of its drift history.
+//!
+//! - **elastic**: F = k u.
+//! - **bilinear** (kinematic hardening): F = b k u + (1 - b) F_ep, where F_ep is an
+//!   elastic-perfectly-plastic spring of stiffness k and yield force F_y, F_ep = k (u - u_p) with
+//!   |F_ep| <= F_y. So the force stays between the lines b k u + (1 - b) F_y and
+//!   b k u - (1 - b) F_y, rises with slope b k along them, and unloads with slope k. The plastic
+//!   drift u_p moves only while F_ep sits at +-F_y and the drift keeps going that way.
+//! - **Bouc-Wen**: F = b k u + (1 - b) k z with dz/du = 1 - |z|^n (beta sgn(u' z) + gamma) and
+//!   beta = gamma = 0.5 / u_y^n, u_y = F_y / k. Moving towards larger |z|, dz/du = 1 - (|z| / u_y)^n,
+//!   so z saturates at u_y; moving back, dz/du = 1 (the elastic unloading of the bilinear law). The
+//!   larger n, the sharper the knee, and the curve tends to the bilinear one.
+//!
+//! Both laws are rate independent: the state after a drift path depends on the path, not on how
+//! fast it was travelled, so a solver hands them the drift at the end of each straight piece of
+//! path. What a storey dissipates (its hysteretic energy) is the work done on it less what it
+//! stores: (1 - b) F_y |du_p| summed for the bilinear law, (1 - b) k z (du - dz) integrated for
+//! Bouc-Wen. The stored part is 1/2 b k u^2 + 1/2 (1 - b) k (u - u_p)^2 (bilinear) or
+//! 1/2 b k u^2 + 1/2 (1 - b) k z^2 (Bouc-Wen).
+
+/// Which law a storey spring follows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Hysteresis {
+    /// Linear: F = k u.
+    Elastic,
+    /// Bilinear with kinematic hardening.
+    Bilinear,
+    /// Bouc-Wen (smooth).
+    BoucWen,
+}
+
+impl Hysteresis {
+    /// Every law, in the order the front ends list them.
+    pub const ALL: [Hysteresis; 3] = [
+        Hysteresis::Elastic,
+        Hysteresis::Bilinear,
+        Hysteresis::BoucWen,
+    ];
+
+    /// The name the command line and presets use.
+    pub fn name(self) -> &'static str {
+        match self {
+            Hysteresis::Elastic => "elastic",
+            Hysteresis::Bilinear => "bilinear",
+            Hysteresis::BoucWen => "bouc-wen",
+        }
+    }
+
+    /// The law of that name.
+    pub fn from_name(s: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|h| h.name() == s)
+    }
+}
+
+/// One storey spring's law and its constants.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StoreyLaw {
+    /// Which law.
+    pub kind: Hysteresis,
+    /// Initial stiffness k [N/m].
+    pub stiffness_n_m: f64,
+    /// Yield force F_y [N] (unused by the elastic law).
+    pub yield_force_n: f64,
+    /// Post-yield stiffness ratio b, in [0, 1).
+    pub hardening: f64,
+    /// Bouc-Wen's exponent n (sharpness of the knee).
+    pub bouc_wen_n: f64,
+}
+
+/// The history a storey spring remembers.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct StoreyState {
+    /// The drift u [m].
+    pub drift_m: f64,
+    /// Bilinear: the plastic drift u_p [m]. Bouc-Wen: the hysteretic drift z [m].
+    pub inner_m: f64,
+    /// Energy dissipated so far [J].
+    pub dissipated_j: f64,
+}
+
+impl StoreyLaw {
+    /// An elastic spring of stiffness k.
+    pub fn elastic(stiffness_n_m: f64) -> Self {
+        StoreyLaw {
+            kind: Hysteresis::Elastic,
+            stiffness_n_m,
+            yield_force_n: f64::INFINITY,
+            hardening: 0.0,
+            bouc_wen_n: 2.0,
+        }
+    }
+
+    /// The yield drift u_y = F_y / k [m].
+    pub fn yield_drift_m(&self) -> f64 {
+        self.yield_force_n / self.stiffness_n_m
+    }
+
+    /// The force the spring carries in `s` [N].
+    pub fn force_n(&self, s: &StoreyState) -> f64 {
+        let (k, b) = (self.stiffness_n_m, self.hardening);
+        match self.kind {
+            Hysteresis::Elastic => k * s.drift_m,
+            Hysteresis::Bilinear => b * k * s.drift_m + (1.0 - b) * k * (s.drift_m - s.inner_m),
+            Hysteresis::BoucWen => b * k * s.drift_m + (1.0 - b) * k * s.inner_m,
+        }
+    }
+
+    /// The energy the spring stores in `s` [J]: what it would give back on unloading to zero
+    /// force along its elastic branch, plus the hardening spring's share.
+    pub fn stored_energy_j(&self, s: &StoreyState) -> f64 {
+        let (k, b, u) = (self.stiffness_n_m, self.hardening, s.drift_m);
+        match self.kind {
+            Hysteresis::Elastic => 0.5 * k * u * u,
+            Hysteresis::Bilinear => {
+                0.5 * b * k * u * u + 0.5 * (1.0 - b) * k * (u - s.inner_m).powi(2)
+            }
+            Hysteresis::BoucWen => 0.5 * b * k * u * u + 0.5 * (1.0 - b) * k * s.inner_m.powi(2),
+        }
+    }
+
+    /// The drifts between which the next move is elastic (slope k), for the bilinear law: the
+    /// yield points either side of the plastic drift. `None` for the other laws (elastic: always;
+    /// Bouc-Wen: never exactly).
+    pub fn elastic_range_m(&self, s: &StoreyState) -> Option<(f64, f64)> {
+        match self.kind {
+            Hysteresis::Bilinear => {
+                let uy = self.yield_drift_m();
+                Some((s.inner_m - uy, s.inner_m + uy))
+            }
+            _ => None,
+        }
+    }
+
+    /// The slope dF/du for a move in the direction of `direction` (its sign) from `s` [N/m].
+    pub fn tangent_n_m(&self, s: &StoreyState, direction: f64) -> f64 {
+        let (k, b) = (self.stiffness_n_m, self.hardening);
+        match self.kind {
+            Hysteresis::Elastic => k,
+            Hysteresis::Bilinear => {
+                let (lo, hi) = self.elastic_range_m(s).expect("bilinear");
+                let yielding =
+                    (direction > 0.0 && s.drift_m >= hi) || (direction < 0.0 && s.drift_m <= lo);
+                if yielding { b * k } else { k }
+            }
+            Hysteresis::BoucWen => b * k + (1.0 - b) * k * self.dz_du(s.inner_m, direction),
+        }
+    }
+
+    /// Moves the spring along a straight drift path from `s.drift_m` to `drift_m`.
+    pub fn advance(&self, s: &mut StoreyState, drift_m: f64) {
+        match self.kind {
+            Hysteresis::Elastic => s.drift_m = drift_m,
+            Hysteresis::Bilinear => self.advance_bilinear(s, drift_m),
+            Hysteresis::BoucWen => self.advance_bouc_wen(s, drift_m),
+        }
+    }
+
+    /// Exact: the elastic-perfectly-plastic part is elastic inside its range and flows at its
+    /// edge, so the end of a straight path fixes the plastic drift.
+    fn advance_bilinear(&self, s: &mut StoreyState, drift_m: f64) {
+        let uy = self.yield_drift_m();
+        let up = s.inner_m.clamp(drift_m - uy, drift_m + uy);
+        let fy_share = (1.0 - self.hardening) * self.yield_force_n;
+        s.dissipated_j += fy_share * (up - s.inner_m).abs();
+        s.inner_m = up;
+        s.drift_m = drift_m;
+    }
+
+    /// dz/du moving in the direction of `direction` at hysteretic drift z.
+    fn dz_du(&self, z: f64, direction: f64) -> f64 {
+        if direction * z > 0.0 {
+            let w = (z.abs() / self.yield_drift_m()).min(1.0);
+            1.0 - w.powf(self.bouc_wen_n)
+        } else {
+            1.0
+        }
+    }
+
+    /// Runge-Kutta in the drift, in pieces short enough to resolve the knee (its width is about
+    /// u_y / n), with the dissipation (1 - b) k z (du - dz) integrated alongside.
+    fn advance_bouc_wen(&self, s: &mut StoreyState, drift_m: f64) {
+        let du_total = drift_m - s.drift_m;
+        if du_total == 0.0 {
+            return;
+        }
+        let uy = self.yield_drift_m();
+        let piece = uy / (16.0 * self.bouc_wen_n.max(1.0));
+        let pieces = (du_total.abs() / piece).ceil().clamp(1.0, 1e6) as usize;
+        let du = du_total / pieces as f64;
+        let dir = du.signum();
+        let scale = (1.0 - self.hardening) * self.stiffness_n_m;
+        // y = (z, dissipated / scale): dz/du = g(z), d(e)/du = z (1 - g(z)).
+        let rate = |z: f64| {
+            let g = self.dz_du(z, dir);
+            (g, z * (1.0 - g))
+        };
+        let (mut z, mut e) = (s.inner_m, 0.0);
+        for _ in 0..pieces {
+            let (k1, e1) = rate(z);
+            let (k2, e2) = rate(z + 0.5 * du * k1);
+            let (k3, e3) = rate(z + 0.5 * du * k2);
+            let (k4, e4) = rate(z + du * k3);
+            z += du / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+            e += du / 6.0 * (e1 + 2.0 * e2 + 2.0 * e3 + e4);
+            // z cannot pass u_y: dz/du vanishes there.
+            z = z.clamp(-uy, uy);
+        }
+        s.inner_m = z;
+        s.dissipated_j += scale * e.max(0.0);
+        s.drift_m = drift_m;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const K: f64 = 2.0e7;
+    const FY: f64 = 1.0e5;
+    const B: f64 = 0.05;
+
+    fn law(kind: Hysteresis, n: f64) -> StoreyLaw {
+        StoreyLaw {
+            kind,
+            stiffness_n_m: K,
+            yield_force_n: FY,
+            hardening: B,
+            bouc_wen_n: n,
+        }
+    }
+
+    /// The drift path 0 -> +a -> -a -> +a in small straight pieces, with the force after each.
+    fn cycle(l: &StoreyLaw, a: f64, pieces: usize) -> (Vec<(f64, f64)>, StoreyState) {
+        let mut s = StoreyState::default();
+        let mut path = vec![(0.0, 0.0)];
+        let legs = [(0.0, a), (a, -a), (-a, a)];
+        for (from, to) in legs {
+            for i in 1..=pieces {
+                let u = from + (to - from) * i as f64 / pieces as f64;
+                l.advance(&mut s, u);
+                path.push((u, l.force_n(&s)));
+            }
+        }
+        (path, s)
+    }
+
+    #[test]
+    fn a_quasi_static_cycle_traces_the_bilinear_loop_with_corners_at_the_yield_force() {
+        let l = law(Hysteresis::Bilinear, 2.0);
+        let uy = FY / K;
+        let a = 4.0 * uy;
+        let (path, _) = cycle(&l, a, 400);
+        // The closed form of the loop, leg by leg: first loading k u up to (u_y, F_y), then
+        // F_y + b k (u - u_y); unloading from the top (a, F_top) with slope k down to the lower
+        // bound b k u - (1 - b) F_y, then along it; reloading likewise.
+        let top = FY + B * K * (a - uy);
+        let upper = |u: f64| B * K * u + (1.0 - B) * FY;
+        let lower = |u: f64| B * K * u - (1.0 - B) * FY;
+        let expected = |leg: usize, u: f64| match leg {
+            0 => (K * u).min(upper(u)),
+            1 => (top + K * (u - a)).max(lower(u)),
+            _ => (-top + K * (u + a)).min(upper(u)),
+        };
+        for (i, &(u, f)) in path.iter().enumerate().skip(1) {
+            let leg = (i - 1) / 400;
+            let want = expected(leg, u);
+            assert!(
+                (f - want).abs() < 1e-9 * FY,
+                "leg {leg} u = {u:e}: {f} against {want}"
+            );
+        }
+        // The corner: first yield exactly at F_y.
+        let mut s = StoreyState::default();
+        l.advance(&mut s, uy);
+        assert!((l.force_n(&s) - FY).abs() < 1e-9 * FY);
+        assert_eq!(l.tangent_n_m(&s, 1.0), B * K);
+        assert_eq!(l.tangent_n_m(&s, -1.0), K);
+    }
+
+    /// The area inside a drift path's force curve, by the trapezoid: independent of how the law
+    /// counts its dissipation.
+    fn work(path: &[(f64, f64)]) -> f64 {
+        path.windows(2)
+            .map(|w| 0.5 * (w[0].1 + w[1].1) * (w[1].0 - w[0].0))
+            .sum()
+    }
+
+    #[test]
+    fn the_bilinear_loop_area_is_the_hysteretic_energy() {
+        let l = law(Hysteresis::Bilinear, 2.0);
+        let uy = FY / K;
+        let a = 3.0 * uy;
+        // With a = 3 u_y every corner falls a third of the way along its leg: pieces that are a
+        // multiple of 3 put a path point on each, and the trapezoid is exact on the straight
+        // branches between them.
+        let (path, s) = cycle(&l, a, 2100);
+        // Work done over the path = dissipated + stored at the end (the last leg ends at +a).
+        let w = work(&path);
+        let total = s.dissipated_j + l.stored_energy_j(&s);
+        assert!(
+            (w - total).abs() < 1e-9 * w.abs(),
+            "work {w} against {total}"
+        );
+        // The elastic-perfectly-plastic share flows a - u_y on the first leg and 2 (a - u_y) on
+        // each of the next two (it unloads elastically over 2 u_y first), each at (1 - b) F_y.
+        let expected = (1.0 - B) * FY * 5.0 * (a - uy);
+        assert!(
+            (s.dissipated_j - expected).abs() < 1e-9 * expected,
+            "{} against {expected}",
+            s.dissipated_j
+        );
+    }
+
+    #[test]
+    fn bouc_wen_with_a_sharp_knee_approaches_the_bilinear_loop() {
+        let uy = FY / K;
+        let a = 4.0 * uy;
+        let (bilinear, sb) = cycle(&law(Hysteresis::Bilinear, 2.0), a, 800);
+        let mut last = f64::INFINITY;
+        for n in [2.0, 8.0, 40.0] {
+            let (smooth, sw) = cycle(&law(Hysteresis::BoucWen, n), a, 800);
+            let gap = bilinear
+                .iter()
+                .zip(&smooth)
+                .map(|(p, q)| (p.1 - q.1).abs())
+                .fold(0.0, f64::max);
+            assert!(
+                gap < last,
+                "n = {n}: the largest force gap {gap} did not shrink"
+            );
+            last = gap;
+            // The loop's dissipation converges too.
+            if n == 40.0 {
+                assert!(gap < 0.05 * FY, "n = 40: force gap {gap} N");
+                let rel = (sw.dissipated_j - sb.dissipated_j).abs() / sb.dissipated_j;
+                assert!(rel < 0.03, "n = 40: dissipation off by {rel}");
+            }
+        }
+    }
+
+    #[test]
+    fn the_bouc_wen_loop_area_is_its_hysteretic_energy() {
+        let l = law(Hysteresis::BoucWen, 2.0);
+        let a = 3.0 * FY / K;
+        let (path, s) = cycle(&l, a, 4000);
+        let w = work(&path);
+        let total = s.dissipated_j + l.stored_energy_j(&s);
+        // The trapezoid's own error on a curved branch: O(piece^2), about 1e-6 of the work here.
+        assert!(
+            (w - total).abs() < 1e-5 * w.abs(),
+            "work {w} against {total}"
+        );
+        assert!(s.dissipated_j > 0.0);
+    }
+
+    #[test]
+    fn a_very_large_yield_force_is_elastic_to_round_off() {
+        for kind in [Hysteresis::Bilinear, Hysteresis::BoucWen] {
+            let l = StoreyLaw {
+                yield_force_n: 1e30,
+                ..law(kind, 2.0)
+            };
+            let (path, s) = cycle(&l, 0.05, 100);
+            for (u, f) in path {
+                assert!((f - K * u).abs() <= 1e-9 * K * 0.05, "{kind:?}: {f} at {u}");
+            }
+            assert!(s.dissipated_j <= 1e-9 * 0.5 * K * 0.05 * 0.05, "{kind:?}");
+        }
+    }
+
+    #[test]
+    fn the_names_round_trip() {
+        for h in Hysteresis::ALL {
+            assert_eq!(Hysteresis::from_name(h.name()), Some(h));
+        }
+        assert_eq!(Hysteresis::from_name("plastic"), None);
+    }
+}
