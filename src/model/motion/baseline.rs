@@ -24,13 +24,7 @@ impl GroundMotion {
     /// The velocity and displacement at the record's end, from rest at t = 0, integrated exactly
     /// for an acceleration linear between samples.
     pub fn end_velocity_and_displacement(&self) -> (f64, f64) {
-        let h = self.dt_s;
-        let (mut v, mut d) = (0.0, 0.0);
-        for w in self.accel_m_s2.windows(2) {
-            d += h * v + h * h * (2.0 * w[0] + w[1]) / 6.0;
-            v += 0.5 * h * (w[0] + w[1]);
-        }
-        (v, d)
+        self.integrated().last().expect("one pair at least")
     }
 
     /// The record less the linear baseline that leaves its end velocity and displacement zero,
@@ -76,15 +70,8 @@ impl GroundMotion {
 
 #[cfg(test)]
 mod tests {
+    use super::super::tests::record;
     use super::*;
-
-    fn record(accel_m_s2: Vec<f64>, dt_s: f64) -> GroundMotion {
-        GroundMotion {
-            name: "test".into(),
-            dt_s,
-            accel_m_s2,
-        }
-    }
 
     /// Velocity and displacement at T by the trapezoid and Simpson's rule on a grid 1000 times
     /// finer than the record: an integration independent of the exact recurrence.

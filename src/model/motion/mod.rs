@@ -85,16 +85,22 @@ impl GroundMotion {
     /// twice, exactly for an acceleration linear between samples (as the building solver takes
     /// it), without baseline correction.
     pub fn displacement_m(&self) -> Vec<f64> {
+        self.integrated().map(|(_, d)| d).collect()
+    }
+
+    /// The ground's velocity and displacement at each sample, from rest at t = 0, exact for an
+    /// acceleration linear between samples (one pair at t = 0 even for an empty record).
+    pub fn integrated(&self) -> impl Iterator<Item = (f64, f64)> + '_ {
         let h = self.dt_s;
-        let (mut v, mut d) = (0.0, 0.0);
-        let mut out = Vec::with_capacity(self.accel_m_s2.len());
-        out.push(0.0);
-        for w in self.accel_m_s2.windows(2) {
-            d += h * v + h * h * (2.0 * w[0] + w[1]) / 6.0;
-            v += 0.5 * h * (w[0] + w[1]);
-            out.push(d);
-        }
-        out
+        let steps = self
+            .accel_m_s2
+            .windows(2)
+            .scan((0.0, 0.0), move |(v, d), w| {
+                *d += h * *v + h * h * (2.0 * w[0] + w[1]) / 6.0;
+                *v += 0.5 * h * (w[0] + w[1]);
+                Some((*v, *d))
+            });
+        std::iter::once((0.0, 0.0)).chain(steps)
     }
 
     /// Peak values, intensity and durations of the record.
@@ -187,7 +193,7 @@ fn spectrum_peak(m: &GroundMotion) -> (f64, f64) {
 mod tests {
     use super::*;
 
-    fn record(accel_m_s2: Vec<f64>, dt_s: f64) -> GroundMotion {
+    pub(super) fn record(accel_m_s2: Vec<f64>, dt_s: f64) -> GroundMotion {
         GroundMotion {
             name: "test".into(),
             dt_s,
