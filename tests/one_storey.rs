@@ -45,7 +45,18 @@ fn one_storey_buildings_reproduce_their_recorded_results_to_the_last_digit() {
     }
     let golden: serde_json::Map<String, serde_json::Value> =
         serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
-    for (model, values) in &golden {
+    // Every element the product has must have its record: a model missing from the file would
+    // otherwise never be checked.
+    assert_eq!(
+        golden.len(),
+        ContactModel::ALL.len(),
+        "the file records {:?}",
+        golden.keys().collect::<Vec<_>>()
+    );
+    for model in ContactModel::ALL.map(|m| m.name()) {
+        let values = golden
+            .get(model)
+            .unwrap_or_else(|| panic!("tests/golden/one-storey.json has no record of {model}"));
         let want: Vec<f64> = serde_json::from_value(values.clone()).unwrap();
         let got: Vec<f64> = serde_json::from_value(now[model].clone()).unwrap();
         assert_eq!(got.len(), want.len(), "{model}: impact count");

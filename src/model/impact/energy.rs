@@ -11,8 +11,9 @@
 //! - a damped contact's dissipation as the model integrated it.
 //!
 //! Models without waves (lumped masses, stereomechanics) have none. Finite elements keep no wave
-//! histories: their wave energy is what the other parts leave of the initial energy, and their
-//! total is the initial energy by construction.
+//! histories: their waves are the kinetic and strain energy of their own elements, counted at the
+//! samples the solver recorded it, less the rigid-body part. So for every model the total is a
+//! sum of independent counts, and a run that does not keep its initial energy shows it.
 
 use super::{ImpactResult, ModelKind};
 use crate::model::contact::ContactLaw;
@@ -59,11 +60,16 @@ pub fn energy_history(sc: &ImpactScenario, r: &ImpactResult, samples: usize) -> 
     if n == 0 {
         return EnergyHistory::default();
     }
-    let stride = (n / samples.max(2)).max(1);
-    let mut picks: Vec<usize> = (0..n).step_by(stride).collect();
-    if picks.last() != Some(&(n - 1)) {
-        picks.push(n - 1);
-    }
+    let picks = match &r.elastic_samples {
+        Some(e) => thinned(&e.index, samples),
+        None => thinned(&(0..n).collect::<Vec<_>>(), samples),
+    };
+    let elastic: Option<Vec<f64>> = r.elastic_samples.as_ref().map(|e| {
+        picks
+            .iter()
+            .map(|k| e.energy_j[e.index.binary_search(k).expect("picked from it")])
+            .collect()
+    });
     let [m1, m2] = r.masses_kg;
     let [v1, v2] = r.initial_velocities_m_s;
     let law = stored_law(r.model, sc);
@@ -97,12 +103,24 @@ pub fn energy_history(sc: &ImpactScenario, r: &ImpactResult, samples: usize) -> 
     }
     if r.waves.is_some() {
         h.wave_by_bar_j = Some(by_bar);
-    } else if r.model == ModelKind::Fe {
-        // No wave histories: the waves hold what the rest leaves of the initial energy.
-        let initial = r.energy.initial_j;
-        for k in 0..h.time_s.len() {
-            h.wave_j[k] = initial - h.rigid_kinetic_j[k] - h.contact_j[k] - h.dissipated_j[k];
+    } else if let Some(elastic) = elastic {
+        for (k, e) in elastic.into_iter().enumerate() {
+            h.wave_j[k] = e - h.rigid_kinetic_j[k];
         }
     }
     h
+}
+
+/// About `samples` of `indices`, evenly thinned, always with the first and the last.
+fn thinned(indices: &[usize], samples: usize) -> Vec<usize> {
+    let n = indices.len();
+    if n == 0 {
+        return vec![];
+    }
+    let stride = (n / samples.max(2)).max(1);
+    let mut picks: Vec<usize> = indices.iter().copied().step_by(stride).collect();
+    if picks.last() != indices.last() {
+        picks.push(indices[n - 1]);
+    }
+    picks
 }

@@ -10,7 +10,7 @@
 //! that the Sears model avoids.
 
 use super::timestep::contact_time_scale;
-use super::{Raw, SolveError, Warning};
+use super::{ElasticSamples, Raw, SolveError, Warning};
 use crate::model::bar::Bar;
 use crate::model::control::{CHECK_EVERY, Control};
 use crate::model::scenario::ImpactScenario;
@@ -62,6 +62,26 @@ impl Chain {
         }
     }
 
+    /// The leapfrog's own energy at a whole step: 1/2 m v_{n-1/2} v_{n+1/2} for each node (the
+    /// half-step velocities before and after the kick) plus the springs' strain at u_n. For a
+    /// linear chain the scheme conserves exactly this, so it is the count to check a run by.
+    fn energy_between_j(&self, before: &[f64]) -> f64 {
+        let kinetic: f64 = self
+            .mass
+            .iter()
+            .zip(before.iter().zip(&self.v))
+            .map(|(m, (a, b))| 0.5 * m * a * b)
+            .sum();
+        kinetic + self.strain_j()
+    }
+
+    fn strain_j(&self) -> f64 {
+        self.u
+            .windows(2)
+            .map(|p| 0.5 * self.k * (p[1] - p[0]).powi(2))
+            .sum()
+    }
+
     fn energy_j(&self) -> f64 {
         let kinetic: f64 = self
             .mass
@@ -69,12 +89,7 @@ impl Chain {
             .zip(&self.v)
             .map(|(m, v)| 0.5 * m * v * v)
             .sum();
-        let strain: f64 = self
-            .u
-            .windows(2)
-            .map(|p| 0.5 * self.k * (p[1] - p[0]).powi(2))
-            .sum();
-        kinetic + strain
+        kinetic + self.strain_j()
     }
 }
 
@@ -145,8 +160,18 @@ pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, Solve
     // delta at t = -h: the bars were approaching rigidly.
     let mut delta_prev = -sc.approach_velocity_m_s() * h;
     let mut step = 0usize;
+    // The elements' energy at about 1000 whole steps of the span estimate (a run that ends at
+    // separation stops well before it): an O(nodes) count each, a few per cent of the run.
+    let record_every = (((span / h).min(sc.solver.max_steps as f64) / 1000.0) as usize).max(1);
+    let mut elastic = ElasticSamples::default();
+    let mut before: [Vec<f64>; 2] = [Vec::new(), Vec::new()];
     // The half-step velocities start at v(-h/2) = v0: the bars move rigidly before contact.
     while step < n_stop {
+        let record = step.is_multiple_of(record_every);
+        if record {
+            before[0].clone_from(&left.v);
+            before[1].clone_from(&right.v);
+        }
         if step.is_multiple_of(CHECK_EVERY) {
             control.report(step as f64 / n_stop.min(sc.solver.max_steps) as f64)?;
             // A run longer than its span estimate still stops at the work budget.
@@ -175,6 +200,13 @@ pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, Solve
         let d1 = predicted - beta * f;
         left.v[n] -= h * f * left.inv_m[n];
         right.v[0] += h * f * right.inv_m[0];
+        if record {
+            // Sample `step` holds u_n: the velocities either side of it are now known.
+            elastic.index.push(step);
+            elastic
+                .energy_j
+                .push(left.energy_between_j(&before[0]) + right.energy_between_j(&before[1]));
+        }
         left.drift(h);
         right.drift(h);
         impulse += h * f;
@@ -225,9 +257,13 @@ pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, Solve
         sc.bar1.velocity_m_s - impulse / masses[0],
         sc.bar2.velocity_m_s + impulse / masses[1],
     ];
-    let vibration_j = left.energy_j() + right.energy_j()
-        - 0.5 * masses[0] * rigid[0].powi(2)
-        - 0.5 * masses[1] * rigid[1].powi(2);
+    let elastic_end = left.energy_j() + right.energy_j();
+    if elastic.index.last() != Some(&step) {
+        elastic.index.push(step);
+        elastic.energy_j.push(elastic_end);
+    }
+    let vibration_j =
+        elastic_end - 0.5 * masses[0] * rigid[0].powi(2) - 0.5 * masses[1] * rigid[1].powi(2);
     Ok(Raw {
         end_s: step as f64 * h,
         time_s,
@@ -243,6 +279,7 @@ pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, Solve
         steps: step,
         dt_s: h,
         refined_from_s: (h < sc.solver.dt_s).then_some(sc.solver.dt_s),
+        elastic_samples: Some(elastic),
         ..Raw::default()
     })
 }

@@ -273,12 +273,26 @@ pub struct ImpactResult {
     pub impulse_history_ns: Vec<f64>,
     /// Energy the contact has dissipated by each of `time_s` [J] (zeros for elastic contacts).
     pub dissipated_history_j: Vec<f64>,
+    /// Finite elements only: the kinetic and strain energy of both bars' own elements [J] at
+    /// some of `time_s` (indices into it), counted node by node and spring by spring, so it
+    /// checks the energy the other parts report instead of following from them.
+    pub elastic_samples: Option<ElasticSamples>,
     /// End of the simulated span [s].
     pub end_s: f64,
     /// What the reader must know besides the numbers.
     pub warnings: Vec<Warning>,
     /// What the solve cost.
     pub stats: SolveStats,
+}
+
+/// The elastic energy of a discretised model's bars at some of its samples.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct ElasticSamples {
+    /// Indices into the result's `time_s`, increasing.
+    pub index: Vec<usize>,
+    /// Kinetic plus strain energy of both bars at those samples [J] (the rigid-body motion's
+    /// kinetic energy included).
+    pub energy_j: Vec<f64>,
 }
 
 /// The bars' rigid-body velocities after the contact has passed impulse `j`: bar 1 slowed by
@@ -398,6 +412,8 @@ pub(crate) struct Raw {
     pub impulse_history_ns: Vec<f64>,
     /// Energy a damped contact has dissipated by each sample (empty: none).
     pub dissipated_history_j: Vec<f64>,
+    /// The bars' elastic energy at some samples, where the model counts it (finite elements).
+    pub elastic_samples: Option<ElasticSamples>,
     pub peak_override_n: Option<Option<f64>>,
     pub sears: Option<SearsDiagnostics>,
     pub warnings: Vec<Warning>,
@@ -816,6 +832,7 @@ fn finish(model: ModelKind, sc: &ImpactScenario, raw: Raw) -> ImpactResult {
         sears: raw.sears,
         impulse_history_ns,
         dissipated_history_j,
+        elastic_samples: raw.elastic_samples,
         waves: raw.waves,
         end_s: raw.end_s,
         warnings: raw.warnings,
