@@ -210,14 +210,16 @@ fn slab_bars(sc: &BuildingScenario) -> ImpactScenario {
         velocity_m_s,
         end: EndShape::Flat,
     };
-    let mut bars = ImpactScenario::default();
-    bars.bar1 = bar(slabs[0], 1.0);
-    bars.bar2 = bar(slabs[1], 0.0);
+    let mut bars = ImpactScenario {
+        bar1: bar(slabs[0], 1.0),
+        bar2: bar(slabs[1], 0.0),
+        reading: Reading::Paper,
+        ..Default::default()
+    };
     bars.contact.law = LawKind::Linear;
     bars.contact.stiffness = Some(sc.level_stiffness(&level));
     bars.contact.zone_length_m = Some(sc.level_zone_length(&level));
     bars.contact.zone_scale = 1.0;
-    bars.reading = Reading::Paper;
     bars.solver.dt_s = 1e-6;
     bars
 }
