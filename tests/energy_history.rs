@@ -75,8 +75,7 @@ fn each_bars_rigid_and_wave_energy_equals_its_field_energy_through_the_run() {
         let bars = [sc.bar1, sc.bar2];
         let scale = relative_j(&sc, &r);
         let initial = r.energy.initial_j;
-        for k in 0..h.time_s.len() {
-            let t = h.time_s[k];
+        for (k, &t) in h.time_s.iter().enumerate() {
             let j = r.impulse_at(t);
             let u = r.rigid_velocities_at(t);
             let mut total_fields = 0.0;
