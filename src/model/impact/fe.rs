@@ -10,7 +10,7 @@
 //! that the Sears model avoids.
 
 use super::timestep::contact_time_scale;
-use super::{ElasticSamples, Raw, SolveError, Warning};
+use super::{ContactSpan, ElasticSamples, Raw, SolveError, Warning};
 use crate::model::bar::Bar;
 use crate::model::control::{CHECK_EVERY, Control};
 use crate::model::scenario::ImpactScenario;
@@ -155,7 +155,7 @@ pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, Solve
     };
     let (mut time_s, mut force_n, mut approach_m) = (vec![0.0], vec![0.0], vec![0.0]);
     let mut impulses = vec![0.0];
-    let mut contacts: Vec<(f64, Option<f64>, f64)> = vec![(0.0, None, 0.0)];
+    let mut contacts = vec![ContactSpan::opening(0.0)];
     let (mut on, mut impulse, mut contact_j0, mut delta) = (true, 0.0, 0.0, 0.0);
     // delta at t = -h: the bars were approaching rigidly.
     let mut delta_prev = -sc.approach_velocity_m_s() * h;
@@ -215,13 +215,14 @@ pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, Solve
         let mut separated = false;
         if on && d1 <= 0.0 {
             let te = t - h * d1 / (d1 - delta);
-            let c = contacts.last_mut().expect("open contact");
-            c.1 = Some(te);
-            c.2 = impulse - contact_j0;
+            contacts
+                .last_mut()
+                .expect("open contact")
+                .close(te, impulse - contact_j0);
             on = false;
             separated = true;
         } else if !on && d1 > 0.0 {
-            contacts.push((t - h * d1 / (d1 - delta), None, 0.0));
+            contacts.push(ContactSpan::opening(t - h * d1 / (d1 - delta)));
             contact_j0 = impulse - h * f;
             on = true;
         }

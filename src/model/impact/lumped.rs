@@ -6,7 +6,7 @@
 //! check of them rather than a copy.
 
 use super::timestep::contact_time_scale;
-use super::{Raw, SolveError, Warning};
+use super::{ContactSpan, Raw, SolveError, Warning};
 use crate::model::contact::ContactLaw;
 use crate::model::control::{CHECK_EVERY, Control};
 use crate::model::root::bracket;
@@ -195,7 +195,7 @@ fn integrate(sc: &ImpactScenario, link: Link, control: &Control) -> Result<Raw, 
         time_s,
         force_n,
         approach_m,
-        contacts: vec![(0.0, Some(end_contact), impulse)],
+        contacts: vec![ContactSpan::closed(0.0, end_contact, impulse)],
         impulse_ns: impulse,
         impulse_history_ns: impulses,
         dissipated_history_j: dissipated,
@@ -256,7 +256,7 @@ pub(crate) fn solve_stereo(sc: &ImpactScenario) -> Raw {
         time_s: vec![0.0, 0.0],
         force_n: vec![0.0, 0.0],
         approach_m: vec![0.0, 0.0],
-        contacts: vec![(0.0, Some(0.0), impulse)],
+        contacts: vec![ContactSpan::closed(0.0, 0.0, impulse)],
         impulse_ns: impulse,
         impulse_history_ns: vec![0.0, impulse],
         dissipated_history_j: vec![0.0, 0.5 * m * w * w * (1.0 - e * e)],

@@ -393,13 +393,51 @@ impl From<Cancelled> for SolveError {
 }
 
 /// What a model hands to [`finish`].
+/// One contact interval as a solver records it: when it began, when it ended (`None` while it is
+/// still open) and the impulse it passed; its peak is taken from the force samples later.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct ContactSpan {
+    /// When the bars began to touch [s].
+    pub start_s: f64,
+    /// When they parted [s]; `None` while the contact is open.
+    pub end_s: Option<f64>,
+    /// The impulse the contact passed [N s] (set when it closes).
+    pub impulse_ns: f64,
+}
+
+impl ContactSpan {
+    /// A contact that opens at `start_s`.
+    pub fn opening(start_s: f64) -> Self {
+        ContactSpan {
+            start_s,
+            end_s: None,
+            impulse_ns: 0.0,
+        }
+    }
+
+    /// A contact over [start_s, end_s] that passed `impulse_ns`.
+    pub fn closed(start_s: f64, end_s: f64, impulse_ns: f64) -> Self {
+        ContactSpan {
+            start_s,
+            end_s: Some(end_s),
+            impulse_ns,
+        }
+    }
+
+    /// Closes it at `end_s`, having passed `impulse_ns`.
+    pub fn close(&mut self, end_s: f64, impulse_ns: f64) {
+        self.end_s = Some(end_s);
+        self.impulse_ns = impulse_ns;
+    }
+}
+
 #[derive(Debug, Default)]
 pub(crate) struct Raw {
     pub time_s: Vec<f64>,
     pub force_n: Vec<f64>,
     pub approach_m: Vec<f64>,
-    /// (start, end, impulse) of each contact; peaks are taken from the samples.
-    pub contacts: Vec<(f64, Option<f64>, f64)>,
+    /// Each contact; peaks are taken from the samples.
+    pub contacts: Vec<ContactSpan>,
     pub impulse_ns: f64,
     pub masses_kg: [f64; 2],
     pub vibration_j: f64,
@@ -457,16 +495,16 @@ pub fn outside_validated_range(sc: &ImpactScenario) -> Vec<Warning> {
 
 /// Closes a contact still open at the end of the run: its impulse so far, and a warning.
 pub(crate) fn close_open_contact(
-    contacts: &mut [(f64, Option<f64>, f64)],
+    contacts: &mut [ContactSpan],
     impulse_ns: f64,
     contact_start_impulse_ns: f64,
     end_s: f64,
     warnings: &mut Vec<Warning>,
 ) {
     if let Some(c) = contacts.last_mut()
-        && c.1.is_none()
+        && c.end_s.is_none()
     {
-        c.2 = impulse_ns - contact_start_impulse_ns;
+        c.impulse_ns = impulse_ns - contact_start_impulse_ns;
         warnings.push(Warning::ContactOpenAtEnd { end_s });
     }
 }
@@ -515,7 +553,11 @@ impl ImpactResult {
 fn contact_event(
     time: Times,
     force: &[f64],
-    (start_s, end_s, impulse_ns): (f64, Option<f64>, f64),
+    ContactSpan {
+        start_s,
+        end_s,
+        impulse_ns,
+    }: ContactSpan,
 ) -> ContactEvent {
     let peak_force_n = peak_between(time, force, start_s, end_s.unwrap_or(f64::INFINITY));
     let (loaded_start_s, loaded_end_s) = loaded_interval(time, force, start_s, end_s, peak_force_n);
@@ -546,7 +588,7 @@ fn restitution_after(sc: &ImpactScenario, [m1, m2]: [f64; 2], j: f64) -> f64 {
 /// (so a summary and a full result agree bit for bit).
 pub(crate) fn summarize(
     sc: &ImpactScenario,
-    contacts: &[(f64, Option<f64>, f64)],
+    contacts: &[ContactSpan],
     time: Times,
     force: &[f64],
     impulse_ns: f64,
@@ -555,7 +597,7 @@ pub(crate) fn summarize(
     let first = contacts.first().map(|&c| contact_event(time, force, c));
     let peak = contacts
         .iter()
-        .map(|&(start, end, _)| peak_between(time, force, start, end.unwrap_or(f64::INFINITY)))
+        .map(|c| peak_between(time, force, c.start_s, c.end_s.unwrap_or(f64::INFINITY)))
         .fold(0.0, f64::max);
     ImpactSummary {
         impact: sc.approach_velocity_m_s() > 0.0,
@@ -570,7 +612,7 @@ pub(crate) fn summarize(
         ),
         impulse_ns,
         contacts: contacts.len(),
-        recontact_s: contacts.get(1).map(|c| c.0),
+        recontact_s: contacts.get(1).map(|c| c.start_s),
     }
 }
 

@@ -24,7 +24,7 @@
 //! integrated up to (from) that instant, so durations are not quantised to the grid.
 
 use super::timestep::{choose_step, contact_time_scale};
-use super::{Raw, SearsDiagnostics, SolveError, Times, Warning, peak_between};
+use super::{ContactSpan, Raw, SearsDiagnostics, SolveError, Times, Warning, peak_between};
 use crate::model::contact::{ContactLaw, LawKind};
 use crate::model::control::{CHECK_EVERY, Control};
 use crate::model::field::{BarWaves, History};
@@ -92,7 +92,7 @@ pub struct Workspace {
     phi: Series,
     force: Vec<f64>,
     delta: Vec<f64>,
-    contacts: Vec<(f64, Option<f64>, f64)>,
+    contacts: Vec<ContactSpan>,
 }
 
 /// What a run leaves besides the workspace's histories.
@@ -228,45 +228,60 @@ fn theta_for_squared(z2: f64) -> f64 {
     0.5 + 0.5 * (0.25 * z2).min(1.0)
 }
 
-/// Steps an impact through `ws`: its histories of Psi, Phi, force and approach, its contacts.
-fn run(sc: &ImpactScenario, control: &Control, ws: &mut Workspace) -> Result<Run, SolveError> {
-    let law = sc.contact_law()?;
-    let lay = layout(sc)?;
-    let bars = [sc.bar1, sc.bar2];
-    let z = bars.map(|b| b.impedance_n_s_m());
+/// What the step choice fixes for a run: the step, the span it expects, the histories' room and
+/// whether look-ups may be cubic.
+struct Plan {
+    h: f64,
+    expected_s: f64,
+    capacity: usize,
+    smooth: bool,
+    warnings: Vec<Warning>,
+    refined_from_s: Option<f64>,
+}
+
+/// The step from the contact's time scale and the bars' round trips (a bar rings with its round
+/// trip during the contact: the step resolves that too).
+fn plan(sc: &ImpactScenario, law: &ContactLaw, lay: &Layout, z: [f64; 2]) -> Plan {
     let w = sc.approach_velocity_m_s();
     let [m1, m2] = lay.masses_kg;
     let m_eff = m1 * m2 / (m1 + m2);
     let z_eff = z[0] * z[1] / (z[0] + z[1]);
-    let mut scale = contact_time_scale(&law, w, m_eff, z_eff);
-    // A bar rings with its round trip during the contact: resolve that too.
+    let mut scale = contact_time_scale(law, w, m_eff, z_eff);
     let t_short = lay.round_trip_s[0].min(lay.round_trip_s[1]);
     scale.resolve_s = scale.resolve_s.min(0.5 * t_short);
     let t_long = lay.round_trip_s[0].max(lay.round_trip_s[1]);
     let choice = choose_step(sc, scale, 2.0 * scale.lumped_duration_s.max(t_long));
     let h = choice.dt_s;
-    let mut warnings: Vec<Warning> = choice.warning.into_iter().collect();
-
     // Room for the whole run up front (twice the likely span): a vector that grows mid-run
     // copies all its history.
-    let expected = if sc.solver.window_s > 0.0 {
+    let expected_s = if sc.solver.window_s > 0.0 {
         sc.solver.window_s
     } else {
         2.0 * scale.lumped_duration_s.max(t_long)
     };
-    let capacity = ((expected / h) as usize + 16).min(sc.solver.max_steps + 2);
-    // Where the step resolves the contact's rise the histories are smooth on the grid and cubic
-    // look-ups keep the error small; where it does not, the force jumps within a step and only
-    // monotone (linear) look-ups avoid overshoot at the echoes of those jumps.
-    let smooth = h <= 0.5 * scale.resolve_s;
+    Plan {
+        h,
+        expected_s,
+        capacity: ((expected_s / h) as usize + 16).min(sc.solver.max_steps + 2),
+        // Where the step resolves the contact's rise the histories are smooth on the grid and
+        // cubic look-ups keep the error small; where it does not, the force jumps within a step
+        // and only monotone (linear) look-ups avoid overshoot at the echoes of those jumps.
+        smooth: h <= 0.5 * scale.resolve_s,
+        warnings: choice.warning.into_iter().collect(),
+        refined_from_s: choice.refined_from_s,
+    }
+}
+
+/// Each bar's look-ups: its recursion over the round trip and its displacement taps at the lags.
+fn channels(lay: &Layout, z: [f64; 2], plan: &Plan) -> [Channel; 2] {
     let tap = |lag: f64| {
-        if smooth {
-            Tap::new(lag, h)
+        if plan.smooth {
+            Tap::new(lag, plan.h)
         } else {
-            Tap::linear(lag, h)
+            Tap::linear(lag, plan.h)
         }
     };
-    let channels: [Channel; 2] = std::array::from_fn(|i| {
+    std::array::from_fn(|i| {
         let recur = tap(lay.round_trip_s[i]);
         let taps = lay.lags_s[i].map(tap);
         let gain = 1.0 / (1.0 - recur.newest_weight());
@@ -278,33 +293,296 @@ fn run(sc: &ImpactScenario, control: &Control, ws: &mut Workspace) -> Result<Run
             gain,
             top: taps[0].newest_weight() + taps[1].newest_weight(),
         }
-    });
-    let Workspace {
-        psi,
-        phi,
-        force,
-        delta,
-        contacts,
-    } = ws;
-    // Each Psi starts with zeros for the history before t = 0, as far back as its look-ups reach
-    // (up to the run's expected length): the look-ups then read stored samples from the first
-    // step on, without a branch. Only the look-ups read Psi, so the padding is invisible.
+    })
+}
+
+/// Empties the workspace for a run of about `capacity` steps and returns each Psi's padding.
+/// Each Psi starts with zeros for the history before t = 0, as far back as its look-ups reach (up
+/// to the run's expected length): the look-ups then read stored samples from the first step on,
+/// without a branch. Only the look-ups read Psi, so the padding is invisible.
+fn reset(ws: &mut Workspace, channels: &[Channel; 2], capacity: usize) -> [usize; 2] {
     let pad = [0, 1].map(|i| channels[i].steady_from().min(capacity));
-    for (series, pad) in psi.iter_mut().zip(pad) {
+    for (series, pad) in ws.psi.iter_mut().zip(pad) {
         series.clear();
         series.reserve(capacity + pad);
         series.push_zeros(pad + 1);
     }
-    phi.clear();
-    phi.reserve(capacity);
-    phi.push(0.0);
-    for v in [&mut *force, &mut *delta] {
+    ws.phi.clear();
+    ws.phi.reserve(capacity);
+    ws.phi.push(0.0);
+    for v in [&mut ws.force, &mut ws.delta] {
         v.clear();
         v.reserve(capacity);
         v.push(0.0);
     }
-    contacts.clear();
+    ws.contacts.clear();
+    pad
+}
 
+/// The least room, in samples, among the histories (each holds n + 1 samples at step n, after
+/// its padding).
+fn room(ws: &Workspace, pad: [usize; 2]) -> usize {
+    (ws.psi[0].capacity() - pad[0])
+        .min(ws.psi[1].capacity() - pad[1])
+        .min(ws.phi.capacity())
+        .min(ws.force.capacity())
+        .min(ws.delta.capacity())
+}
+
+/// A run's pace: its step, the steps it expects and the most it may take.
+struct Pace {
+    h: f64,
+    expected_steps: f64,
+    max_steps: usize,
+}
+
+/// The bookkeeping a run does every so often rather than every step: the step budget, progress
+/// and cancelling, and room in the histories. Returns the next step at which to come back (one
+/// comparison a step for the three).
+fn checkpoint(
+    n: usize,
+    pace: &Pace,
+    control: &Control,
+    ws: &mut Workspace,
+    pad: [usize; 2],
+    cap: &mut usize,
+) -> Result<usize, SolveError> {
+    if n >= pace.max_steps {
+        return Err(SolveError::Budget {
+            max_steps: pace.max_steps,
+            dt_s: pace.h,
+            reached_s: n as f64 * pace.h,
+        });
+    }
+    if n.is_multiple_of(CHECK_EVERY) {
+        control.report(n as f64 / pace.expected_steps)?;
+    }
+    if n + 2 > *cap {
+        let more = (n + 2).max(1024);
+        for v in ws.psi.iter_mut().chain(std::iter::once(&mut ws.phi)) {
+            v.reserve(more);
+        }
+        ws.force.reserve(more);
+        ws.delta.reserve(more);
+        *cap = room(ws, pad);
+    }
+    Ok(((n / CHECK_EVERY + 1) * CHECK_EVERY)
+        .min(pace.max_steps)
+        .min(*cap - 1))
+}
+
+/// The newest samples a step starts from, carried in registers: read back from their vectors
+/// they would wait on the store of the step before.
+#[derive(Clone, Copy)]
+struct Newest {
+    /// Force F_n.
+    force: f64,
+    /// Impulse Phi_n.
+    phi: f64,
+    /// Overlap delta_n.
+    delta: f64,
+}
+
+/// What is fixed for every step of a run: the law, the step, and c0, the look-ups' weight on
+/// the newest impulse (the lags fix it).
+struct Stepper<'a> {
+    law: &'a ContactLaw,
+    h: f64,
+    c0: f64,
+    /// (1.5 k c0 h)^2: z^2 per unit of overlap, for theta without a square root.
+    z2_per_delta: f64,
+}
+
+/// A step's outcome: the overlap, force and impulse at its end, and the theta it used.
+struct Advanced {
+    delta: f64,
+    force: f64,
+    phi: f64,
+    theta: f64,
+}
+
+impl Stepper<'_> {
+    /// The step from t_n to t_n+1 with the contact law on: `wv` is the overlap the bars' known
+    /// motion alone would give, `free` the same less the newest impulse's share.
+    #[inline(always)]
+    fn advance(&self, n: usize, delta: &[f64], wv: f64, free: f64, now: Newest) -> Advanced {
+        let (law, h, c0) = (self.law, self.h, self.c0);
+        if c0 == 0.0 {
+            // Explicit: delta_{n+1} depends on history alone; Phi by the trapezoid rule.
+            let force = law.force(wv);
+            return Advanced {
+                delta: wv,
+                force,
+                phi: now.phi + 0.5 * h * (now.force + force),
+                theta: 0.5,
+            };
+        }
+        // The overlap at the end of the step, extrapolated by a cubic through four steps ending
+        // two before it (taken three steps on: within 15 (h / T)^4 of it, relatively, on a
+        // contact of time scale T): its square root starts Newton on s = sqrt(delta), and it
+        // gives the step's stiffness for theta. Leaving out the last two steps keeps all of it
+        // off the chain from one step to the next: it is ready before the step's look-ups are.
+        // The overlap, not its root, is extrapolated because it is smooth at onset (delta ~ w t
+        // there, where sqrt(delta) has no Taylor series). Elsewhere (linear law, the first
+        // steps) the stiffness is the law's at the larger of the overlap now and the one the
+        // step heads for.
+        let guess = if law.kind == LawKind::Hertz && n >= 5 {
+            let [a, b, c, d] = [delta[n - 2], delta[n - 3], delta[n - 4], delta[n - 5]];
+            if a > 0.0 && b > 0.0 && c > 0.0 && d > 0.0 {
+                20.0 * a - 45.0 * b + 36.0 * c - 10.0 * d
+            } else {
+                -1.0
+            }
+        } else {
+            -1.0
+        };
+        // theta from z^2 = (1.5 k c0 h)^2 delta: no square root on the way to it.
+        let theta = if guess > 0.0 {
+            theta_for_squared(self.z2_per_delta * guess)
+        } else {
+            theta_for(c0 * h * law.tangent(now.delta.max(free)))
+        };
+        let p = now.phi + (1.0 - theta) * h * now.force;
+        let (beta, rhs) = (c0 * theta * h, wv - c0 * p);
+        let (d1, f1);
+        if law.kind == LawKind::Hertz && rhs > 0.0 {
+            // u = (rhs - G(s0)) / G'(s0), arranged so that only p waits on the step before.
+            let step = (guess > 0.0).then(|| law.sqrt_step(beta, guess));
+            let root = step.and_then(|st| st.root((wv - st.g0) * st.inv - (c0 * st.inv) * p));
+            let s1 = match root {
+                Some(s1) => s1,
+                None => law.solve_implicit_sqrt(beta, rhs, step.map_or(-1.0, |st| st.s0)),
+            };
+            d1 = s1 * s1;
+            f1 = d1 * (law.stiffness * s1);
+        } else {
+            d1 = law.solve_implicit(beta, rhs, now.delta);
+            f1 = law.force(d1);
+        }
+        Advanced {
+            delta: d1,
+            force: f1,
+            phi: p + theta * h * f1,
+            theta,
+        }
+    }
+
+    /// The cubic (linear in the first steps) through the overlaps at t_n-2 .. t_n, with
+    /// `next` at t_n+1.
+    fn local(n: usize, delta: &[f64], now: Newest, next: f64) -> LocalPoly {
+        LocalPoly {
+            y: [
+                if n >= 2 { delta[n - 2] } else { 0.0 },
+                if n >= 1 { delta[n - 1] } else { 0.0 },
+                now.delta,
+                next,
+            ],
+            cubic: n >= 2,
+        }
+    }
+
+    /// The contact ends inside (t_n, t_n+1]: when, and the step's impulse and overlap at its end.
+    fn separation(
+        &self,
+        n: usize,
+        ws: &Workspace,
+        wv: f64,
+        now: Newest,
+        step: &Advanced,
+    ) -> (f64, f64, f64) {
+        let (h, c0) = (self.h, self.c0);
+        if c0 == 0.0 {
+            let poly = Self::local(n, &ws.delta, now, step.delta);
+            let x = poly.root();
+            let phi1 = now.phi + poly.integrate_force(self.law, 0.0, x, h);
+            return (n as f64 * h + x * h, phi1, step.delta);
+        }
+        // A theta sub-step of length s = x h ending where delta = 0 (so F = 0 there):
+        // g(x) = W(t_n + x h) - c0 (Phi_n + (1 - theta) x h F_n) = 0, with W = delta + c0 Phi
+        // smooth and known on the grid, so a cubic through W_{n-2..n+1} locates it.
+        let theta = step.theta;
+        let w_at = |k: usize| ws.delta[k] + c0 * ws.phi.get(k);
+        let g = |x: f64, wk: f64| wk - c0 * (now.phi + (1.0 - theta) * x * h * now.force);
+        let poly = LocalPoly {
+            y: [
+                if n >= 2 { g(-2.0, w_at(n - 2)) } else { 0.0 },
+                if n >= 1 { g(-1.0, w_at(n - 1)) } else { 0.0 },
+                g(0.0, w_at(n)),
+                g(1.0, wv),
+            ],
+            cubic: n >= 2,
+        };
+        if poly.y[3] <= 0.0 {
+            let x = poly.root();
+            let phi1 = now.phi + x * h * (1.0 - theta) * now.force;
+            (n as f64 * h + x * h, phi1, wv - c0 * phi1)
+        } else {
+            ((n + 1) as f64 * h, step.phi, step.delta)
+        }
+    }
+
+    /// A contact begins inside (t_n, t_n+1]: when, and the step redone from there.
+    fn onset(
+        &self,
+        n: usize,
+        delta: &[f64],
+        free: f64,
+        now: Newest,
+        step: &Advanced,
+    ) -> (f64, Advanced) {
+        let (law, h, c0) = (self.law, self.h, self.c0);
+        if c0 == 0.0 {
+            let poly = Self::local(n, delta, now, step.delta);
+            let x = poly.root();
+            let phi = now.phi + poly.integrate_force(law, x, 1.0, h);
+            return (
+                n as f64 * h + x * h,
+                Advanced {
+                    phi,
+                    delta: step.delta,
+                    force: step.force,
+                    theta: step.theta,
+                },
+            );
+        }
+        let s0 = h * (-now.delta) / (free - now.delta);
+        let hp = h - s0;
+        let th = if c0 * hp * law.tangent(free) > 0.5 {
+            1.0
+        } else {
+            0.5
+        };
+        let d1 = law.solve_implicit(c0 * th * hp, free, now.delta);
+        let f1 = law.force(d1);
+        (
+            n as f64 * h + s0,
+            Advanced {
+                delta: d1,
+                force: f1,
+                phi: now.phi + th * hp * f1,
+                theta: step.theta,
+            },
+        )
+    }
+}
+
+/// Steps an impact through `ws`: its histories of Psi, Phi, force and approach, its contacts.
+fn run(sc: &ImpactScenario, control: &Control, ws: &mut Workspace) -> Result<Run, SolveError> {
+    let law = sc.contact_law()?;
+    let lay = layout(sc)?;
+    let z = [sc.bar1, sc.bar2].map(|b| b.impedance_n_s_m());
+    let w = sc.approach_velocity_m_s();
+    let m_eff = lay.masses_kg[0] * lay.masses_kg[1] / (lay.masses_kg[0] + lay.masses_kg[1]);
+    let plan = plan(sc, &law, &lay, z);
+    let channels = channels(&lay, z, &plan);
+    let pad = reset(ws, &channels, plan.capacity);
+    let Plan {
+        h,
+        expected_s,
+        mut warnings,
+        refined_from_s,
+        ..
+    } = plan;
     let n_stop = if sc.solver.window_s > 0.0 {
         (sc.solver.window_s / h).ceil() as usize
     } else {
@@ -312,220 +590,93 @@ fn run(sc: &ImpactScenario, control: &Control, ws: &mut Workspace) -> Result<Run
     };
     let mut contact_phi0 = 0.0;
     let mut on = true;
-    contacts.push((0.0, None, 0.0));
+    ws.contacts.push(ContactSpan::opening(0.0));
     let mut n = 0usize;
     // c0 depends only on the lags, so it is the same every step.
     let c0: f64 = channels.iter().map(|ch| ch.inv_z * ch.top * ch.gain).sum();
-    let z2_per_delta = (1.5 * law.stiffness * c0 * h).powi(2);
-
-    let expected_steps = (expected / h).max(1.0);
-    // The newest force, impulse and approach, carried in registers: read back from their
-    // vectors they would wait on the store of the step before.
-    let (mut fn_, mut phin, mut dn) = (0.0f64, 0.0f64, 0.0f64);
+    let stepper = Stepper {
+        law: &law,
+        h,
+        c0,
+        z2_per_delta: (1.5 * law.stiffness * c0 * h).powi(2),
+    };
+    let pace = Pace {
+        h,
+        expected_steps: (expected_s / h).max(1.0),
+        max_steps: sc.solver.max_steps,
+    };
+    let mut now = Newest {
+        force: 0.0,
+        phi: 0.0,
+        delta: 0.0,
+    };
     // From step n = steady_after - 1 on, every Psi holds as many samples as its look-ups reach.
     let steady_after = (0..2)
         .map(|i| channels[i].steady_from().saturating_sub(pad[i]))
         .max()
         .unwrap_or(0);
-    // Every vector holds n + 1 samples at step n (after its padding); `room` is the least
-    // capacity among them.
-    let room = |psi: &[Series; 2], phi: &Series, force: &Vec<f64>, delta: &Vec<f64>| {
-        (psi[0].capacity() - pad[0])
-            .min(psi[1].capacity() - pad[1])
-            .min(phi.capacity())
-            .min(force.capacity())
-            .min(delta.capacity())
-    };
-    let mut cap = room(psi, phi, force, delta);
-    // The next step at which to report progress, check the step budget or make room: one
-    // comparison a step for the three.
+    let mut cap = room(ws, pad);
     let mut next_event = 0usize;
     while n < n_stop {
         if n >= next_event {
-            if n >= sc.solver.max_steps {
-                return Err(SolveError::Budget {
-                    max_steps: sc.solver.max_steps,
-                    dt_s: h,
-                    reached_s: n as f64 * h,
-                });
-            }
-            if n.is_multiple_of(CHECK_EVERY) {
-                control.report(n as f64 / expected_steps)?;
-            }
-            if n + 2 > cap {
-                let more = (n + 2).max(1024);
-                for v in psi.iter_mut().chain(std::iter::once(&mut *phi)) {
-                    v.reserve(more);
-                }
-                force.reserve(more);
-                delta.reserve(more);
-                cap = room(psi, phi, force, delta);
-            }
-            next_event = ((n / CHECK_EVERY + 1) * CHECK_EVERY)
-                .min(sc.solver.max_steps)
-                .min(cap - 1);
+            next_event = checkpoint(n, &pace, control, ws, pad, &mut cap)?;
         }
-        let t1 = (n + 1) as f64 * h;
         let [(r0, k0), (r1, k1)] = if n + 1 >= steady_after {
             // SAFETY: series i holds pad_i + n + 1 >= steady_from_i samples.
             unsafe {
                 [
-                    channels[0].known_steady(&psi[0]),
-                    channels[1].known_steady(&psi[1]),
+                    channels[0].known_steady(&ws.psi[0]),
+                    channels[1].known_steady(&ws.psi[1]),
                 ]
             }
         } else {
-            [channels[0].known(&psi[0]), channels[1].known(&psi[1])]
+            [channels[0].known(&ws.psi[0]), channels[1].known(&ws.psi[1])]
         };
-        let wv = w * t1
+        let wv = w * ((n + 1) as f64 * h)
             - channels[0].inv_z * (k0 + channels[0].top * (r0 * channels[0].gain))
             - channels[1].inv_z * (k1 + channels[1].top * (r1 * channels[1].gain));
-        let free = wv - c0 * phin;
-        let (mut d1, mut f1, mut phi1, theta);
-        if c0 == 0.0 {
-            // Explicit: delta_{n+1} depends on history alone; Phi by the trapezoid rule.
-            theta = 0.5;
-            d1 = wv;
-            f1 = law.force(d1);
-            phi1 = phin + 0.5 * h * (fn_ + f1);
-        } else {
-            // The overlap at the end of the step, extrapolated by a cubic through four steps
-            // ending two before it (taken three steps on: within 15 (h / T)^4 of it,
-            // relatively, on a contact of time scale T): its square root starts Newton on
-            // s = sqrt(delta), and it gives the step's stiffness for theta. Leaving out the last
-            // two steps keeps all of it off the chain from one step to the next: it is ready
-            // before the step's look-ups are. The overlap, not its root, is extrapolated because it is
-            // smooth at onset (delta ~ w t there, where sqrt(delta) has no Taylor series).
-            // Elsewhere (linear law, the first steps) the stiffness is the law's at the larger
-            // of the overlap now and the one the step heads for.
-            let guess = if law.kind == LawKind::Hertz && n >= 5 {
-                let [a, b, c, d] = [delta[n - 2], delta[n - 3], delta[n - 4], delta[n - 5]];
-                if a > 0.0 && b > 0.0 && c > 0.0 && d > 0.0 {
-                    20.0 * a - 45.0 * b + 36.0 * c - 10.0 * d
-                } else {
-                    -1.0
-                }
-            } else {
-                -1.0
-            };
-            // theta from z^2 = (1.5 k c0 h)^2 delta: no square root on the way to it.
-            theta = if guess > 0.0 {
-                theta_for_squared(z2_per_delta * guess)
-            } else {
-                theta_for(c0 * h * law.tangent(dn.max(free)))
-            };
-            let p = phin + (1.0 - theta) * h * fn_;
-            let (beta, rhs) = (c0 * theta * h, wv - c0 * p);
-            if law.kind == LawKind::Hertz && rhs > 0.0 {
-                // u = (rhs - G(s0)) / G'(s0), arranged so that only p waits on the step before.
-                let step = (guess > 0.0).then(|| law.sqrt_step(beta, guess));
-                let root = step.and_then(|st| st.root((wv - st.g0) * st.inv - (c0 * st.inv) * p));
-                let s1 = match root {
-                    Some(s1) => s1,
-                    None => law.solve_implicit_sqrt(beta, rhs, step.map_or(-1.0, |st| st.s0)),
-                };
-                d1 = s1 * s1;
-                f1 = d1 * (law.stiffness * s1);
-            } else {
-                d1 = law.solve_implicit(beta, rhs, dn);
-                f1 = law.force(d1);
-            }
-            phi1 = p + theta * h * f1;
-        }
-        let local = || LocalPoly {
-            y: [
-                if n >= 2 { delta[n - 2] } else { 0.0 },
-                if n >= 1 { delta[n - 1] } else { 0.0 },
-                dn,
-                0.0,
-            ],
-            cubic: n >= 2,
-        };
+        let free = wv - c0 * now.phi;
+        let mut step = stepper.advance(n, &ws.delta, wv, free, now);
         let mut separated = false;
-        if on && d1 <= 0.0 {
-            // Separation inside (t_n, t_n+1].
-            let t_star;
-            if c0 == 0.0 {
-                let mut poly = local();
-                poly.y[3] = d1;
-                let x = poly.root();
-                phi1 = phin + poly.integrate_force(&law, 0.0, x, h);
-                t_star = n as f64 * h + x * h;
-            } else {
-                // A theta sub-step of length s = x h ending where delta = 0 (so F = 0 there):
-                // g(x) = W(t_n + x h) - c0 (Phi_n + (1 - theta) x h F_n) = 0, with W = delta +
-                // c0 Phi smooth and known on the grid, so a cubic through W_{n-2..n+1} locates it.
-                let w_at = |k: usize| delta[k] + c0 * phi.get(k);
-                let g = |x: f64, wk: f64| wk - c0 * (phin + (1.0 - theta) * x * h * fn_);
-                let poly = LocalPoly {
-                    y: [
-                        if n >= 2 { g(-2.0, w_at(n - 2)) } else { 0.0 },
-                        if n >= 1 { g(-1.0, w_at(n - 1)) } else { 0.0 },
-                        g(0.0, w_at(n)),
-                        g(1.0, wv),
-                    ],
-                    cubic: n >= 2,
-                };
-                if poly.y[3] <= 0.0 {
-                    let x = poly.root();
-                    phi1 = phin + x * h * (1.0 - theta) * fn_;
-                    d1 = wv - c0 * phi1;
-                    t_star = n as f64 * h + x * h;
-                } else {
-                    t_star = t1;
-                }
-            }
-            f1 = 0.0;
+        if on && step.delta <= 0.0 {
+            let (t_star, phi1, d1) = stepper.separation(n, ws, wv, now, &step);
+            (step.phi, step.delta, step.force) = (phi1, d1, 0.0);
             on = false;
             separated = true;
-            let last = contacts.last_mut().expect("a contact is open");
-            last.1 = Some(t_star);
-            last.2 = phi1 - contact_phi0;
-        } else if !on && d1 > 0.0 {
-            // Onset inside (t_n, t_n+1].
+            ws.contacts
+                .last_mut()
+                .expect("a contact is open")
+                .close(t_star, phi1 - contact_phi0);
+        } else if !on && step.delta > 0.0 {
             let t_on;
-            if c0 == 0.0 {
-                let mut poly = local();
-                poly.y[3] = d1;
-                let x = poly.root();
-                phi1 = phin + poly.integrate_force(&law, x, 1.0, h);
-                t_on = n as f64 * h + x * h;
-            } else {
-                let s0 = h * (-dn) / (free - dn);
-                let hp = h - s0;
-                let th = if c0 * hp * law.tangent(free) > 0.5 {
-                    1.0
-                } else {
-                    0.5
-                };
-                d1 = law.solve_implicit(c0 * th * hp, free, dn);
-                f1 = law.force(d1);
-                phi1 = phin + th * hp * f1;
-                t_on = n as f64 * h + s0;
-            }
+            (t_on, step) = stepper.onset(n, &ws.delta, free, now, &step);
             on = true;
-            contact_phi0 = phin;
-            contacts.push((t_on, None, 0.0));
+            contact_phi0 = now.phi;
+            ws.contacts.push(ContactSpan::opening(t_on));
         }
         // Store the new samples: Psi_i(t_n+1) = Phi_n+1 + Psi_i(t_n+1 - T_i).
         // SAFETY: every vector holds n + 1 < cap samples (next_event <= cap - 1 makes room).
         unsafe {
-            for ((ch, r), series) in channels.iter().zip([r0, r1]).zip(psi.iter_mut()) {
-                series.push_reserved((phi1 + r) * ch.gain);
+            for ((ch, r), series) in channels.iter().zip([r0, r1]).zip(ws.psi.iter_mut()) {
+                series.push_reserved((step.phi + r) * ch.gain);
             }
-            phi.push_reserved(phi1);
-            push_reserved(force, f1);
-            push_reserved(delta, d1);
+            ws.phi.push_reserved(step.phi);
+            push_reserved(&mut ws.force, step.force);
+            push_reserved(&mut ws.delta, step.delta);
         }
-        (fn_, phin, dn) = (f1, phi1, d1);
+        now = Newest {
+            force: step.force,
+            phi: step.phi,
+            delta: step.delta,
+        };
         n += 1;
-        if separated && sc.solver.window_s == 0.0 && w - phi1 / m_eff <= 0.0 {
+        if separated && sc.solver.window_s == 0.0 && w - step.phi / m_eff <= 0.0 {
             break;
         }
     }
     super::close_open_contact(
-        contacts,
-        phi.last(),
+        &mut ws.contacts,
+        ws.phi.last(),
         contact_phi0,
         n as f64 * h,
         &mut warnings,
@@ -538,7 +689,7 @@ fn run(sc: &ImpactScenario, control: &Control, ws: &mut Workspace) -> Result<Run
         n,
         on,
         warnings,
-        refined_from_s: choice.refined_from_s,
+        refined_from_s,
     })
 }
 
@@ -595,8 +746,8 @@ pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, Solve
     let peak = peak_between(
         Times::Stored(&time_s),
         &force,
-        first.0,
-        first.1.unwrap_or(f64::INFINITY),
+        first.start_s,
+        first.end_s.unwrap_or(f64::INFINITY),
     );
     let kt = law.tangent_at_force(peak);
     let a_tau = kt * (plane_delays_s[0] / z[0] + plane_delays_s[1] / z[1]);

@@ -7,7 +7,7 @@
 //! exact: no step size, no discretisation error. When the formula asks for tension the bars
 //! separate; the ends' approach then moves linearly and a later contact is located exactly.
 
-use super::{Raw, SolveError};
+use super::{ContactSpan, Raw, SolveError};
 use crate::model::control::{CHECK_EVERY, Control};
 use crate::model::field::{BarWaves, History};
 use crate::model::scenario::ImpactScenario;
@@ -68,7 +68,7 @@ pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, Solve
         },
     ];
     let (mut time_s, mut force_n, mut approach_m, mut impulses) = (vec![], vec![], vec![], vec![]);
-    let mut contacts: Vec<(f64, Option<f64>, f64)> = vec![(0.0, None, 0.0)];
+    let mut contacts = vec![ContactSpan::opening(0.0)];
     let mut queue = BinaryHeap::new();
     queue.push(At(0.0));
     let (mut on, mut f, mut delta, mut rate) = (true, 0.0, 0.0, 0.0);
@@ -115,16 +115,17 @@ pub(crate) fn solve(sc: &ImpactScenario, control: &Control) -> Result<Raw, Solve
                 on = false;
                 delta = 0.0;
                 separated = true;
-                let c = contacts.last_mut().expect("open contact");
-                c.1 = Some(t);
-                c.2 = impulse - contact_j0;
+                contacts
+                    .last_mut()
+                    .expect("open contact")
+                    .close(t, impulse - contact_j0);
             }
         } else if delta >= -1e-12 * w * rt[0].max(rt[1]) && demand > zero {
             on = true;
             f = demand;
             delta = 0.0;
             contact_j0 = impulse;
-            contacts.push((t, None, 0.0));
+            contacts.push(ContactSpan::opening(t));
         }
         if !on {
             rate = compliance * demand;
