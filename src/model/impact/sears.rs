@@ -272,6 +272,15 @@ fn plan(sc: &ImpactScenario, law: &ContactLaw, lay: &Layout, z: [f64; 2]) -> Pla
     }
 }
 
+/// The steps a run may take: up to its window, or until the bars part for good.
+fn plan_steps(sc: &ImpactScenario, h: f64) -> usize {
+    if sc.solver.window_s > 0.0 {
+        (sc.solver.window_s / h).ceil() as usize
+    } else {
+        usize::MAX
+    }
+}
+
 /// Each bar's look-ups: its recursion over the round trip and its displacement taps at the lags.
 fn channels(lay: &Layout, z: [f64; 2], plan: &Plan) -> [Channel; 2] {
     let tap = |lag: f64| {
@@ -566,6 +575,36 @@ impl Stepper<'_> {
     }
 }
 
+/// The overlap the bars' known motion gives at the end of the step, before the new impulse's
+/// share: the rigid approach `approach` less both bars' look-ups. Also each bar's recursion
+/// part, which its new Psi sample needs.
+///
+/// # Safety
+/// With `steady`, every Psi must hold as many samples as its look-ups reach (`steady_from`).
+#[inline(always)]
+unsafe fn known_motion(
+    channels: &[Channel; 2],
+    psi: &[Series; 2],
+    steady: bool,
+    approach: f64,
+) -> (f64, [f64; 2]) {
+    let [(r0, k0), (r1, k1)] = if steady {
+        // SAFETY: the caller's promise.
+        unsafe {
+            [
+                channels[0].known_steady(&psi[0]),
+                channels[1].known_steady(&psi[1]),
+            ]
+        }
+    } else {
+        [channels[0].known(&psi[0]), channels[1].known(&psi[1])]
+    };
+    let wv = approach
+        - channels[0].inv_z * (k0 + channels[0].top * (r0 * channels[0].gain))
+        - channels[1].inv_z * (k1 + channels[1].top * (r1 * channels[1].gain));
+    (wv, [r0, r1])
+}
+
 /// Steps an impact through `ws`: its histories of Psi, Phi, force and approach, its contacts.
 fn run(sc: &ImpactScenario, control: &Control, ws: &mut Workspace) -> Result<Run, SolveError> {
     let law = sc.contact_law()?;
@@ -583,11 +622,7 @@ fn run(sc: &ImpactScenario, control: &Control, ws: &mut Workspace) -> Result<Run
         refined_from_s,
         ..
     } = plan;
-    let n_stop = if sc.solver.window_s > 0.0 {
-        (sc.solver.window_s / h).ceil() as usize
-    } else {
-        usize::MAX
-    };
+    let n_stop = plan_steps(sc, h);
     let mut contact_phi0 = 0.0;
     let mut on = true;
     ws.contacts.push(ContactSpan::opening(0.0));
@@ -621,20 +656,16 @@ fn run(sc: &ImpactScenario, control: &Control, ws: &mut Workspace) -> Result<Run
         if n >= next_event {
             next_event = checkpoint(n, &pace, control, ws, pad, &mut cap)?;
         }
-        let [(r0, k0), (r1, k1)] = if n + 1 >= steady_after {
-            // SAFETY: series i holds pad_i + n + 1 >= steady_from_i samples.
-            unsafe {
-                [
-                    channels[0].known_steady(&ws.psi[0]),
-                    channels[1].known_steady(&ws.psi[1]),
-                ]
-            }
-        } else {
-            [channels[0].known(&ws.psi[0]), channels[1].known(&ws.psi[1])]
+        // SAFETY: from step n = steady_after - 1 on, series i holds pad_i + n + 1 >=
+        // steady_from_i samples.
+        let (wv, [r0, r1]) = unsafe {
+            known_motion(
+                &channels,
+                &ws.psi,
+                n + 1 >= steady_after,
+                w * ((n + 1) as f64 * h),
+            )
         };
-        let wv = w * ((n + 1) as f64 * h)
-            - channels[0].inv_z * (k0 + channels[0].top * (r0 * channels[0].gain))
-            - channels[1].inv_z * (k1 + channels[1].top * (r1 * channels[1].gain));
         let free = wv - c0 * now.phi;
         let mut step = stepper.advance(n, &ws.delta, wv, free, now);
         let mut separated = false;
