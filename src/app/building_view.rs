@@ -61,132 +61,175 @@ fn attached(floors: &[Vec<f64>], time: &[f64], a: &Attachment, t: f64) -> f64 {
         .sum()
 }
 
-pub fn draw(ui: &mut egui::Ui, rect: egui::Rect, d: &BuildingDrawing, t: f64, exaggeration: f64) {
-    let sc = &d.setup.scenario;
-    let r = &d.result;
-    let buildings = [&sc.left, &sc.right];
-    let lengths = buildings.map(|b| {
-        (0..b.storeys)
-            .map(|j| b.slab(j).length_m)
-            .fold(0.0, f64::max)
-    });
-    let height = buildings
-        .iter()
-        .map(|b| b.total_height_m())
-        .fold(0.0, f64::max);
-    // World: metres, the at-rest gap centred at x = 0, the ground at y = 0.
-    let gap_world = (sc.gap_m * exaggeration).max(0.05);
-    let (left, right) = (-lengths[0] - gap_world - 2.0, lengths[1] + gap_world + 2.0);
-    let (bottom, top) = (-1.0f64, height * 1.25 + 1.0);
-    let aspect = (rect.width() / rect.height()) as f64;
-    let (left, right, top) = if (right - left) / (top - bottom) < aspect {
-        // Widen to fill the view.
-        let w = (top - bottom) * aspect;
-        let mid = 0.5 * (left + right);
-        (mid - 0.5 * w, mid + 0.5 * w, top)
-    } else {
-        (left, right, bottom + (right - left) / aspect)
-    };
-    let xg = interpolate(
-        &(0..d.ground_displacement.len())
-            .map(|i| i as f64 * d.motion.dt_s)
-            .collect::<Vec<_>>(),
-        &d.ground_displacement,
-        t,
-    );
-    let inner = [-0.5 * gap_world, 0.5 * gap_world];
-    let dir = [-1.0, 1.0];
-    let floor_u = |s: usize, f: usize| interpolate(&r.time_s, &r.floor_displacement_m[s][f], t);
-    let slab_t = (height * 0.02).clamp(0.15, 0.5);
-    let vp = Viewport {
-        rect,
-        left,
-        right,
-        bottom,
-        top,
-    };
-    let to_screen = |x: f64, y: f64| vp.to_screen(x, y);
-    // Slabs that meet at a level, coloured by their waves.
-    let force_scale = r.max_pounding_force_n.max(1.0);
-    let gpu_bars: Vec<GpuBar> = d
-        .bars
-        .iter()
-        .enumerate()
-        .map(|(i, &(level, s))| {
-            let lv: &Level = &r.levels[level];
-            let a = if s == 0 { lv.left } else { lv.right };
-            let f = a.floor().expect("a slab is a floor's");
-            let b = buildings[s];
-            let slab = b.slab(f);
-            let w = r.slab_waves[level][s].as_ref().expect("drawn");
-            let (offset, count, dt, end) = d.gpu.layout[i];
-            let z = b.elevations_m()[f];
-            GpuBar {
-                origin_x: (inner[s] + floor_u(s, f) * exaggeration + xg) as f32,
-                direction: dir[s] as f32,
-                body_length: slab.length_m as f32,
-                zone_length: 0.0,
-                wave_speed: w.wave_speed_m_s as f32,
-                round_trip: w.round_trip_s() as f32,
-                dt,
-                end_time: end,
-                offset,
-                count,
-                inv_area: (1.0 / slab.area_m2()) as f32,
-                inv_stress_scale: (slab.area_m2() / force_scale) as f32,
-                y_bottom: (z - slab_t) as f32,
-                y_top: z as f32,
-                world_per_metre: 1.0,
-                decay_per_s: w.decay_per_s as f32,
-                ..GpuBar::of_waves(w, 1.0)
-            }
-        })
-        .collect();
-    let painter = ui.painter_at(rect);
-    let text = ui.visuals().text_color();
-    let column = Stroke::new(
-        2.5,
-        if ui.visuals().dark_mode {
-            Color32::from_gray(170)
+/// Where and when one frame of the view is drawn: the viewport over the world (metres, the
+/// at-rest gap centred at x = 0, the ground at y = 0), the ground's displacement, each
+/// building's inner face and outward direction, the slab thickness drawn.
+struct Scene<'a> {
+    d: &'a BuildingDrawing,
+    vp: Viewport,
+    t: f64,
+    exaggeration: f64,
+    /// The ground's displacement at t [m].
+    xg: f64,
+    inner: [f64; 2],
+    dir: [f64; 2],
+    slab_t: f64,
+    /// The longest slab of each building [m].
+    lengths: [f64; 2],
+}
+
+impl<'a> Scene<'a> {
+    fn new(rect: egui::Rect, d: &'a BuildingDrawing, t: f64, exaggeration: f64) -> Self {
+        let sc = &d.setup.scenario;
+        let buildings = [&sc.left, &sc.right];
+        let lengths = buildings.map(|b| {
+            (0..b.storeys)
+                .map(|j| b.slab(j).length_m)
+                .fold(0.0, f64::max)
+        });
+        let height = buildings
+            .iter()
+            .map(|b| b.total_height_m())
+            .fold(0.0, f64::max);
+        let gap_world = (sc.gap_m * exaggeration).max(0.05);
+        let (left, right) = (-lengths[0] - gap_world - 2.0, lengths[1] + gap_world + 2.0);
+        let (bottom, top) = (-1.0f64, height * 1.25 + 1.0);
+        let aspect = (rect.width() / rect.height()) as f64;
+        let (left, right, top) = if (right - left) / (top - bottom) < aspect {
+            // Widen to fill the view.
+            let w = (top - bottom) * aspect;
+            let mid = 0.5 * (left + right);
+            (mid - 0.5 * w, mid + 0.5 * w, top)
         } else {
-            Color32::from_gray(80)
-        },
-    );
-    let plain = if ui.visuals().dark_mode {
-        Color32::from_gray(150)
-    } else {
-        Color32::from_gray(110)
-    };
-    // Ground, moving with the record (drawn to scale).
-    painter.line_segment(
-        [to_screen(left, 0.0), to_screen(right, 0.0)],
-        Stroke::new(2.0, Color32::from_rgb(140, 110, 70)),
-    );
-    for k in 0..24 {
-        let x = left + (right - left) * k as f64 / 24.0 + xg;
-        painter.line_segment(
-            [to_screen(x, 0.0), to_screen(x - 0.4, -0.4)],
-            Stroke::new(1.0, Color32::from_rgb(140, 110, 70)),
+            (left, right, bottom + (right - left) / aspect)
+        };
+        let xg = interpolate(
+            &(0..d.ground_displacement.len())
+                .map(|i| i as f64 * d.motion.dt_s)
+                .collect::<Vec<_>>(),
+            &d.ground_displacement,
+            t,
         );
+        Scene {
+            d,
+            vp: Viewport {
+                rect,
+                left,
+                right,
+                bottom,
+                top,
+            },
+            t,
+            exaggeration,
+            xg,
+            inner: [-0.5 * gap_world, 0.5 * gap_world],
+            dir: [-1.0, 1.0],
+            slab_t: (height * 0.02).clamp(0.15, 0.5),
+            lengths,
+        }
     }
-    for s in 0..2 {
-        let b = buildings[s];
+
+    fn to_screen(&self, x: f64, y: f64) -> Pos2 {
+        self.vp.to_screen(x, y)
+    }
+
+    /// Floor f of side s: its displacement relative to the ground at t [m].
+    fn floor_u(&self, s: usize, f: usize) -> f64 {
+        let r = &self.d.result;
+        interpolate(&r.time_s, &r.floor_displacement_m[s][f], self.t)
+    }
+
+    /// The slabs that meet at a level, as bars for the GPU to colour by their waves.
+    fn slab_bars(&self) -> Vec<GpuBar> {
+        let (d, r) = (self.d, &self.d.result);
+        let sc = &d.setup.scenario;
+        let buildings = [&sc.left, &sc.right];
+        let force_scale = r.max_pounding_force_n.max(1.0);
+        d.bars
+            .iter()
+            .enumerate()
+            .map(|(i, &(level, s))| {
+                let lv: &Level = &r.levels[level];
+                let a = if s == 0 { lv.left } else { lv.right };
+                let f = a.floor().expect("a slab is a floor's");
+                let b = buildings[s];
+                let slab = b.slab(f);
+                let w = r.slab_waves[level][s].as_ref().expect("drawn");
+                let (offset, count, dt, end) = d.gpu.layout[i];
+                let z = b.elevations_m()[f];
+                GpuBar {
+                    origin_x: (self.inner[s] + self.floor_u(s, f) * self.exaggeration + self.xg)
+                        as f32,
+                    direction: self.dir[s] as f32,
+                    body_length: slab.length_m as f32,
+                    zone_length: 0.0,
+                    wave_speed: w.wave_speed_m_s as f32,
+                    round_trip: w.round_trip_s() as f32,
+                    dt,
+                    end_time: end,
+                    offset,
+                    count,
+                    inv_area: (1.0 / slab.area_m2()) as f32,
+                    inv_stress_scale: (slab.area_m2() / force_scale) as f32,
+                    y_bottom: (z - self.slab_t) as f32,
+                    y_top: z as f32,
+                    world_per_metre: 1.0,
+                    decay_per_s: w.decay_per_s as f32,
+                    ..GpuBar::of_waves(w, 1.0)
+                }
+            })
+            .collect()
+    }
+
+    /// The ground line and its hatching, moving with the record (to scale).
+    fn ground(&self, painter: &egui::Painter) {
+        let (left, right) = (self.vp.left, self.vp.right);
+        let brown = Color32::from_rgb(140, 110, 70);
+        painter.line_segment(
+            [self.to_screen(left, 0.0), self.to_screen(right, 0.0)],
+            Stroke::new(2.0, brown),
+        );
+        for k in 0..24 {
+            let x = left + (right - left) * k as f64 / 24.0 + self.xg;
+            painter.line_segment(
+                [self.to_screen(x, 0.0), self.to_screen(x - 0.4, -0.4)],
+                Stroke::new(1.0, brown),
+            );
+        }
+    }
+
+    /// One building's columns and the slabs the GPU does not colour, and its caption.
+    fn building(
+        &self,
+        painter: &egui::Painter,
+        s: usize,
+        column: Stroke,
+        plain: Color32,
+        text: Color32,
+    ) {
+        let (d, r) = (self.d, &self.d.result);
+        let sc = &d.setup.scenario;
+        let b = [&sc.left, &sc.right][s];
+        let (inner, dir) = (self.inner[s], self.dir[s]);
         let zs = b.elevations_m();
         let mut below_u = 0.0;
         let mut below_z = 0.0;
         for (f, &z) in zs.iter().enumerate() {
-            let u = floor_u(s, f) * exaggeration + xg;
+            let u = self.floor_u(s, f) * self.exaggeration + self.xg;
             let len = b.slab(f).length_m;
             // Columns from the floor below (the ground, moving with the record, for the first).
             let (base_u, base_z) = if f == 0 {
-                (xg, 0.0)
+                (self.xg, 0.0)
             } else {
                 (below_u, below_z)
             };
             for frac in [0.05, 0.95] {
-                let x = inner[s] + dir[s] * frac * len;
+                let x = inner + dir * frac * len;
                 painter.line_segment(
-                    [to_screen(x + base_u, base_z), to_screen(x + u, z - slab_t)],
+                    [
+                        self.to_screen(x + base_u, base_z),
+                        self.to_screen(x + u, z - self.slab_t),
+                    ],
                     column,
                 );
             }
@@ -195,8 +238,8 @@ pub fn draw(ui: &mut egui::Ui, rect: egui::Rect, d: &BuildingDrawing, t: f64, ex
             });
             if !coloured {
                 let (a, c) = (
-                    to_screen(inner[s] + u, z - slab_t),
-                    to_screen(inner[s] + dir[s] * len + u, z),
+                    self.to_screen(inner + u, z - self.slab_t),
+                    self.to_screen(inner + dir * len + u, z),
                 );
                 painter.rect_filled(egui::Rect::from_two_pos(a, c), 1.0, plain);
             }
@@ -204,8 +247,8 @@ pub fn draw(ui: &mut egui::Ui, rect: egui::Rect, d: &BuildingDrawing, t: f64, ex
             below_z = z;
         }
         painter.text(
-            to_screen(
-                inner[s] + dir[s] * 0.5 * lengths[s] + xg,
+            self.to_screen(
+                inner + dir * 0.5 * self.lengths[s] + self.xg,
                 b.total_height_m() + 0.4,
             ),
             egui::Align2::CENTER_BOTTOM,
@@ -214,13 +257,84 @@ pub fn draw(ui: &mut egui::Ui, rect: egui::Rect, d: &BuildingDrawing, t: f64, ex
                 if s == 0 { "left" } else { "right" },
                 b.storeys,
                 if b.storeys == 1 { "" } else { "s" },
-                floor_u(s, b.storeys - 1) * 1e3
+                self.floor_u(s, b.storeys - 1) * 1e3
             ),
             egui::FontId::proportional(13.0),
             text,
         );
     }
+
+    /// A mark at each level on each side, red while it carries force.
+    fn contact_points(&self, painter: &egui::Painter) {
+        let r = &self.d.result;
+        for (l, level) in r.levels.iter().enumerate() {
+            let force = interpolate(&r.time_s, &r.level_force_n[l], self.t);
+            let colour = if force > 0.0 {
+                Color32::from_rgb(220, 60, 50)
+            } else {
+                Color32::from_rgb(240, 180, 60)
+            };
+            for (s, a) in [(0, &level.left), (1, &level.right)] {
+                let u = attached(&r.floor_displacement_m[s], &r.time_s, a, self.t)
+                    * self.exaggeration
+                    + self.xg;
+                let p = self.to_screen(self.inner[s] + u, level.elevation_m - 0.5 * self.slab_t);
+                painter.circle_filled(p, 4.0, colour);
+            }
+        }
+    }
+
+    /// The pounding force while there is one, and the time and scales.
+    fn captions(&self, painter: &egui::Painter, text: Color32) {
+        let (r, rect) = (&self.d.result, self.vp.rect);
+        let f = interpolate(&r.time_s, &r.force_n, self.t);
+        if f > 0.0 {
+            painter.text(
+                Pos2::new(rect.left() + 8.0, rect.top() + 6.0),
+                egui::Align2::LEFT_TOP,
+                format!("pounding: {:.3e} N", f),
+                egui::FontId::proportional(14.0),
+                Color32::from_rgb(220, 60, 50),
+            );
+        }
+        painter.text(
+            Pos2::new(rect.right() - 8.0, rect.top() + 6.0),
+            egui::Align2::RIGHT_TOP,
+            format!(
+                "t = {:.4} s, drift x{:.0}, ground to scale",
+                self.t, self.exaggeration
+            ),
+            egui::FontId::proportional(12.0),
+            text,
+        );
+    }
+}
+
+pub fn draw(ui: &mut egui::Ui, rect: egui::Rect, d: &BuildingDrawing, t: f64, exaggeration: f64) {
+    let scene = Scene::new(rect, d, t, exaggeration);
+    let gpu_bars = scene.slab_bars();
+    let painter = ui.painter_at(rect);
+    let dark = ui.visuals().dark_mode;
+    let text = ui.visuals().text_color();
+    let column = Stroke::new(
+        2.5,
+        if dark {
+            Color32::from_gray(170)
+        } else {
+            Color32::from_gray(80)
+        },
+    );
+    let plain = if dark {
+        Color32::from_gray(150)
+    } else {
+        Color32::from_gray(110)
+    };
+    scene.ground(&painter);
+    for s in 0..2 {
+        scene.building(&painter, s, column, plain, text);
+    }
     if !gpu_bars.is_empty() {
+        let vp = &scene.vp;
         let world = [vp.left, vp.right, vp.bottom, vp.top];
         let count = gpu_bars.len() as u32;
         vp.paint(
@@ -232,35 +346,6 @@ pub fn draw(ui: &mut egui::Ui, rect: egui::Rect, d: &BuildingDrawing, t: f64, ex
             d.gpu.clone(),
         );
     }
-    // Contact points: a mark at each level on each side, red while it carries force.
-    for (l, level) in r.levels.iter().enumerate() {
-        let force = interpolate(&r.time_s, &r.level_force_n[l], t);
-        let colour = if force > 0.0 {
-            Color32::from_rgb(220, 60, 50)
-        } else {
-            Color32::from_rgb(240, 180, 60)
-        };
-        for (s, a) in [(0, &level.left), (1, &level.right)] {
-            let u = attached(&r.floor_displacement_m[s], &r.time_s, a, t) * exaggeration + xg;
-            let p = to_screen(inner[s] + u, level.elevation_m - 0.5 * slab_t);
-            painter.circle_filled(p, 4.0, colour);
-        }
-    }
-    let f = interpolate(&r.time_s, &r.force_n, t);
-    if f > 0.0 {
-        painter.text(
-            Pos2::new(rect.left() + 8.0, rect.top() + 6.0),
-            egui::Align2::LEFT_TOP,
-            format!("pounding: {:.3e} N", f),
-            egui::FontId::proportional(14.0),
-            Color32::from_rgb(220, 60, 50),
-        );
-    }
-    painter.text(
-        Pos2::new(rect.right() - 8.0, rect.top() + 6.0),
-        egui::Align2::RIGHT_TOP,
-        format!("t = {t:.4} s, drift x{exaggeration:.0}, ground to scale"),
-        egui::FontId::proportional(12.0),
-        text,
-    );
+    scene.contact_points(&painter);
+    scene.captions(&painter, text);
 }

@@ -76,6 +76,34 @@ const RIGHT: f32 = 96.0;
 const BOTTOM: f32 = 16.0;
 const TOP: f32 = 18.0;
 
+/// One drawing of the diagram: the viewport of its plot area (x in world metres, y from 0 at
+/// the start of the span to 1 at its end) and the bars laid out in it.
+struct Frame<'a> {
+    vp: Viewport,
+    layout: &'a BarsLayout,
+    t_start: f64,
+    t_span: f64,
+}
+
+impl Frame<'_> {
+    /// The diagram's y (0 to 1) at time t.
+    fn y_of(&self, t: f64) -> f64 {
+        ((t - self.t_start) / self.t_span).clamp(0.0, 1.0)
+    }
+
+    /// The time at screen height y.
+    fn t_of(&self, y: f32) -> f64 {
+        let plot = self.vp.rect;
+        self.t_start + self.t_span * ((plot.bottom() - y) / plot.height()).clamp(0.0, 1.0) as f64
+    }
+
+    /// World x of a point at distance d along bar i.
+    fn world(&self, i: usize, d: f64) -> f64 {
+        let b = &self.layout.bars[i];
+        b.origin_x as f64 + b.direction as f64 * d * self.layout.world_per_metre[i]
+    }
+}
+
 impl XtDiagram<'_> {
     /// The waves drawn, where the source has them.
     fn waves(&self) -> Option<&[BarWaves; 2]> {
@@ -132,14 +160,19 @@ impl XtDiagram<'_> {
             Pos2::new(rect.left() + LEFT, rect.top() + TOP),
             Pos2::new(rect.right() - RIGHT, rect.bottom() - BOTTOM),
         );
-        let vp = Viewport {
-            rect: plot,
-            left: layout.left,
-            right: layout.right,
-            bottom: 0.0,
-            top: 1.0,
+        let frame = Frame {
+            vp: Viewport {
+                rect: plot,
+                left: layout.left,
+                right: layout.right,
+                bottom: 0.0,
+                top: 1.0,
+            },
+            layout: &layout,
+            t_start: self.t_start,
+            t_span: self.t_span,
         };
-        vp.paint(
+        frame.vp.paint(
             ui,
             slot,
             View::Xt,
@@ -149,17 +182,34 @@ impl XtDiagram<'_> {
         );
         let painter = ui.painter_at(rect);
         let text = ui.visuals().text_color();
+        self.time_axis(&painter, &frame, rect, text);
+        self.faces_and_zones(&painter, &frame, text);
+        if options.characteristics {
+            self.characteristic_lines(&painter, &frame);
+        }
+        // The animation time, where it falls in the diagram.
+        if (self.t_start..=self.t_start + self.t_span).contains(&t_now) {
+            let y = frame.vp.to_screen(layout.left, frame.y_of(t_now)).y;
+            painter.line_segment(
+                [Pos2::new(plot.left(), y), Pos2::new(plot.right(), y)],
+                Stroke::new(1.5, Color32::from_rgb(240, 200, 80)),
+            );
+        }
+        self.colour_bar(&painter, rect, plot, &layout, options.field, text);
+        self.hover_readout(&response, &frame);
+        let pointer = response.interact_pointer_pos();
+        if (response.clicked() || response.dragged())
+            && let Some(p) = pointer.filter(|p| plot.contains(*p))
+        {
+            return Some(frame.t_of(p.y));
+        }
+        None
+    }
+
+    /// The title and the time axis, in ms at round values.
+    fn time_axis(&self, painter: &egui::Painter, frame: &Frame, rect: Rect, text: Color32) {
+        let plot = frame.vp.rect;
         let font = egui::FontId::proportional(11.0);
-        let y_of = |t: f64| ((t - self.t_start) / self.t_span).clamp(0.0, 1.0);
-        let t_of = |y: f32| {
-            self.t_start
-                + self.t_span * ((plot.bottom() - y) / plot.height()).clamp(0.0, 1.0) as f64
-        };
-        // World x of a point at distance d along bar i.
-        let world = |i: usize, d: f64| {
-            let b = &layout.bars[i];
-            b.origin_x as f64 + b.direction as f64 * d * layout.world_per_metre[i]
-        };
         painter.text(
             Pos2::new(plot.left(), rect.top() + 2.0),
             egui::Align2::LEFT_TOP,
@@ -167,9 +217,8 @@ impl XtDiagram<'_> {
             font.clone(),
             text,
         );
-        // Time axis, in ms.
         for t in super::plot_view::round_ticks(self.t_start, self.t_span, 5) {
-            let p = vp.to_screen(layout.left, y_of(t));
+            let p = frame.vp.to_screen(frame.layout.left, frame.y_of(t));
             painter.text(
                 Pos2::new(plot.left() - 4.0, p.y),
                 egui::Align2::RIGHT_CENTER,
@@ -182,18 +231,22 @@ impl XtDiagram<'_> {
             Pos2::new(rect.left() + 2.0, plot.center().y),
             egui::Align2::LEFT_CENTER,
             "t [ms]",
-            font.clone(),
+            font,
             text,
         );
+    }
+
+    /// The contact faces, and each zone's inner edge where the reading has one.
+    fn faces_and_zones(&self, painter: &egui::Painter, frame: &Frame, text: Color32) {
+        let vp = &frame.vp;
         let dark = Stroke::new(1.0, Color32::from_gray(40));
-        // The contact faces and the zones.
         for i in 0..2 {
-            let x = world(i, 0.0);
+            let x = frame.world(i, 0.0);
             painter.line_segment([vp.to_screen(x, 0.0), vp.to_screen(x, 1.0)], dark);
             if let Some(d) = self.zones_m {
                 let length = self.waves().map_or(0.0, |w| w[i].length_m());
                 if d[i] < length {
-                    let x = world(i, d[i]);
+                    let x = frame.world(i, d[i]);
                     painter.line_segment(
                         [vp.to_screen(x, 0.0), vp.to_screen(x, 1.0)],
                         Stroke::new(1.0, Color32::from_gray(90)),
@@ -202,65 +255,57 @@ impl XtDiagram<'_> {
                         vp.to_screen(x, 1.0),
                         egui::Align2::CENTER_BOTTOM,
                         "d",
-                        font.clone(),
+                        egui::FontId::proportional(11.0),
                         text,
                     );
                 }
             }
         }
-        if options.characteristics
-            && let Some(w) = self.waves()
-        {
-            for (i, bar) in w.iter().enumerate() {
-                for line in characteristics(bar, self.t_start, self.t_span) {
-                    let pts: Vec<Pos2> = line
-                        .iter()
-                        .map(|&(d, t)| vp.to_screen(world(i, d), y_of(t)))
-                        .collect();
-                    painter.add(egui::Shape::line(
-                        pts,
-                        Stroke::new(1.0, Color32::from_black_alpha(110)),
-                    ));
-                }
-            }
-        }
-        // The animation time, where it falls in the diagram.
-        if (self.t_start..=self.t_start + self.t_span).contains(&t_now) {
-            let y = vp.to_screen(layout.left, y_of(t_now)).y;
-            painter.line_segment(
-                [Pos2::new(plot.left(), y), Pos2::new(plot.right(), y)],
-                Stroke::new(1.5, Color32::from_rgb(240, 200, 80)),
-            );
-        }
-        self.colour_bar(&painter, rect, plot, &layout, options.field, text);
-        // Hover: read the field under the pointer; click or drag: set the time.
-        if let Some(pos) = response.hover_pos().filter(|p| plot.contains(*p)) {
-            let x = layout.left
-                + (layout.right - layout.left) * ((pos.x - plot.left()) / plot.width()) as f64;
-            let t = t_of(pos.y);
-            let i = if x < 0.0 { 0 } else { 1 };
-            let b = &layout.bars[i];
-            let d = (x - b.origin_x as f64) * b.direction as f64 / layout.world_per_metre[i];
-            let length = (b.body_length + b.zone_length) as f64;
-            if (0.0..=length).contains(&d) {
-                let (stress, velocity) = self.read(i, d, t);
-                response.clone().on_hover_text_at_pointer(format!(
-                    "bar {}: x = {:.4} m from the contact, t = {:.4} ms\nstress {:+.4e} Pa, velocity {:+.4} m/s",
-                    i + 1,
-                    d,
-                    t * 1e3,
-                    stress,
-                    velocity
+    }
+
+    /// The wave fronts' paths x = +-c t from each change of the force, with their reflections.
+    fn characteristic_lines(&self, painter: &egui::Painter, frame: &Frame) {
+        let Some(w) = self.waves() else {
+            return;
+        };
+        for (i, bar) in w.iter().enumerate() {
+            for line in characteristics(bar, self.t_start, self.t_span) {
+                let pts: Vec<Pos2> = line
+                    .iter()
+                    .map(|&(d, t)| frame.vp.to_screen(frame.world(i, d), frame.y_of(t)))
+                    .collect();
+                painter.add(egui::Shape::line(
+                    pts,
+                    Stroke::new(1.0, Color32::from_black_alpha(110)),
                 ));
             }
         }
-        let pointer = response.interact_pointer_pos();
-        if (response.clicked() || response.dragged())
-            && let Some(p) = pointer.filter(|p| plot.contains(*p))
-        {
-            return Some(t_of(p.y));
+    }
+
+    /// Hover: the field under the pointer, read from the model.
+    fn hover_readout(&self, response: &egui::Response, frame: &Frame) {
+        let (plot, layout) = (frame.vp.rect, frame.layout);
+        let Some(pos) = response.hover_pos().filter(|p| plot.contains(*p)) else {
+            return;
+        };
+        let x = layout.left
+            + (layout.right - layout.left) * ((pos.x - plot.left()) / plot.width()) as f64;
+        let t = frame.t_of(pos.y);
+        let i = if x < 0.0 { 0 } else { 1 };
+        let b = &layout.bars[i];
+        let d = (x - b.origin_x as f64) * b.direction as f64 / layout.world_per_metre[i];
+        let length = (b.body_length + b.zone_length) as f64;
+        if (0.0..=length).contains(&d) {
+            let (stress, velocity) = self.read(i, d, t);
+            response.clone().on_hover_text_at_pointer(format!(
+                "bar {}: x = {:.4} m from the contact, t = {:.4} ms\nstress {:+.4e} Pa, velocity {:+.4} m/s",
+                i + 1,
+                d,
+                t * 1e3,
+                stress,
+                velocity
+            ));
         }
-        None
     }
 
     fn colour_bar(
