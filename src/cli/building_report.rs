@@ -2,7 +2,8 @@
 
 use pounding::io::building_settings::BuildingSetup;
 use pounding::model::building::{
-    Building, BuildingErrorEstimate, BuildingResult, ContactModel, Level, SlabReading,
+    Building, BuildingErrorEstimate, BuildingResult, BuildingScenario, ContactModel, Level,
+    SlabReading,
 };
 use pounding::model::motion::{G, GroundMotion};
 use serde::Serialize;
@@ -295,15 +296,34 @@ pub fn summary(
     est: Option<&BuildingErrorEstimate>,
 ) -> String {
     let sc = &setup.scenario;
-    let s = motion.stats();
     let mut o = String::new();
     let _ = writeln!(
         o,
         "Pounding Lab buildings: contact {}, preset {preset}",
         r.contact.name()
     );
-    let _ = writeln!(
-        o,
+    let _ = writeln!(o, "{}", motion_line(motion));
+    let _ = writeln!(o, "{}", building_line("left ", &sc.left, r, 0));
+    let _ = writeln!(o, "{}", building_line("right", &sc.right, r, 1));
+    let _ = writeln!(o, "{}", contact_line(sc));
+    levels_table(&mut o, r);
+    let _ = writeln!(o, "results");
+    results(&mut o, sc, r, baseline);
+    cost(&mut o, sc, r, est);
+    impacts_table(&mut o, r);
+    if !r.warnings.is_empty() {
+        let _ = writeln!(o, "warnings");
+        for w in &r.warnings {
+            let _ = writeln!(o, "  - {w}");
+        }
+    }
+    o
+}
+
+/// The record and the numbers that describe it.
+fn motion_line(motion: &GroundMotion) -> String {
+    let s = motion.stats();
+    format!(
         "  motion: {} | {} points at {} s, {:.2} s | PGA {:.4} g at {:.2} s | PGV {:.3} m/s | Arias {:.3} m/s | 5-95% duration {:.2} s | 5% spectrum peaks at {:.2} s ({:.3} g)",
         motion.name,
         s.points,
@@ -316,9 +336,11 @@ pub fn summary(
         s.significant_duration_s,
         s.predominant_period_s,
         s.peak_spectral_accel_m_s2 / G
-    );
-    let _ = writeln!(o, "{}", building_line("left ", &sc.left, r, 0));
-    let _ = writeln!(o, "{}", building_line("right", &sc.right, r, 1));
+    )
+}
+
+/// The gap and the element, with what only some elements use.
+fn contact_line(sc: &BuildingScenario) -> String {
     let mut contact = format!(
         "  contact: gap {} m, stiffness {:.4e}",
         sc.gap_m,
@@ -346,22 +368,30 @@ pub fn summary(
     ) {
         let _ = write!(contact, ", restitution {}", sc.restitution);
     }
-    let _ = writeln!(o, "{contact}");
-    if r.levels.len() > 1 {
-        let _ = writeln!(o, "  levels");
-        for (i, l) in r.levels.iter().enumerate() {
-            let _ = writeln!(
-                o,
-                "    {:2}  {:7.3} m  {:12}  left floors {:?}, right floors {:?}",
-                i + 1,
-                l.elevation_m,
-                l.kind.name(),
-                l.left.floors_1_based(),
-                l.right.floors_1_based()
-            );
-        }
+    contact
+}
+
+/// The contact levels, where there is more than one.
+fn levels_table(o: &mut String, r: &BuildingResult) {
+    if r.levels.len() <= 1 {
+        return;
     }
-    let _ = writeln!(o, "results");
+    let _ = writeln!(o, "  levels");
+    for (i, l) in r.levels.iter().enumerate() {
+        let _ = writeln!(
+            o,
+            "    {:2}  {:7.3} m  {:12}  left floors {:?}, right floors {:?}",
+            i + 1,
+            l.elevation_m,
+            l.kind.name(),
+            l.left.floors_1_based(),
+            l.right.floors_1_based()
+        );
+    }
+}
+
+/// Impacts, the strongest, the peaks with and without pounding, and the energy.
+fn results(o: &mut String, sc: &BuildingScenario, r: &BuildingResult, baseline: &BuildingResult) {
     let _ = writeln!(
         o,
         "  impacts             {} events ({} raw contacts, merged when closer than {} s)",
@@ -384,6 +414,7 @@ pub fn summary(
             }
         );
     }
+    let storeys = sc.left.storeys > 1 || sc.right.storeys > 1;
     let _ = writeln!(
         o,
         "  peak displacement   left {:.5} m (without pounding {:.5} m), right {:.5} m (without pounding {:.5} m){}",
@@ -391,13 +422,9 @@ pub fn summary(
         baseline.peak_displacement_m[0],
         r.peak_displacement_m[1],
         baseline.peak_displacement_m[1],
-        if sc.left.storeys > 1 || sc.right.storeys > 1 {
-            " (roofs)"
-        } else {
-            ""
-        }
+        if storeys { " (roofs)" } else { "" }
     );
-    if sc.left.storeys > 1 || sc.right.storeys > 1 {
+    if storeys {
         for (side, name) in [(0, "left "), (1, "right")] {
             let _ = writeln!(
                 o,
@@ -424,6 +451,15 @@ pub fn summary(
         e.final_j + e.stored_contact_j,
         e.balance_error()
     );
+}
+
+/// What the run cost, and its error estimate.
+fn cost(
+    o: &mut String,
+    sc: &BuildingScenario,
+    r: &BuildingResult,
+    est: Option<&BuildingErrorEstimate>,
+) {
     let _ = writeln!(
         o,
         "  solve               {} steps ({} in contact, fine step {:.3e} s, free steps up to {:.3e} s, {:.1} steps per contact time scale for a tolerance of {:e}), {:.2} ms",
@@ -446,37 +482,35 @@ pub fn summary(
             1e3 * e.wall_time_s
         );
     }
-    if !r.impacts.is_empty() {
-        let many = r.levels.len() > 1;
+}
+
+/// One row per impact.
+fn impacts_table(o: &mut String, r: &BuildingResult) {
+    if r.impacts.is_empty() {
+        return;
+    }
+    let many = r.levels.len() > 1;
+    let _ = writeln!(
+        o,
+        "impacts\n    #   start [s]  duration [ms]  peak force [N]  impulse [N s]  approach [m/s]  contacts{}",
+        if many { "  level" } else { "" }
+    );
+    for (i, ev) in r.impacts.iter().enumerate() {
         let _ = writeln!(
             o,
-            "impacts\n    #   start [s]  duration [ms]  peak force [N]  impulse [N s]  approach [m/s]  contacts{}",
-            if many { "  level" } else { "" }
+            "  {:3}  {:9.4}  {:13.3}  {:14.4e}  {:13.4e}  {:14.4}  {:8}{}",
+            i + 1,
+            ev.start_s,
+            1e3 * ev.duration_s(),
+            ev.peak_force_n,
+            ev.impulse_ns,
+            ev.approach_velocity_m_s,
+            ev.contacts.len(),
+            if many {
+                format!("  {:5}", ev.level + 1)
+            } else {
+                String::new()
+            }
         );
-        for (i, ev) in r.impacts.iter().enumerate() {
-            let _ = writeln!(
-                o,
-                "  {:3}  {:9.4}  {:13.3}  {:14.4e}  {:13.4e}  {:14.4}  {:8}{}",
-                i + 1,
-                ev.start_s,
-                1e3 * ev.duration_s(),
-                ev.peak_force_n,
-                ev.impulse_ns,
-                ev.approach_velocity_m_s,
-                ev.contacts.len(),
-                if many {
-                    format!("  {:5}", ev.level + 1)
-                } else {
-                    String::new()
-                }
-            );
-        }
     }
-    if !r.warnings.is_empty() {
-        let _ = writeln!(o, "warnings");
-        for w in &r.warnings {
-            let _ = writeln!(o, "  - {w}");
-        }
-    }
-    o
 }
