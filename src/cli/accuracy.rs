@@ -258,8 +258,32 @@ pub fn run(args: &AccuracyArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         "buildings" => true,
         other => anyhow::bail!("--scene: unknown scene '{other}': allowed impact|buildings"),
     };
+    let rows = ladders(args, buildings)?;
+    if let Some(path) = &args.csv {
+        write_rows_csv(out, path, &rows)?;
+    }
+    if let Some(path) = &args.plot {
+        work_precision_plot(&rows, buildings).write(path)?;
+    }
+    if args.json {
+        writeln!(
+            out,
+            "{}",
+            serde_json::to_string_pretty(
+                &serde_json::json!({ "scene": args.scene, "rungs": rows })
+            )?
+        )?;
+    } else if !super::csv_to_stdout(args.csv.as_deref()) {
+        table(out, &rows, buildings)?;
+    }
+    Ok(())
+}
+
+/// Every rung of the scene's ladders, from its preset and overrides, with a progress bar.
+fn ladders(args: &AccuracyArgs, buildings: bool) -> anyhow::Result<Vec<Rung>> {
     let quiet = args.quiet || args.json;
-    let rows = if buildings {
+    let progress = Control::new();
+    if buildings {
         let mut setup: BuildingSetup = preset::load_for(
             args.preset.as_deref().unwrap_or("paper-buildings"),
             "buildings",
@@ -274,10 +298,9 @@ pub fn run(args: &AccuracyArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             setup.motion.file = Some(m.display().to_string());
         }
         let motion = super::buildings::load_motion(&setup)?;
-        let progress = Control::new();
         super::with_bar("accuracy", &progress, quiet, || {
             building_ladders(&setup, &motion, &progress)
-        })?
+        })
     } else {
         let mut setup: ImpactSetup = preset::load_for(
             args.preset.as_deref().unwrap_or(preset::DEFAULT_PRESET),
@@ -289,130 +312,131 @@ pub fn run(args: &AccuracyArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 .apply_assignment(a)
                 .map_err(|e| anyhow::anyhow!("--set {e}"))?;
         }
-        let progress = Control::new();
         super::with_bar("accuracy", &progress, quiet, || {
             impact_ladders(&setup.scenario, &progress)
-        })?
-    };
-    if let Some(path) = &args.csv {
-        super::write_csv(out, path, |w| {
+        })
+    }
+}
+
+/// The rungs as CSV, one row each.
+fn write_rows_csv(
+    out: &mut dyn Write,
+    path: &std::path::Path,
+    rows: &[Rung],
+) -> anyhow::Result<()> {
+    super::write_csv(out, path, |w| {
+        writeln!(
+            w,
+            "model,resolution,steps,wall_time_s,peak_force_error,duration_error,restitution_error,force_l2_error,observed_order,impacts,impact_count_difference"
+        )?;
+        for r in rows {
+            let (n, d) = r.impacts.map_or((String::new(), String::new()), |(n, d)| {
+                (n.to_string(), d.to_string())
+            });
             writeln!(
                 w,
-                "model,resolution,steps,wall_time_s,peak_force_error,duration_error,restitution_error,force_l2_error,observed_order,impacts,impact_count_difference"
-            )?;
-            for r in &rows {
-                let (n, d) = r.impacts.map_or((String::new(), String::new()), |(n, d)| {
-                    (n.to_string(), d.to_string())
-                });
-                writeln!(
-                    w,
-                    "{},{:e},{},{:e},{:e},{:e},{:e},{:e},{},{},{}",
-                    r.model,
-                    r.resolution,
-                    r.steps,
-                    r.wall_time_s,
-                    r.peak_force_error,
-                    r.duration_error,
-                    r.restitution_error,
-                    r.force_l2_error,
-                    r.observed_order
-                        .map_or(String::new(), |o| format!("{o:.3}")),
-                    n,
-                    d
-                )?;
-            }
-            Ok(())
-        })?;
-    }
-    if let Some(path) = &args.plot {
-        let mut series: Vec<Series> = vec![];
-        for r in &rows {
-            if series.last().is_none_or(|s| s.name != r.model) {
-                series.push(Series {
-                    name: r.model.clone(),
-                    points: vec![],
-                });
-            }
-            series
-                .last_mut()
-                .expect("pushed")
-                .points
-                .push((r.wall_time_s * 1e3, r.force_l2_error));
-        }
-        let (title, y) = if buildings {
-            (
-                "Work-precision: building pounding, 8 s",
-                "max force error (relative)",
-            )
-        } else {
-            (
-                "Work-precision: bar impact",
-                "force history L2 error (relative)",
-            )
-        };
-        LinePlot {
-            log_x: true,
-            log_y: true,
-            size: (900, 620),
-            markers: true,
-            ..LinePlot::new(title, "wall time per solve [ms]", y, series)
-        }
-        .write(path)?;
-    }
-    if args.json {
-        writeln!(
-            out,
-            "{}",
-            serde_json::to_string_pretty(
-                &serde_json::json!({ "scene": args.scene, "rungs": rows })
-            )?
-        )?;
-    } else if !super::csv_to_stdout(args.csv.as_deref()) {
-        let res = if buildings {
-            "steps/scale"
-        } else {
-            "dt [s] / FE N"
-        };
-        writeln!(
-            out,
-            "{:18} {:>13} {:>8} {:>10} {:>11} {:>11} {:>11} {:>11} {:>7}{}",
-            "model",
-            res,
-            "steps",
-            "wall [ms]",
-            if buildings { "max F err" } else { "peak err" },
-            if buildings { "disp err" } else { "dur err" },
-            if buildings { "" } else { "e err" },
-            if buildings { "" } else { "L2 err" },
-            "order",
-            if buildings { "  impacts (diff)" } else { "" }
-        )?;
-        for r in &rows {
-            let extra = r
-                .impacts
-                .map_or(String::new(), |(n, d)| format!("  {n} ({d:+})"));
-            let (c3, c4) = if buildings {
-                (String::new(), String::new())
-            } else {
-                (
-                    format!("{:.2e}", r.restitution_error),
-                    format!("{:.2e}", r.force_l2_error),
-                )
-            };
-            writeln!(
-                out,
-                "{:18} {:>13.4e} {:>8} {:>10.4} {:>11.2e} {:>11.2e} {:>11} {:>11} {:>7}{extra}",
+                "{},{:e},{},{:e},{:e},{:e},{:e},{:e},{},{},{}",
                 r.model,
                 r.resolution,
                 r.steps,
-                r.wall_time_s * 1e3,
+                r.wall_time_s,
                 r.peak_force_error,
                 r.duration_error,
-                c3,
-                c4,
-                r.observed_order.map_or("-".into(), |o| format!("{o:.2}"))
+                r.restitution_error,
+                r.force_l2_error,
+                r.observed_order
+                    .map_or(String::new(), |o| format!("{o:.3}")),
+                n,
+                d
             )?;
         }
+        Ok(())
+    })?;
+    Ok(())
+}
+
+/// Error against wall time, one curve per model, both axes logarithmic.
+fn work_precision_plot(rows: &[Rung], buildings: bool) -> LinePlot {
+    let mut series: Vec<Series> = vec![];
+    for r in rows {
+        if series.last().is_none_or(|s| s.name != r.model) {
+            series.push(Series {
+                name: r.model.clone(),
+                points: vec![],
+            });
+        }
+        series
+            .last_mut()
+            .expect("pushed")
+            .points
+            .push((r.wall_time_s * 1e3, r.force_l2_error));
+    }
+    let (title, y) = if buildings {
+        (
+            "Work-precision: building pounding, 8 s",
+            "max force error (relative)",
+        )
+    } else {
+        (
+            "Work-precision: bar impact",
+            "force history L2 error (relative)",
+        )
+    };
+    LinePlot {
+        log_x: true,
+        log_y: true,
+        size: (900, 620),
+        markers: true,
+        ..LinePlot::new(title, "wall time per solve [ms]", y, series)
+    }
+}
+
+/// The rungs as a text table.
+fn table(out: &mut dyn Write, rows: &[Rung], buildings: bool) -> anyhow::Result<()> {
+    let res = if buildings {
+        "steps/scale"
+    } else {
+        "dt [s] / FE N"
+    };
+    writeln!(
+        out,
+        "{:18} {:>13} {:>8} {:>10} {:>11} {:>11} {:>11} {:>11} {:>7}{}",
+        "model",
+        res,
+        "steps",
+        "wall [ms]",
+        if buildings { "max F err" } else { "peak err" },
+        if buildings { "disp err" } else { "dur err" },
+        if buildings { "" } else { "e err" },
+        if buildings { "" } else { "L2 err" },
+        "order",
+        if buildings { "  impacts (diff)" } else { "" }
+    )?;
+    for r in rows {
+        let extra = r
+            .impacts
+            .map_or(String::new(), |(n, d)| format!("  {n} ({d:+})"));
+        let (c3, c4) = if buildings {
+            (String::new(), String::new())
+        } else {
+            (
+                format!("{:.2e}", r.restitution_error),
+                format!("{:.2e}", r.force_l2_error),
+            )
+        };
+        writeln!(
+            out,
+            "{:18} {:>13.4e} {:>8} {:>10.4} {:>11.2e} {:>11.2e} {:>11} {:>11} {:>7}{extra}",
+            r.model,
+            r.resolution,
+            r.steps,
+            r.wall_time_s * 1e3,
+            r.peak_force_error,
+            r.duration_error,
+            c3,
+            c4,
+            r.observed_order.map_or("-".into(), |o| format!("{o:.2}"))
+        )?;
     }
     Ok(())
 }
