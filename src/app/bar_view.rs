@@ -142,7 +142,18 @@ pub fn draw(ui: &mut egui::Ui, rect: Rect, slot: u64, solved: &Solved, t: f64) {
             text,
         );
     }
-    // Colour legend.
+    stress_legend(&painter, rect, layout.stress_scale_pa, text);
+    painter.text(
+        Pos2::new(rect.right() - 10.0, rect.top() + 8.0),
+        egui::Align2::RIGHT_TOP,
+        format!("t = {:.4} ms", t * 1e3),
+        font,
+        text,
+    );
+}
+
+/// The colour map's legend in the lower left corner, with the stress it spans.
+fn stress_legend(painter: &egui::Painter, rect: Rect, stress_scale_pa: f64, text: Color32) {
     let legend = Rect::from_min_size(
         Pos2::new(rect.left() + 12.0, rect.bottom() - 28.0),
         egui::vec2(160.0, 10.0),
@@ -161,15 +172,8 @@ pub fn draw(ui: &mut egui::Ui, rect: Rect, slot: u64, solved: &Solved, t: f64) {
     painter.text(
         Pos2::new(legend.left(), legend.bottom() + 2.0),
         egui::Align2::LEFT_TOP,
-        format!("compression  {:.3e} Pa  tension", layout.stress_scale_pa),
+        format!("compression  {:.3e} Pa  tension", stress_scale_pa),
         egui::FontId::proportional(11.0),
-        text,
-    );
-    painter.text(
-        Pos2::new(rect.right() - 10.0, rect.top() + 8.0),
-        egui::Align2::RIGHT_TOP,
-        format!("t = {:.4} ms", t * 1e3),
-        font,
         text,
     );
 }

@@ -208,6 +208,20 @@ pub fn summary(
         );
     }
     let _ = writeln!(s, "results");
+    outcome(&mut s, r);
+    energy_and_sears(&mut s, r);
+    cost(&mut s, r, est);
+    if !r.warnings.is_empty() {
+        let _ = writeln!(s, "warnings");
+        for w in &r.warnings {
+            let _ = writeln!(s, "  - {w}");
+        }
+    }
+    s
+}
+
+/// What the impact did: force, duration, impulse, rebound and contacts.
+fn outcome(s: &mut String, r: &ImpactResult) {
     if !r.impact {
         let _ = writeln!(s, "  no impact");
     }
@@ -245,6 +259,10 @@ pub fn summary(
         r.contacts.len(),
         r.end_s
     );
+}
+
+/// Where the energy went, and the Sears model's own numbers.
+fn energy_and_sears(s: &mut String, r: &ImpactResult) {
     let e = &r.energy;
     let _ = writeln!(
         s,
@@ -269,6 +287,10 @@ pub fn summary(
             d.a_tau
         );
     }
+}
+
+/// The steps the run took, its time and its error estimate.
+fn cost(s: &mut String, r: &ImpactResult, est: Option<&ErrorEstimate>) {
     let refined = r
         .stats
         .refined_from_s
@@ -297,11 +319,4 @@ pub fn summary(
             )
         };
     }
-    if !r.warnings.is_empty() {
-        let _ = writeln!(s, "warnings");
-        for w in &r.warnings {
-            let _ = writeln!(s, "  - {w}");
-        }
-    }
-    s
 }

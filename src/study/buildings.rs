@@ -1,9 +1,11 @@
 //! The paper's building example (Section 4, Figures 12 and 13): the two buildings of Table 1 under
 //! a ground motion, with Sears pounding and without contact.
 
-use super::{Context, Figure, Study, StudyError, StudyOutput, finding, par_map};
+use super::{Context, Figure, Finding, Study, StudyError, StudyOutput, finding, par_map};
 use crate::export::plot::{LinePlot, Series};
-use crate::model::building::{BuildingResult, BuildingScenario, ContactModel, SlabReading, solve};
+use crate::model::building::{
+    BuildingResult, BuildingScenario, ContactModel, ImpactEvent, SlabReading, solve,
+};
 
 pub const STUDIES: &[Study] = &[
     Study {
@@ -143,81 +145,95 @@ fn forces(ctx: &Context) -> Result<StudyOutput, StudyError> {
         .enumerate()
         .max_by(|a, b| a.1.peak_force_n.total_cmp(&b.1.peak_force_n))
     {
-        let sc = &ctx.buildings;
-        let wave = sc.slab_series_impedance_n_s_m() * strongest.approach_velocity_m_s;
-        let pad = 0.25 * strongest.duration_s().max(1e-3);
-        let (t0, t1) = (strongest.start_s - pad, strongest.end_s + pad);
-        let window = |r: &BuildingResult| -> Vec<(f64, f64)> {
-            r.time_s
-                .iter()
-                .zip(&r.force_n)
-                .filter(|(t, _)| (t0..=t1).contains(*t))
-                .map(|(t, f)| ((t - strongest.start_s) * 1e3, f * 1e-6))
-                .collect()
-        };
-        let zoom = Series {
-            name: format!("impact {}", k + 1),
-            points: window(&r),
-        };
-        let t_end = (t1 - strongest.start_s) * 1e3;
-        let level = Series {
-            name: "wave theory Z1Z2/(Z1+Z2) v".into(),
-            points: vec![(0.0, wave * 1e-6), (t_end, wave * 1e-6)],
-        };
-        figures.push(Figure {
-            stem: "fig13b-strongest".into(),
-            plot: LinePlot::new(
-                format!(
-                    "The strongest impact (number {} of {}), at {:.3} s",
-                    k + 1,
-                    r.impacts.len(),
-                    strongest.start_s
-                ),
-                "time from the impact's start [ms]",
-                "pounding force [MN]",
-                [Some(zoom), Some(level)]
-                    .into_iter()
-                    .chain([r_end.as_ref().map(|e| Series {
-                        name: "same record, end reading".into(),
-                        points: window(e),
-                    })])
-                    .flatten()
-                    .collect(),
-            ),
-        });
-        findings.extend([
-            finding("strongest impact: its number", (k + 1) as f64, ""),
-            finding("strongest impact: peak force", strongest.peak_force_n, "N"),
-            finding("strongest impact: duration", strongest.duration_s(), "s"),
-            finding(
-                "strongest impact: approach velocity",
-                strongest.approach_velocity_m_s,
-                "m/s",
-            ),
-            finding("strongest impact: wave-theory force", wave, "N"),
-            finding(
-                "strongest impact: slab round trip 2L/c",
-                [&sc.left, &sc.right]
-                    .iter()
-                    .map(|b| b.slab(b.storeys - 1).round_trip_s(b.mass(b.storeys - 1)))
-                    .fold(0.0, f64::max),
-                "s",
-            ),
-        ]);
-        if let Some(e) = &r_end {
-            findings.extend([
-                finding("end reading: impacts (grouped)", e.impacts.len() as f64, ""),
-                finding(
-                    "end reading: largest pounding force",
-                    e.max_pounding_force_n,
-                    "N",
-                ),
-            ]);
-        }
+        let (figure, found) = strongest_impact(&ctx.buildings, &r, r_end.as_ref(), k, strongest);
+        figures.push(figure);
+        findings.extend(found);
     }
     Ok(StudyOutput {
         figures,
         findings,
         notes: r.warnings.iter().map(|w| w.to_string()).collect(),
     })
+}
+
+/// The strongest impact zoomed in, against the wave-theory force (and the end reading's run
+/// where there is one), with the numbers that describe it.
+fn strongest_impact(
+    sc: &BuildingScenario,
+    r: &BuildingResult,
+    r_end: Option<&BuildingResult>,
+    k: usize,
+    strongest: &ImpactEvent,
+) -> (Figure, Vec<Finding>) {
+    let wave = sc.slab_series_impedance_n_s_m() * strongest.approach_velocity_m_s;
+    let pad = 0.25 * strongest.duration_s().max(1e-3);
+    let (t0, t1) = (strongest.start_s - pad, strongest.end_s + pad);
+    let window = |r: &BuildingResult| -> Vec<(f64, f64)> {
+        r.time_s
+            .iter()
+            .zip(&r.force_n)
+            .filter(|(t, _)| (t0..=t1).contains(*t))
+            .map(|(t, f)| ((t - strongest.start_s) * 1e3, f * 1e-6))
+            .collect()
+    };
+    let zoom = Series {
+        name: format!("impact {}", k + 1),
+        points: window(r),
+    };
+    let t_end = (t1 - strongest.start_s) * 1e3;
+    let level = Series {
+        name: "wave theory Z1Z2/(Z1+Z2) v".into(),
+        points: vec![(0.0, wave * 1e-6), (t_end, wave * 1e-6)],
+    };
+    let figure = Figure {
+        stem: "fig13b-strongest".into(),
+        plot: LinePlot::new(
+            format!(
+                "The strongest impact (number {} of {}), at {:.3} s",
+                k + 1,
+                r.impacts.len(),
+                strongest.start_s
+            ),
+            "time from the impact's start [ms]",
+            "pounding force [MN]",
+            [Some(zoom), Some(level)]
+                .into_iter()
+                .chain([r_end.map(|e| Series {
+                    name: "same record, end reading".into(),
+                    points: window(e),
+                })])
+                .flatten()
+                .collect(),
+        ),
+    };
+    let mut findings = vec![
+        finding("strongest impact: its number", (k + 1) as f64, ""),
+        finding("strongest impact: peak force", strongest.peak_force_n, "N"),
+        finding("strongest impact: duration", strongest.duration_s(), "s"),
+        finding(
+            "strongest impact: approach velocity",
+            strongest.approach_velocity_m_s,
+            "m/s",
+        ),
+        finding("strongest impact: wave-theory force", wave, "N"),
+        finding(
+            "strongest impact: slab round trip 2L/c",
+            [&sc.left, &sc.right]
+                .iter()
+                .map(|b| b.slab(b.storeys - 1).round_trip_s(b.mass(b.storeys - 1)))
+                .fold(0.0, f64::max),
+            "s",
+        ),
+    ];
+    if let Some(e) = r_end {
+        findings.extend([
+            finding("end reading: impacts (grouped)", e.impacts.len() as f64, ""),
+            finding(
+                "end reading: largest pounding force",
+                e.max_pounding_force_n,
+                "N",
+            ),
+        ]);
+    }
+    (figure, findings)
 }
