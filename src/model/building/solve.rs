@@ -2,8 +2,8 @@
 
 use super::elements::Element;
 use super::levels::Level;
-use super::result::{BuildingResult, BuildingStats, group_impacts};
-use super::stepper::{Grid, Stepper};
+use super::result::{BuildingResult, BuildingStats, ImpactEvent, group_impacts};
+use super::stepper::{Grid, Sample, Stepper};
 use super::{BuildingScenario, ContactModel, SlabReading, Warning};
 use crate::model::contact::ContactLaw;
 use crate::model::control::Control;
@@ -145,21 +145,7 @@ pub fn solve_with(
         return Err(step_budget(sc.max_steps, grid.h, 0.0));
     }
     let mut warnings: Vec<Warning> = grid_warning.into_iter().collect();
-    if sc.contact == ContactModel::Sears && sc.reading == SlabReading::Paper {
-        // The validity number of the paper reading (docs/model.md): a tau = k sum(tau_i / Z_i).
-        for (i, level) in levels.iter().enumerate() {
-            let d = sc.level_zone_length(level);
-            let a_tau = sc.level_stiffness(level)
-                * sc.level_slabs(level)
-                    .iter()
-                    .flatten()
-                    .map(|(s, m)| d / s.wave_speed_m_s(*m) / s.impedance_n_s_m(*m))
-                    .sum::<f64>();
-            if a_tau > std::f64::consts::FRAC_PI_2 {
-                warnings.push(Warning::PaperReadingUnstable { level: i, a_tau });
-            }
-        }
-    }
+    warnings.extend(paper_reading_warnings(sc, &levels));
     let mut stepper = Stepper::new(sc, motion, grid, &levels, modes.clone());
     stepper.run(control)?;
     let end_s = grid.total as f64 * grid.h;
@@ -174,78 +160,37 @@ pub fn solve_with(
             relative: energy.balance_error(),
         });
     }
-    let samples = std::mem::take(&mut stepper.samples);
-    let n = samples.len();
-    let mut time_s = Vec::with_capacity(n);
-    let mut ground = Vec::with_capacity(n);
-    let mut floors: [Vec<Vec<f64>>; 2] = [
-        vec![Vec::with_capacity(n); sc.left.storeys],
-        vec![Vec::with_capacity(n); sc.right.storeys],
-    ];
-    let mut floor_v: [Vec<Vec<f64>>; 2] = [
-        vec![Vec::with_capacity(n); sc.left.storeys],
-        vec![Vec::with_capacity(n); sc.right.storeys],
-    ];
-    let mut roof_v = [Vec::with_capacity(n), Vec::with_capacity(n)];
-    let mut roof_a = [Vec::with_capacity(n), Vec::with_capacity(n)];
-    let mut level_force = vec![Vec::with_capacity(n); levels.len()];
-    let mut force = Vec::with_capacity(n);
-    for s in samples {
-        time_s.push(s.t);
-        ground.push(s.ground);
-        for side in 0..2 {
-            for (f, u) in s.floors[side].iter().enumerate() {
-                floors[side][f].push(*u);
-                floor_v[side][f].push(s.floor_v[side][f]);
-            }
-            roof_v[side].push(s.roof_v[side]);
-            roof_a[side].push(s.roof_a[side] + s.ground);
-        }
-        for (l, f) in s.forces.iter().enumerate() {
-            level_force[l].push(*f);
-        }
-        force.push(s.forces.iter().sum());
-    }
+    let h = Histories::of(std::mem::take(&mut stepper.samples), sc, levels.len());
     let roofs = [
-        floors[0].last().cloned().unwrap_or_default(),
-        floors[1].last().cloned().unwrap_or_default(),
+        h.floors[0].last().cloned().unwrap_or_default(),
+        h.floors[1].last().cloned().unwrap_or_default(),
     ];
     let max_by_level = stepper.max_forces();
     let contacts = std::mem::take(&mut stepper.contacts);
     let impacts = group_impacts(&contacts, sc.merge_gap_s);
     if sc.contact == ContactModel::Stereo {
-        let chattering: Vec<usize> = impacts
-            .iter()
-            .map(|e| e.contacts.len())
-            .filter(|&n| n > 10)
-            .collect();
-        if !chattering.is_empty() {
-            warnings.push(Warning::StereoChatter {
-                impacts: chattering.len(),
-                exchanges: chattering.iter().sum(),
-            });
-        }
+        warnings.extend(stereo_chatter(&impacts));
     }
     let (peak_floor, peak_drift, peak_points) = stepper.peaks();
     Ok(BuildingResult {
         contact: sc.contact,
         levels,
         modes,
-        time_s,
-        ground_m_s2: ground,
+        time_s: h.time_s,
+        ground_m_s2: h.ground,
         displacement_m: roofs,
-        velocity_m_s: roof_v,
-        acceleration_m_s2: roof_a,
+        velocity_m_s: h.roof_v,
+        acceleration_m_s2: h.roof_a,
         peak_displacement_m: [
             *peak_floor[0].last().unwrap_or(&0.0),
             *peak_floor[1].last().unwrap_or(&0.0),
         ],
         peak_floor_displacement_m: peak_floor,
         peak_drift_ratio: peak_drift,
-        floor_displacement_m: floors,
-        floor_velocity_m_s: floor_v,
-        force_n: force,
-        level_force_n: level_force,
+        floor_displacement_m: h.floors,
+        floor_velocity_m_s: h.floor_v,
+        force_n: h.force,
+        level_force_n: h.level_force,
         max_pounding_force_n: max_by_level.iter().cloned().fold(0.0, f64::max),
         max_force_by_level_n: max_by_level,
         max_closing_m: stepper.max_closing(),
@@ -264,6 +209,88 @@ pub fn solve_with(
         },
         warnings,
     })
+}
+
+/// The validity number of the paper reading at each level (docs/model.md), a tau = k sum(tau_i /
+/// Z_i): a warning where it passes pi/2.
+fn paper_reading_warnings(sc: &BuildingScenario, levels: &[Level]) -> Vec<Warning> {
+    if !(sc.contact == ContactModel::Sears && sc.reading == SlabReading::Paper) {
+        return vec![];
+    }
+    let mut warnings = vec![];
+    for (i, level) in levels.iter().enumerate() {
+        let d = sc.level_zone_length(level);
+        let a_tau = sc.level_stiffness(level)
+            * sc.level_slabs(level)
+                .iter()
+                .flatten()
+                .map(|(s, m)| d / s.wave_speed_m_s(*m) / s.impedance_n_s_m(*m))
+                .sum::<f64>();
+        if a_tau > std::f64::consts::FRAC_PI_2 {
+            warnings.push(Warning::PaperReadingUnstable { level: i, a_tau });
+        }
+    }
+    warnings
+}
+
+/// Stereomechanics chattering: impacts of more than ten exchanges.
+fn stereo_chatter(impacts: &[ImpactEvent]) -> Option<Warning> {
+    let chattering: Vec<usize> = impacts
+        .iter()
+        .map(|e| e.contacts.len())
+        .filter(|&n| n > 10)
+        .collect();
+    (!chattering.is_empty()).then(|| Warning::StereoChatter {
+        impacts: chattering.len(),
+        exchanges: chattering.iter().sum(),
+    })
+}
+
+/// The run's samples as one history per quantity.
+struct Histories {
+    time_s: Vec<f64>,
+    ground: Vec<f64>,
+    floors: [Vec<Vec<f64>>; 2],
+    floor_v: [Vec<Vec<f64>>; 2],
+    roof_v: [Vec<f64>; 2],
+    /// Absolute roof accelerations (relative plus the ground's).
+    roof_a: [Vec<f64>; 2],
+    level_force: Vec<Vec<f64>>,
+    force: Vec<f64>,
+}
+
+impl Histories {
+    fn of(samples: Vec<Sample>, sc: &BuildingScenario, levels: usize) -> Self {
+        let n = samples.len();
+        let per_floor = |storeys: usize| vec![Vec::with_capacity(n); storeys];
+        let mut h = Histories {
+            time_s: Vec::with_capacity(n),
+            ground: Vec::with_capacity(n),
+            floors: [per_floor(sc.left.storeys), per_floor(sc.right.storeys)],
+            floor_v: [per_floor(sc.left.storeys), per_floor(sc.right.storeys)],
+            roof_v: [Vec::with_capacity(n), Vec::with_capacity(n)],
+            roof_a: [Vec::with_capacity(n), Vec::with_capacity(n)],
+            level_force: vec![Vec::with_capacity(n); levels],
+            force: Vec::with_capacity(n),
+        };
+        for s in samples {
+            h.time_s.push(s.t);
+            h.ground.push(s.ground);
+            for side in 0..2 {
+                for (f, u) in s.floors[side].iter().enumerate() {
+                    h.floors[side][f].push(*u);
+                    h.floor_v[side][f].push(s.floor_v[side][f]);
+                }
+                h.roof_v[side].push(s.roof_v[side]);
+                h.roof_a[side].push(s.roof_a[side] + s.ground);
+            }
+            for (l, f) in s.forces.iter().enumerate() {
+                h.level_force[l].push(*f);
+            }
+            h.force.push(s.forces.iter().sum());
+        }
+        h
+    }
 }
 
 /// A building run over its step budget, with the building command's own keys as the remedy

@@ -72,13 +72,41 @@ impl Stepper<'_> {
 
     /// A contact step of length hh, not yet taken.
     pub(super) fn trial(&self, hh: f64) -> Trial {
-        let t0 = self.time();
-        let t1 = t0 + hh;
-        let ground = self.motion.at(t1);
-        let ground_change = ground - self.motion.at(t0);
+        let ground = self.motion.at(self.time() + hh);
+        let (k_hat, step) = self.free_increment(hh, ground);
+        let (predicted, g) = self.contact_compliance(&k_hat, &step);
+        let (forces, deltas, rates) = self.contact_forces(hh, &predicted, &g);
+        let dq: [Vec<f64>; 2] = std::array::from_fn(|s| {
+            let sign = if s == 0 { -1.0 } else { 1.0 };
+            (0..step[s].len())
+                .map(|k| {
+                    let f: f64 = self
+                        .points
+                        .iter()
+                        .zip(&forces)
+                        .map(|(p, f)| p.r[s][k] * f)
+                        .sum();
+                    step[s][k] + sign * f / k_hat[s][k]
+                })
+                .collect()
+        });
+        Trial {
+            hh,
+            ground,
+            dq,
+            forces,
+            deltas,
+            rates,
+            released: None,
+        }
+    }
+
+    /// Newmark's step in incremental form, k_hat dq = dp + (4/h + 2c) v + 2a, so that short
+    /// steps lose nothing to cancellation: each mode's effective stiffness and its increment
+    /// over hh without a change of the contact forces (the ground at the step's end given).
+    fn free_increment(&self, hh: f64, ground: f64) -> ([Vec<f64>; 2], [Vec<f64>; 2]) {
+        let ground_change = ground - self.motion.at(self.time());
         let full = (hh - self.grid.h).abs() <= 1e-12 * hh;
-        // Newmark's step in incremental form, k_hat dq = dp + (4/h + 2c) v + 2a, so that short
-        // steps lose nothing to cancellation; its increment without a change of contact forces.
         let mut k_hat: [Vec<f64>; 2] = [vec![], vec![]];
         let mut step: [Vec<f64>; 2] = [vec![], vec![]];
         for s in 0..2 {
@@ -99,6 +127,17 @@ impl Stepper<'_> {
                 step[s].push(load / kh);
             }
         }
+        (k_hat, step)
+    }
+
+    /// Each contact point's overlap at the step's end without new forces, less the gap (and
+    /// the slabs' predicted elastic part), and the compliance G: delta_p = predicted_p -
+    /// sum_q G_pq F_q.
+    fn contact_compliance(
+        &self,
+        k_hat: &[Vec<f64>; 2],
+        step: &[Vec<f64>; 2],
+    ) -> (Vec<f64>, Vec<Vec<f64>>) {
         let pred: [Vec<f64>; 2] = std::array::from_fn(|s| {
             self.sides[s]
                 .q
@@ -108,7 +147,6 @@ impl Stepper<'_> {
                 .collect()
         });
         let np = self.points.len();
-        // delta_p = predicted - sum_q G_pq F_q, with the slabs' part.
         let mut predicted = vec![0.0; np];
         let mut g = vec![vec![0.0; np]; np];
         for (i, p) in self.points.iter().enumerate() {
@@ -131,9 +169,20 @@ impl Stepper<'_> {
             // zero (the storeys' springs and dampers stiffen the rigid response): clamp.
             g[i][i] = (g[i][i] + e1).max(0.0);
         }
-        // Nonlinear Gauss-Seidel: each level's monotone scalar equation with the others' forces
-        // fixed, swept until the forces settle (one sweep for one level; the levels couple
-        // through the storeys only, weakly over a fine step).
+        (predicted, g)
+    }
+
+    /// The contact forces at the step's end, with each point's overlap and its rate, by
+    /// nonlinear Gauss-Seidel: each level's monotone scalar equation with the others' forces
+    /// fixed, swept until the forces settle (one sweep for one level; the levels couple through
+    /// the storeys only, weakly over a fine step).
+    fn contact_forces(
+        &self,
+        hh: f64,
+        predicted: &[f64],
+        g: &[Vec<f64>],
+    ) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+        let np = self.points.len();
         let mut forces: Vec<f64> = self.points.iter().map(|p| p.force).collect();
         let mut deltas = vec![0.0; np];
         let mut rates = vec![0.0; np];
@@ -175,29 +224,7 @@ impl Stepper<'_> {
                 break;
             }
         }
-        let dq: [Vec<f64>; 2] = std::array::from_fn(|s| {
-            let sign = if s == 0 { -1.0 } else { 1.0 };
-            (0..step[s].len())
-                .map(|k| {
-                    let f: f64 = self
-                        .points
-                        .iter()
-                        .zip(&forces)
-                        .map(|(p, f)| p.r[s][k] * f)
-                        .sum();
-                    step[s][k] + sign * f / k_hat[s][k]
-                })
-                .collect()
-        });
-        Trial {
-            hh,
-            ground,
-            dq,
-            forces,
-            deltas,
-            rates,
-            released: None,
-        }
+        (forces, deltas, rates)
     }
 
     /// Takes a trial step: the modes, the slabs, the ledger and the contacts.
