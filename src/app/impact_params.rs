@@ -7,7 +7,7 @@ use crate::model::bar::{Bar, EndShape, Section};
 use crate::model::contact::LawKind;
 use crate::model::impact::ModelKind;
 use crate::model::material::MaterialPreset;
-use crate::model::scenario::Reading;
+use crate::model::scenario::{ImpactScenario, Reading};
 use crate::model::settings::IMPACT_SETTINGS;
 use eframe::egui;
 
@@ -78,6 +78,69 @@ fn bar_ui(ui: &mut egui::Ui, fields: &mut Fields, id: &str, bar: &mut Bar) -> bo
     changed
 }
 
+/// The contact's law, stiffness, zone, reading and restitution.
+fn contact_ui(ui: &mut egui::Ui, fields: &mut Fields, sc: &mut ImpactScenario) {
+    fields.gate(ui, "contact.law", |ui| {
+        ui.horizontal(|ui| {
+            ui.label("law").on_hover_text(
+                "Hertz F = k delta^1.5 for rounded ends, linear F = kL delta for flat ones",
+            );
+            ui.selectable_value(&mut sc.contact.law, LawKind::Hertz, "hertz");
+            ui.selectable_value(&mut sc.contact.law, LawKind::Linear, "linear");
+        });
+        false
+    });
+    let mut auto = sc.contact.stiffness.is_none();
+    fields.gate(ui, "contact.stiffness", |ui| {
+        ui.checkbox(&mut auto, "automatic stiffness").on_hover_text(
+            "Hertz from the ends and materials; linear from the paper's E A / (L / n)",
+        );
+        false
+    });
+    if auto {
+        sc.contact.stiffness = None;
+    } else {
+        let mut k = sc
+            .contact
+            .stiffness
+            .unwrap_or_else(|| sc.contact_law().map(|l| l.stiffness).unwrap_or(1e10));
+        let unit = if sc.contact.law == LawKind::Hertz {
+            "N/m^1.5"
+        } else {
+            "N/m"
+        };
+        let spec = Spec {
+            unit,
+            ..spec("contact.stiffness")
+        };
+        fields.row(ui, "contact.stiffness", &spec, &mut k);
+        sc.contact.stiffness = Some(k);
+    }
+    fields.row(
+        ui,
+        "contact.zone_scale",
+        &spec("contact.zone_scale"),
+        &mut sc.contact.zone_scale,
+    );
+    fields.gate(ui, "sears.reading", |ui| {
+        ui.horizontal(|ui| {
+            ui.label("Sears reading").on_hover_text(
+                "paper: delayed planes (not energy-consistent); collocated: a massless zone spring; end: the law at the bar ends (d -> 0)",
+            );
+            for r in Reading::ALL {
+                ui.selectable_value(&mut sc.reading, r, r.name());
+            }
+        });
+        false
+    });
+    fields.row(
+        ui,
+        "contact.restitution",
+        &spec("contact.restitution"),
+        &mut sc.contact.restitution,
+    );
+}
+
 /// The whole panel; returns whether anything changed.
 pub fn ui(
     ui: &mut egui::Ui,
@@ -100,68 +163,8 @@ pub fn ui(
     let contact_open = fields.shows_group("contact.") || fields.shows_group("sears.");
     if contact_open {
         egui::CollapsingHeader::new("Contact")
-        .default_open(true)
-        .show(ui, |ui| {
-            fields.gate(ui, "contact.law", |ui| {
-                ui.horizontal(|ui| {
-                    ui.label("law").on_hover_text(
-                        "Hertz F = k delta^1.5 for rounded ends, linear F = kL delta for flat ones",
-                    );
-                    ui.selectable_value(&mut sc.contact.law, LawKind::Hertz, "hertz");
-                    ui.selectable_value(&mut sc.contact.law, LawKind::Linear, "linear");
-                });
-                false
-            });
-            let mut auto = sc.contact.stiffness.is_none();
-            fields.gate(ui, "contact.stiffness", |ui| {
-                ui.checkbox(&mut auto, "automatic stiffness").on_hover_text(
-                    "Hertz from the ends and materials; linear from the paper's E A / (L / n)",
-                );
-                false
-            });
-            if auto {
-                sc.contact.stiffness = None;
-            } else {
-                let mut k = sc
-                    .contact
-                    .stiffness
-                    .unwrap_or_else(|| sc.contact_law().map(|l| l.stiffness).unwrap_or(1e10));
-                let unit = if sc.contact.law == LawKind::Hertz {
-                    "N/m^1.5"
-                } else {
-                    "N/m"
-                };
-                let spec = Spec {
-                    unit,
-                    ..spec("contact.stiffness")
-                };
-                fields.row(ui, "contact.stiffness", &spec, &mut k);
-                sc.contact.stiffness = Some(k);
-            }
-            fields.row(
-                ui,
-                "contact.zone_scale",
-                &spec("contact.zone_scale"),
-                &mut sc.contact.zone_scale,
-            );
-            fields.gate(ui, "sears.reading", |ui| {
-                ui.horizontal(|ui| {
-                    ui.label("Sears reading").on_hover_text(
-                        "paper: delayed planes (not energy-consistent); collocated: a massless zone spring; end: the law at the bar ends (d -> 0)",
-                    );
-                    for r in Reading::ALL {
-                        ui.selectable_value(&mut sc.reading, r, r.name());
-                    }
-                });
-                false
-            });
-            fields.row(
-                ui,
-                "contact.restitution",
-                &spec("contact.restitution"),
-                &mut sc.contact.restitution,
-            );
-        });
+            .default_open(true)
+            .show(ui, |ui| contact_ui(ui, fields, sc));
     }
     let solver_open = fields.shows_group("solver.")
         || fields.shows_group("fe.")

@@ -83,60 +83,14 @@ impl PoundingApp {
         }
         let storage = cc.storage;
         let fresh = launch.preset.is_some();
-        let mut bar_setup = if fresh {
-            ImpactSetup::default()
-        } else {
-            restore(storage, IMPACT_KEY, &mut errors)
-        };
-        let compare_setup = if fresh {
-            ImpactSetup::default()
-        } else {
-            restore(storage, COMPARE_KEY, &mut errors)
-        };
-        let ui_state = storage
-            .and_then(|s| s.get_string(UI_KEY))
-            .unwrap_or_default();
-        let dark = !ui_state.contains("light");
-        let mut scene = ui_state
-            .split(';')
-            .find_map(|p| p.strip_prefix("scene="))
-            .and_then(SceneKind::from_name)
-            .unwrap_or(SceneKind::BarImpact);
-        if let Some(s) = launch.scene {
-            scene = s;
-        }
-        // A launch preset goes to the scene it is written for.
-        let building_launch = launch
-            .preset
-            .as_deref()
-            .filter(|p| preset::find(p).is_ok_and(|(text, _)| preset::scene(&text) == "buildings"));
-        if let Some(p) = launch
-            .preset
-            .as_deref()
-            .filter(|_| building_launch.is_none())
-        {
-            match preset::load_for::<ImpactSetup>(p, "impact") {
-                Ok(s) => bar_setup = s,
-                Err(e) => errors.push(e.to_string()),
-            }
-        }
-        let mut building_setup: crate::io::building_settings::BuildingSetup =
-            preset::load_for("paper-buildings", "buildings").unwrap_or_default();
-        if let Some(p) = building_launch {
-            match preset::load_for(p, "buildings") {
-                Ok(s) => building_setup = s,
-                Err(e) => errors.push(e.to_string()),
-            }
-            if launch.scene.is_none() {
-                scene = SceneKind::Buildings;
-            }
-        } else if let Some(text) = storage.and_then(|s| s.get_string(BUILDINGS_KEY)) {
-            let mut restored = building_setup.clone();
-            match preset::apply_text(&mut restored, &text, "the last session's building scene") {
-                Ok(()) => building_setup = restored,
-                Err(e) => errors.push(format!("{e} (the paper's buildings are used)")),
-            }
-        }
+        let Start {
+            bar: bar_setup,
+            compare: compare_setup,
+            buildings: building_setup,
+            scene,
+            dark,
+            building_launch,
+        } = start(storage, &launch, &mut errors);
         let ctx = &cc.egui_ctx;
         ctx.set_theme(if dark {
             egui::Theme::Dark
@@ -192,8 +146,7 @@ impl PoundingApp {
                 .unwrap_or_else(|| preset::DEFAULT_PRESET.into()),
             building_preset: building_launch
                 .filter(|p| EMBEDDED.iter().any(|(n, _)| n == p))
-                .unwrap_or("paper-buildings")
-                .to_string(),
+                .unwrap_or_else(|| "paper-buildings".into()),
             path: "scene.toml".into(),
             message: (!errors.is_empty()).then(|| (errors.join("; "), true)),
             exporter: export::Exporter::default(),
@@ -414,4 +367,86 @@ pub fn run(launch: Launch) -> Result<(), eframe::Error> {
         options,
         Box::new(move |cc| Ok(Box::new(PoundingApp::new(cc, launch)))),
     )
+}
+
+/// What a launch starts from: the last session's scenes (unless a preset was given), the
+/// launch's preset in the scene it is written for, the theme and the scene shown.
+struct Start {
+    bar: ImpactSetup,
+    compare: ImpactSetup,
+    buildings: crate::io::building_settings::BuildingSetup,
+    scene: SceneKind,
+    dark: bool,
+    /// The launch preset, where it is a buildings preset.
+    building_launch: Option<String>,
+}
+
+fn start(
+    storage: Option<&dyn eframe::Storage>,
+    launch: &Launch,
+    errors: &mut Vec<String>,
+) -> Start {
+    let fresh = launch.preset.is_some();
+    let mut bar_setup = if fresh {
+        ImpactSetup::default()
+    } else {
+        restore(storage, IMPACT_KEY, errors)
+    };
+    let compare_setup = if fresh {
+        ImpactSetup::default()
+    } else {
+        restore(storage, COMPARE_KEY, errors)
+    };
+    let ui_state = storage
+        .and_then(|s| s.get_string(UI_KEY))
+        .unwrap_or_default();
+    let dark = !ui_state.contains("light");
+    let mut scene = ui_state
+        .split(';')
+        .find_map(|p| p.strip_prefix("scene="))
+        .and_then(SceneKind::from_name)
+        .unwrap_or(SceneKind::BarImpact);
+    if let Some(s) = launch.scene {
+        scene = s;
+    }
+    // A launch preset goes to the scene it is written for.
+    let building_launch = launch
+        .preset
+        .as_deref()
+        .filter(|p| preset::find(p).is_ok_and(|(text, _)| preset::scene(&text) == "buildings"));
+    if let Some(p) = launch
+        .preset
+        .as_deref()
+        .filter(|_| building_launch.is_none())
+    {
+        match preset::load_for::<ImpactSetup>(p, "impact") {
+            Ok(s) => bar_setup = s,
+            Err(e) => errors.push(e.to_string()),
+        }
+    }
+    let mut building_setup: crate::io::building_settings::BuildingSetup =
+        preset::load_for("paper-buildings", "buildings").unwrap_or_default();
+    if let Some(p) = building_launch {
+        match preset::load_for(p, "buildings") {
+            Ok(s) => building_setup = s,
+            Err(e) => errors.push(e.to_string()),
+        }
+        if launch.scene.is_none() {
+            scene = SceneKind::Buildings;
+        }
+    } else if let Some(text) = storage.and_then(|s| s.get_string(BUILDINGS_KEY)) {
+        let mut restored = building_setup.clone();
+        match preset::apply_text(&mut restored, &text, "the last session's building scene") {
+            Ok(()) => building_setup = restored,
+            Err(e) => errors.push(format!("{e} (the paper's buildings are used)")),
+        }
+    }
+    Start {
+        bar: bar_setup,
+        compare: compare_setup,
+        buildings: building_setup,
+        scene,
+        dark,
+        building_launch: building_launch.map(str::to_string),
+    }
 }

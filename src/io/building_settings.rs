@@ -27,76 +27,16 @@ impl Default for BuildingSetup {
 
 impl BuildingSetup {
     pub fn apply(&mut self, key: &str, value: &SettingValue) -> Result<(), InputError> {
-        let sc = &mut self.scenario;
         if let Some((side, field)) = key.split_once('.')
             && (side == "left" || side == "right")
         {
-            let b = if side == "left" {
-                &mut sc.left
-            } else {
-                &mut sc.right
-            };
-            match field {
-                "storeys" => b.storeys = count(key, value)?,
-                "masses" | "mass" => b.masses_kg = numbers(key, value)?,
-                "stiffnesses" | "stiffness" => b.stiffnesses_n_m = numbers(key, value)?,
-                "heights" | "height" => b.heights_m = numbers(key, value)?,
-                "period" => {
-                    let t = checked(key, value)?;
-                    let mut check = sc.clone();
-                    check.contact = crate::model::building::ContactModel::None;
-                    check.validate().map_err(|e| {
-                        InputError::new(key, format!("needs valid storeys first: {e}"))
-                    })?;
-                    let b = if side == "left" {
-                        &mut sc.left
-                    } else {
-                        &mut sc.right
-                    };
-                    b.set_period(t);
-                }
-                "damping_ratio" => b.damping_ratio = number(key, value)?,
-                "damping" => {
-                    let modes = match b.damping {
-                        DampingModel::Rayleigh { modes } => modes,
-                        DampingModel::Modal => [1, 2],
-                    };
-                    b.damping = choice(BUILDING_SETTINGS, key, value, |s| match s {
-                        "modal" => Some(DampingModel::Modal),
-                        "rayleigh" => Some(DampingModel::Rayleigh { modes }),
-                        _ => None,
-                    })?
-                }
-                "rayleigh_modes" => {
-                    let m = numbers(key, value)?;
-                    let whole = |x: f64| x.fract() == 0.0 && (1.0..=100.0).contains(&x);
-                    if m.len() != 2 || !whole(m[0]) || !whole(m[1]) {
-                        return Err(InputError::new(
-                            key,
-                            format!(
-                                "{} is not allowed: two mode numbers from 1, as i,j",
-                                value.describe()
-                            ),
-                        ));
-                    }
-                    b.damping = DampingModel::Rayleigh {
-                        modes: [m[0] as usize, m[1] as usize],
-                    };
-                }
-                "velocity" => {
-                    sc.initial_velocity_m_s[if side == "left" { 0 } else { 1 }] =
-                        number(key, value)?
-                }
-                "slab_length" => b.slab_lengths_m = numbers(key, value)?,
-                "slab_width" => b.slab_widths_m = numbers(key, value)?,
-                "slab_thickness" => b.slab_thicknesses_m = numbers(key, value)?,
-                "youngs_modulus" => b.slab_youngs_pa = numbers(key, value)?,
-                _ => return Err(unknown(key)),
-            }
-            return Ok(());
+            return self.apply_side(side == "left", field, key, value);
         }
+        if key.starts_with("motion.") {
+            return self.apply_motion(key, value);
+        }
+        let sc = &mut self.scenario;
         let auto = |v: &SettingValue| matches!(v, SettingValue::Text(s) if s == "auto");
-        let m = &mut self.motion;
         match key {
             "contact.model" => {
                 sc.contact = choice(BUILDING_SETTINGS, key, value, ContactModel::from_name)?
@@ -126,6 +66,88 @@ impl BuildingSetup {
             }
             "slab.damping" => sc.slab_damping = number(key, value)?,
             "impact.merge_gap_s" => sc.merge_gap_s = number(key, value)?,
+            "solver.tolerance" => sc.tolerance = number(key, value)?,
+            "solver.steps_per_scale" => {
+                sc.steps_per_scale = if auto(value) {
+                    None
+                } else {
+                    Some(number(key, value)?)
+                }
+            }
+            "solver.max_step" => sc.max_step_s = number(key, value)?,
+            "solver.max_steps" => sc.max_steps = count(key, value)?,
+            _ => return Err(unknown(key)),
+        }
+        Ok(())
+    }
+
+    /// A key of one building (`left.` or `right.`).
+    fn apply_side(
+        &mut self,
+        left: bool,
+        field: &str,
+        key: &str,
+        value: &SettingValue,
+    ) -> Result<(), InputError> {
+        let sc = &mut self.scenario;
+        let b = if left { &mut sc.left } else { &mut sc.right };
+        match field {
+            "storeys" => b.storeys = count(key, value)?,
+            "masses" | "mass" => b.masses_kg = numbers(key, value)?,
+            "stiffnesses" | "stiffness" => b.stiffnesses_n_m = numbers(key, value)?,
+            "heights" | "height" => b.heights_m = numbers(key, value)?,
+            "period" => {
+                let t = checked(key, value)?;
+                let mut check = sc.clone();
+                check.contact = crate::model::building::ContactModel::None;
+                check
+                    .validate()
+                    .map_err(|e| InputError::new(key, format!("needs valid storeys first: {e}")))?;
+                let b = if left { &mut sc.left } else { &mut sc.right };
+                b.set_period(t);
+            }
+            "damping_ratio" => b.damping_ratio = number(key, value)?,
+            "damping" => {
+                let modes = match b.damping {
+                    DampingModel::Rayleigh { modes } => modes,
+                    DampingModel::Modal => [1, 2],
+                };
+                b.damping = choice(BUILDING_SETTINGS, key, value, |s| match s {
+                    "modal" => Some(DampingModel::Modal),
+                    "rayleigh" => Some(DampingModel::Rayleigh { modes }),
+                    _ => None,
+                })?
+            }
+            "rayleigh_modes" => {
+                let m = numbers(key, value)?;
+                let whole = |x: f64| x.fract() == 0.0 && (1.0..=100.0).contains(&x);
+                if m.len() != 2 || !whole(m[0]) || !whole(m[1]) {
+                    return Err(InputError::new(
+                        key,
+                        format!(
+                            "{} is not allowed: two mode numbers from 1, as i,j",
+                            value.describe()
+                        ),
+                    ));
+                }
+                b.damping = DampingModel::Rayleigh {
+                    modes: [m[0] as usize, m[1] as usize],
+                };
+            }
+            "velocity" => sc.initial_velocity_m_s[if left { 0 } else { 1 }] = number(key, value)?,
+            "slab_length" => b.slab_lengths_m = numbers(key, value)?,
+            "slab_width" => b.slab_widths_m = numbers(key, value)?,
+            "slab_thickness" => b.slab_thicknesses_m = numbers(key, value)?,
+            "youngs_modulus" => b.slab_youngs_pa = numbers(key, value)?,
+            _ => return Err(unknown(key)),
+        }
+        Ok(())
+    }
+
+    /// A key of the ground motion (`motion.`).
+    fn apply_motion(&mut self, key: &str, value: &SettingValue) -> Result<(), InputError> {
+        let m = &mut self.motion;
+        match key {
             "motion.file" => {
                 let name = text(key, value)?;
                 m.set_source(name).map_err(|e| InputError::new(key, e))?;
@@ -158,16 +180,6 @@ impl BuildingSetup {
                 m.synthetic.seed = x as u64;
             }
             "motion.length" => m.synthetic.duration_s = checked(key, value)?,
-            "solver.tolerance" => sc.tolerance = number(key, value)?,
-            "solver.steps_per_scale" => {
-                sc.steps_per_scale = if auto(value) {
-                    None
-                } else {
-                    Some(number(key, value)?)
-                }
-            }
-            "solver.max_step" => sc.max_step_s = number(key, value)?,
-            "solver.max_steps" => sc.max_steps = count(key, value)?,
             _ => return Err(unknown(key)),
         }
         Ok(())
