@@ -19,8 +19,8 @@ use crate::model::building::{
     solve_with,
 };
 use crate::model::control::Control;
+use crate::model::error::SolveError;
 use crate::model::field::BarWaves;
-use crate::model::impact::SolveError;
 use crate::model::motion::{G, GroundMotion};
 use crate::render::bars::GpuHistory;
 use eframe::egui::{self, Color32};

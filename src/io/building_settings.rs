@@ -7,7 +7,7 @@ pub const SYNTHETIC: &str = "synthetic";
 use super::motion::Units;
 use super::settings::{SettingValue, choice, count, number, numbers, text};
 use crate::model::building::{BuildingScenario, ContactModel, DampingModel, SlabReading};
-use crate::model::scenario::InputError;
+use crate::model::error::InputError;
 use crate::model::settings::BUILDING_SETTINGS;
 
 #[derive(Debug, Clone, PartialEq)]

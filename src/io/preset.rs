@@ -204,7 +204,7 @@ pub trait Configurable {
         &mut self,
         key: &str,
         value: &SettingValue,
-    ) -> Result<(), crate::model::scenario::InputError>;
+    ) -> Result<(), crate::model::error::InputError>;
 }
 
 impl Configurable for ImpactSetup {
@@ -212,7 +212,7 @@ impl Configurable for ImpactSetup {
         &mut self,
         key: &str,
         value: &SettingValue,
-    ) -> Result<(), crate::model::scenario::InputError> {
+    ) -> Result<(), crate::model::error::InputError> {
         self.apply(key, value)
     }
 }
@@ -222,7 +222,7 @@ impl Configurable for super::building_settings::BuildingSetup {
         &mut self,
         key: &str,
         value: &SettingValue,
-    ) -> Result<(), crate::model::scenario::InputError> {
+    ) -> Result<(), crate::model::error::InputError> {
         self.apply(key, value)
     }
 }

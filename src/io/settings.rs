@@ -4,9 +4,10 @@
 
 use crate::model::bar::{EndShape, Section};
 use crate::model::contact::LawKind;
+use crate::model::error::InputError;
 use crate::model::impact::ModelKind;
 use crate::model::material::MaterialPreset;
-use crate::model::scenario::{ImpactScenario, InputError, Reading};
+use crate::model::scenario::{ImpactScenario, Reading};
 use crate::model::settings::{self, IMPACT_SETTINGS, Setting};
 
 /// A value as typed by a user: TOML gives it typed, the command line as text.

@@ -7,8 +7,8 @@ use crate::io::preset;
 use crate::io::settings::{ImpactSetup, SettingValue};
 use crate::model::building::{BuildingResult, BuildingScenario, ContactModel};
 use crate::model::control::Control;
+use crate::model::error::InputError;
 use crate::model::impact::{ImpactResult, ModelKind};
-use crate::model::scenario::InputError;
 
 /// A scene's settings: the step's preset with its overrides.
 // One per step solve: the variants' sizes do not matter, plain fields read better than boxes.

@@ -6,6 +6,7 @@ pub mod bar;
 pub mod building;
 pub mod contact;
 pub mod control;
+pub mod error;
 pub mod field;
 pub mod history;
 pub mod hysteresis;

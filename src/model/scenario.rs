@@ -6,7 +6,6 @@ use super::contact::{
     ContactLaw, LawKind, PAPER_DIVISIONS, hertz_stiffness, paper_linear_stiffness,
 };
 use super::material::MaterialPreset;
-use std::fmt;
 
 /// Which reading of the Sears model (docs/model.md, "Three readings").
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -137,32 +136,7 @@ impl Default for ImpactScenario {
     }
 }
 
-/// Bad input: which field, what it was, what is allowed.
-#[derive(Debug, Clone, PartialEq)]
-pub struct InputError {
-    /// The key at fault (`bar2.length`).
-    pub field: String,
-    /// What is wrong, with the allowed range.
-    pub message: String,
-}
-
-impl InputError {
-    /// An error naming `field`.
-    pub fn new(field: impl Into<String>, message: impl Into<String>) -> Self {
-        InputError {
-            field: field.into(),
-            message: message.into(),
-        }
-    }
-}
-
-impl fmt::Display for InputError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}: {}", self.field, self.message)
-    }
-}
-
-impl std::error::Error for InputError {}
+pub use super::error::InputError;
 
 /// A value checked against its row of the impact settings table.
 fn check(field: &str, value: f64) -> Result<(), InputError> {
@@ -277,42 +251,6 @@ impl ImpactScenario {
         check("solver.max_steps", self.solver.max_steps as f64)?;
         check("fe.segments", self.fe.segments as f64)?;
         check("fe.courant", self.fe.courant)?;
-        Ok(())
-    }
-
-    /// What a model needs beyond the ranges: only what it uses ("leave out what a given scene
-    /// does not need"). The Hertz law needs a rounded end or a stiffness, but wave theory and
-    /// stereomechanics have no contact law.
-    pub fn validate_for(&self, model: super::impact::ModelKind) -> Result<(), InputError> {
-        use super::impact::ModelKind;
-        self.validate()?;
-        let hertz = match model {
-            ModelKind::Sears | ModelKind::Fe => self.contact.law == LawKind::Hertz,
-            ModelKind::LumpedHertz => true,
-            ModelKind::Wave | ModelKind::Stereo | ModelKind::LumpedLinear | ModelKind::Kelvin => {
-                false
-            }
-        };
-        if hertz
-            && !(self.contact.law == LawKind::Hertz && self.contact.stiffness.is_some())
-            && hertz_stiffness(&self.bar1, &self.bar2).is_none()
-        {
-            return Err(InputError::new(
-                "contact.law",
-                "hertz needs a rounded end on at least one bar (bar1.end_radius or bar2.end_radius), or an explicit contact.stiffness; both ends are flat",
-            ));
-        }
-        // A Kelvin-Voigt link that cannot pull reaches e = 0 only with infinite damping
-        // (e ~ 1 / (4 xi^2)); stereomechanics takes e = 0 as a plastic impact.
-        if model == ModelKind::Kelvin && self.contact.restitution <= 0.0 {
-            return Err(InputError::new(
-                "contact.restitution",
-                format!(
-                    "{} is not allowed for kelvin: a link that cannot pull gives e = 0 only with infinite damping; must lie in (0, 1]",
-                    super::settings::shown(self.contact.restitution)
-                ),
-            ));
-        }
         Ok(())
     }
 

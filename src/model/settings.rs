@@ -5,7 +5,7 @@
 //!
 //! A key with `barN` stands for `bar1` and `bar2`, one with `SIDE` for `left` and `right`.
 
-use super::scenario::InputError;
+use super::error::InputError;
 use std::fmt;
 
 /// A closed or open interval of accepted values.

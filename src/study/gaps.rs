@@ -4,7 +4,7 @@
 use super::{Cancelled, Control, par_map};
 use crate::model::building::gaps::{GapAssessment, assess};
 use crate::model::building::{BuildingScenario, ContactModel, solve};
-use crate::model::impact::SolveError;
+use crate::model::error::SolveError;
 use crate::model::motion::{G, GroundMotion};
 
 /// One record's gaps.

@@ -28,13 +28,13 @@ pub enum StudyError {
     #[error("{assignment}: {source}")]
     Setting {
         assignment: String,
-        source: crate::model::scenario::InputError,
+        source: crate::model::error::InputError,
     },
     /// A solve the study cannot do without failed.
     #[error("{what}: {source}")]
     Solve {
         what: String,
-        source: crate::model::impact::SolveError,
+        source: crate::model::error::SolveError,
     },
     /// The run a study's other numbers are relative to has no result.
     #[error("no reference: {0}")]

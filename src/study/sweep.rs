@@ -3,8 +3,8 @@
 
 use super::{Cancelled, Control, par_map};
 use crate::io::settings::ImpactSetup;
+use crate::model::error::InputError;
 use crate::model::impact::{ModelKind, Workspace, summary_with};
-use crate::model::scenario::InputError;
 use crate::model::settings::{IMPACT_SETTINGS, Kind, concrete_keys};
 use serde::Serialize;
 

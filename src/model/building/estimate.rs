@@ -10,7 +10,7 @@
 
 use super::{BuildingResult, BuildingScenario};
 use crate::model::control::Control;
-use crate::model::impact::SolveError;
+use crate::model::error::SolveError;
 use crate::model::impact::estimate::rel;
 use crate::model::motion::GroundMotion;
 

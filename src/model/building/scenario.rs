@@ -5,7 +5,7 @@ use super::levels::{Attachment, Level, elevations, levels};
 use super::modal::{DampingModel, Modes};
 use super::{ContactModel, SlabReading};
 use crate::model::contact::{PAPER_DIVISIONS, REFERENCE_OVERLAP_M};
-use crate::model::scenario::InputError;
+use crate::model::error::InputError;
 
 /// Concrete of the paper's slabs: E = 25 GPa (its contact stiffness, 15 GN/m, follows from it).
 pub const SLAB_YOUNGS_MODULUS_PA: f64 = 25e9;

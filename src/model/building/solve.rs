@@ -7,7 +7,7 @@ use super::stepper::{Grid, Sample, Stepper};
 use super::{BuildingScenario, ContactModel, SlabReading, Warning};
 use crate::model::contact::ContactLaw;
 use crate::model::control::Control;
-use crate::model::impact::SolveError;
+use crate::model::error::SolveError;
 use crate::model::impact::timestep::contact_time_scale;
 use crate::model::motion::GroundMotion;
 use std::time::Instant;
@@ -296,7 +296,7 @@ impl Histories {
 /// A building run over its step budget, with the building command's own keys as the remedy
 /// (the impact scene's solver.dt and solver.window do not exist here).
 pub(crate) fn step_budget(max_steps: usize, dt_s: f64, reached_s: f64) -> SolveError {
-    SolveError::Input(crate::model::scenario::InputError::new(
+    SolveError::Input(crate::model::error::InputError::new(
         "solver.max_steps",
         format!(
             "step budget exceeded: the run needs more than solver.max_steps = {max_steps} steps (step {dt_s:e} s, reached t = {reached_s:e} s); raise solver.max_steps, or shorten the record with motion.duration"

@@ -16,7 +16,6 @@
 //! sum of independent counts, and a run that does not keep its initial energy shows it.
 
 use super::{ImpactResult, ModelKind};
-use crate::model::contact::ContactLaw;
 use crate::model::scenario::ImpactScenario;
 
 /// Energies at a sequence of instants [J].
@@ -43,16 +42,6 @@ impl EnergyHistory {
     }
 }
 
-/// The contact law a model's stored energy follows, if it stores any.
-fn stored_law(model: ModelKind, sc: &ImpactScenario) -> Option<ContactLaw> {
-    match model {
-        ModelKind::Sears | ModelKind::Fe => sc.contact_law().ok(),
-        ModelKind::LumpedHertz => sc.hertz_law().ok(),
-        ModelKind::LumpedLinear | ModelKind::Kelvin => Some(sc.linear_law()),
-        ModelKind::Wave | ModelKind::Stereo => None,
-    }
-}
-
 /// The energy history of `r` (solved from `sc`) at about `samples` instants: the result's own
 /// samples, every one of them or evenly thinned, always with the first and the last.
 pub fn energy_history(sc: &ImpactScenario, r: &ImpactResult, samples: usize) -> EnergyHistory {
@@ -72,7 +61,7 @@ pub fn energy_history(sc: &ImpactScenario, r: &ImpactResult, samples: usize) -> 
     });
     let [m1, m2] = r.masses_kg;
     let [v1, v2] = r.initial_velocities_m_s;
-    let law = stored_law(r.model, sc);
+    let law = r.model.law(sc).and_then(Result::ok);
     let mut h = EnergyHistory::default();
     let mut by_bar: [Vec<f64>; 2] = [Vec::new(), Vec::new()];
     for &k in &picks {

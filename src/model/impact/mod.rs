@@ -15,10 +15,12 @@ pub mod wave;
 pub use sears::Workspace;
 pub use warning::{KeptBecause, Outside, VALIDATED, Warning};
 
-use crate::model::control::{Cancelled, Control};
+use crate::model::control::Control;
 
+use super::contact::{ContactLaw, LawKind, hertz_stiffness};
+use super::error::InputError;
 use super::field::BarWaves;
-use super::scenario::{ImpactScenario, InputError, Reading};
+use super::scenario::{ImpactScenario, Reading};
 use std::time::Instant;
 
 /// Energy created (relative to the kinetic energy of the relative motion) above which the paper
@@ -75,6 +77,55 @@ impl ModelKind {
     /// The model of that name.
     pub fn from_name(s: &str) -> Option<Self> {
         Self::ALL.into_iter().find(|m| m.name() == s)
+    }
+
+    /// The contact law the model uses on `sc`, if it uses one (wave theory and stereomechanics
+    /// have none): the one place that maps a model to its law.
+    pub fn law(self, sc: &ImpactScenario) -> Option<Result<ContactLaw, InputError>> {
+        match self {
+            ModelKind::Sears | ModelKind::Fe => Some(sc.contact_law()),
+            ModelKind::LumpedHertz => Some(sc.hertz_law()),
+            ModelKind::LumpedLinear | ModelKind::Kelvin => Some(Ok(sc.linear_law())),
+            ModelKind::Wave | ModelKind::Stereo => None,
+        }
+    }
+
+    /// The kind of law the model uses on `sc`, without building it.
+    pub fn law_kind(self, sc: &ImpactScenario) -> Option<LawKind> {
+        match self {
+            ModelKind::Sears | ModelKind::Fe => Some(sc.contact.law),
+            ModelKind::LumpedHertz => Some(LawKind::Hertz),
+            ModelKind::LumpedLinear | ModelKind::Kelvin => Some(LawKind::Linear),
+            ModelKind::Wave | ModelKind::Stereo => None,
+        }
+    }
+
+    /// What the model needs of `sc` beyond the ranges: only what it uses ("leave out what a
+    /// given scene does not need"). The Hertz law needs a rounded end or a stiffness, but wave
+    /// theory and stereomechanics have no contact law.
+    pub fn validate(self, sc: &ImpactScenario) -> Result<(), InputError> {
+        sc.validate()?;
+        if self.law_kind(sc) == Some(LawKind::Hertz)
+            && !(sc.contact.law == LawKind::Hertz && sc.contact.stiffness.is_some())
+            && hertz_stiffness(&sc.bar1, &sc.bar2).is_none()
+        {
+            return Err(InputError::new(
+                "contact.law",
+                "hertz needs a rounded end on at least one bar (bar1.end_radius or bar2.end_radius), or an explicit contact.stiffness; both ends are flat",
+            ));
+        }
+        // A Kelvin-Voigt link that cannot pull reaches e = 0 only with infinite damping
+        // (e ~ 1 / (4 xi^2)); stereomechanics takes e = 0 as a plastic impact.
+        if self == ModelKind::Kelvin && sc.contact.restitution <= 0.0 {
+            return Err(InputError::new(
+                "contact.restitution",
+                format!(
+                    "{} is not allowed for kelvin: a link that cannot pull gives e = 0 only with infinite damping; must lie in (0, 1]",
+                    crate::model::settings::shown(sc.contact.restitution)
+                ),
+            ));
+        }
+        Ok(())
     }
 
     /// Whether the model conserves energy (an elastic contact and elastic bodies).
@@ -333,64 +384,7 @@ impl ImpactResult {
     }
 }
 
-/// Errors a solve can end with.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum SolveError {
-    /// An input refused, by name.
-    #[error(transparent)]
-    Input(#[from] InputError),
-    #[error(
-        "step budget exceeded: the run needs more than solver.max_steps = {max_steps} steps (dt = {dt_s:e} s, reached t = {reached_s:e} s); raise solver.max_steps, coarsen solver.dt or shorten solver.window"
-    )]
-    /// The run needs more steps than `solver.max_steps`.
-    Budget {
-        /// The budget.
-        max_steps: usize,
-        /// The step [s].
-        dt_s: f64,
-        /// How far the run got [s].
-        reached_s: f64,
-    },
-    /// An FE run whose mesh and steps would take longer than its work budget.
-    #[error(
-        "work budget exceeded: fe.segments = {segments} per bar needs about {node_steps:.2e} node updates, more than {max:.0e}; lower fe.segments or shorten solver.window"
-    )]
-    FeWork {
-        /// Segments per bar.
-        segments: usize,
-        /// Node updates the run would take.
-        node_steps: f64,
-        /// The budget.
-        max: f64,
-    },
-    /// A run whose histories would outgrow the memory budget.
-    #[error(
-        "memory budget exceeded at t = {at_s:.4} s: the histories would take more than {bytes:.1e} bytes; shorten the record (motion.duration), raise solver.max_step or lower solver.max_steps"
-    )]
-    Memory {
-        /// How far the run got [s].
-        at_s: f64,
-        /// The budget [bytes].
-        bytes: f64,
-    },
-    /// A run whose numbers grew without bound; no result is given.
-    #[error("the run diverged at t = {at_s:.4} s: {why}")]
-    Diverged {
-        /// When the run stopped [s].
-        at_s: f64,
-        /// What grew, and what to change (fitted to the element and command that failed).
-        why: String,
-    },
-    /// Stopped through its [`Control`] (a newer request in the window, or Cancel).
-    #[error("cancelled")]
-    Cancelled,
-}
-
-impl From<Cancelled> for SolveError {
-    fn from(_: Cancelled) -> Self {
-        SolveError::Cancelled
-    }
-}
+pub use crate::model::error::SolveError;
 
 /// What a model hands to [`finish`].
 /// One contact interval as a solver records it: when it began, when it ended (`None` while it is
@@ -627,7 +621,7 @@ pub fn summary_with(
     if model != ModelKind::Sears || scenario.approach_velocity_m_s() <= 0.0 {
         return solve(model, scenario).map(|r| r.summary());
     }
-    scenario.validate_for(model)?;
+    model.validate(scenario)?;
     sears::summary(scenario, Control::never(), ws)
 }
 
@@ -642,7 +636,7 @@ pub fn solve_with(
     scenario: &ImpactScenario,
     control: &Control,
 ) -> Result<ImpactResult, SolveError> {
-    scenario.validate_for(model)?;
+    model.validate(scenario)?;
     let start = Instant::now();
     let w = scenario.approach_velocity_m_s();
     let mut raw = if w <= 0.0 {
@@ -651,11 +645,9 @@ pub fn solve_with(
         match model {
             ModelKind::Sears => sears::solve(scenario, control)?,
             ModelKind::Wave => wave::solve(scenario, control)?,
-            ModelKind::LumpedHertz => {
-                lumped::solve_elastic(scenario, scenario.hertz_law()?, control)?
-            }
-            ModelKind::LumpedLinear => {
-                lumped::solve_elastic(scenario, scenario.linear_law(), control)?
+            ModelKind::LumpedHertz | ModelKind::LumpedLinear => {
+                let law = model.law(scenario).expect("a lumped model has a law")?;
+                lumped::solve_elastic(scenario, law, control)?
             }
             ModelKind::Kelvin => lumped::solve_kelvin(scenario, control)?,
             ModelKind::Stereo => lumped::solve_stereo(scenario),

@@ -27,9 +27,10 @@ use super::timestep::{choose_step, contact_time_scale};
 use super::{ContactSpan, Raw, SearsDiagnostics, SolveError, Times, Warning, peak_between};
 use crate::model::contact::{ContactLaw, LawKind};
 use crate::model::control::{CHECK_EVERY, Control};
+use crate::model::error::InputError;
 use crate::model::field::{BarWaves, History};
 use crate::model::history::{Series, Tap, push_reserved};
-use crate::model::scenario::{ImpactScenario, InputError, Reading};
+use crate::model::scenario::{ImpactScenario, Reading};
 
 struct Channel {
     inv_z: f64,

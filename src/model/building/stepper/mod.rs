@@ -30,7 +30,7 @@ use super::result::{BuildingEnergy, RawContact};
 use super::slab::{SlabMark, SlabWaves};
 use super::{BuildingScenario, ContactModel, SlabReading};
 use crate::model::control::{CHECK_EVERY, Control};
-use crate::model::impact::SolveError;
+use crate::model::error::SolveError;
 use crate::model::motion::GroundMotion;
 use crate::model::root::bracket;
 
