@@ -18,29 +18,18 @@ use crate::study::sweep::{self, Point};
 use eframe::egui;
 use std::time::Duration;
 
-/// A sensible range for a key when it is picked: (from, to, geometric).
+/// The range a sweep of `key` starts from when it is picked: (from, to, geometric), the span of
+/// the key's slider in the settings table (the one place its ranges are written).
 fn default_range(key: &str) -> (f64, f64, bool) {
-    let field = key.rsplit('.').next().unwrap_or(key);
-    match field {
-        "length" => (0.1, 10.0, true),
-        "velocity" => (0.01, 100.0, true),
-        "radius" => (0.01, 0.5, true),
-        "end_radius" => (0.005, 5.0, true),
-        "area" => (1e-4, 1.0, true),
-        "added_mass" => (0.0, 500.0, false),
-        "youngs_modulus" => (1e9, 4e11, true),
-        "poisson_ratio" => (0.0, 0.49, false),
-        "density" => (1000.0, 20000.0, true),
-        "stiffness" => (1e8, 1e14, true),
-        "zone_scale" => (0.01, 10.0, true),
-        "zone_length" => (0.001, 1.0, true),
-        "divisions" => (1.0, 50.0, true),
-        "restitution" => (0.0, 1.0, false),
-        "dt" => (1e-7, 1e-5, true),
-        "window" => (0.0, 0.01, false),
-        "max_steps" => (1e3, 1e6, true),
-        "segments" => (10.0, 1000.0, true),
-        "courant" => (0.1, 0.95, false),
+    use crate::model::settings::{IMPACT_SETTINGS, Kind, find};
+    match find(IMPACT_SETTINGS, key).map(|s| s.kind) {
+        Some(Kind::Number { slider, log, .. } | Kind::List { slider, log, .. }) => {
+            (slider.0, slider.1, log)
+        }
+        Some(Kind::Count { min, max }) => {
+            let (lo, hi) = ((min.max(1)) as f64, max.min(1_000_000) as f64);
+            (lo, hi, hi / lo > 100.0)
+        }
         _ => (0.5, 2.0, false),
     }
 }

@@ -6,6 +6,7 @@ use super::contact::{
     ContactLaw, LawKind, PAPER_DIVISIONS, hertz_stiffness, paper_linear_stiffness,
 };
 use super::material::MaterialPreset;
+use super::settings::Range;
 
 /// Which reading of the Sears model (docs/model.md, "Three readings").
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -143,37 +144,45 @@ fn check(field: &str, value: f64) -> Result<(), InputError> {
     super::settings::check(super::settings::IMPACT_SETTINGS, field, value)
 }
 
-fn validate_bar(prefix: &str, bar: &Bar) -> Result<(), InputError> {
-    let f = |name: &str, value: f64| {
-        super::settings::check_of(super::settings::IMPACT_SETTINGS, prefix, name, value)
+/// The checked settings of a bar, by their names under `bar1.` / `bar2.`; [`bar_values`] gives
+/// the values in this order (`None` where the bar has no such value: a radius for a bar given
+/// by its area, an end radius for a flat end).
+const BAR_KEYS: [&str; 9] = [
+    "youngs_modulus",
+    "poisson_ratio",
+    "density",
+    "length",
+    "radius",
+    "area",
+    "added_mass",
+    "velocity",
+    "end_radius",
+];
+
+fn bar_values(bar: &Bar) -> [Option<f64>; 9] {
+    let (radius, area) = match bar.section {
+        Section::Circular { radius_m } => (Some(radius_m), None),
+        Section::Area { area_m2 } => (None, Some(area_m2)),
     };
-    f("youngs_modulus", bar.material.youngs_modulus_pa)?;
-    f("poisson_ratio", bar.material.poisson_ratio)?;
-    f("density", bar.material.density_kg_m3)?;
-    f("length", bar.length_m)?;
-    match bar.section {
-        Section::Circular { radius_m } => f("radius", radius_m)?,
-        Section::Area { area_m2 } => f("area", area_m2)?,
-    }
-    f("added_mass", bar.added_mass_kg)?;
-    f("velocity", bar.velocity_m_s)?;
-    if let EndShape::Rounded { radius_m } = bar.end {
-        f("end_radius", radius_m)?;
-    }
-    Ok(())
+    let end_radius = match bar.end {
+        EndShape::Rounded { radius_m } => Some(radius_m),
+        EndShape::Flat => None,
+    };
+    [
+        Some(bar.material.youngs_modulus_pa),
+        Some(bar.material.poisson_ratio),
+        Some(bar.material.density_kg_m3),
+        Some(bar.length_m),
+        radius,
+        area,
+        Some(bar.added_mass_kg),
+        Some(bar.velocity_m_s),
+        end_radius,
+    ]
 }
 
-/// The keys [`ImpactScenario::in_range`] checks, in its order.
-const CHECKED: [&str; 16] = [
-    "barN.youngs_modulus",
-    "barN.poisson_ratio",
-    "barN.density",
-    "barN.length",
-    "barN.radius",
-    "barN.area",
-    "barN.added_mass",
-    "barN.velocity",
-    "barN.end_radius",
+/// The other checked settings; [`ImpactScenario::other_values`] gives them in this order.
+const OTHER_KEYS: [&str; 10] = [
     "contact.stiffness",
     "contact.zone_scale",
     "contact.zone_length",
@@ -181,76 +190,76 @@ const CHECKED: [&str; 16] = [
     "contact.restitution",
     "solver.dt",
     "solver.window",
+    "solver.max_steps",
+    "fe.segments",
+    "fe.courant",
 ];
 
-/// Their ranges, read from the settings table once per process.
-fn checked_ranges() -> &'static [super::settings::Range; 16] {
-    static RANGES: std::sync::OnceLock<[super::settings::Range; 16]> = std::sync::OnceLock::new();
+/// The ranges of [`BAR_KEYS`] and [`OTHER_KEYS`], read from the settings table once per process.
+fn checked_ranges() -> &'static ([Range; 9], [Range; 10]) {
+    static RANGES: std::sync::OnceLock<([Range; 9], [Range; 10])> = std::sync::OnceLock::new();
     RANGES.get_or_init(|| {
-        CHECKED.map(|key| {
+        let range = |key: &str| {
             super::settings::find(super::settings::IMPACT_SETTINGS, key)
                 .and_then(|s| s.range())
                 .unwrap_or_else(|| panic!("the settings table gives {key} a range"))
-        })
+        };
+        (
+            BAR_KEYS.map(|k| range(&format!("bar1.{k}"))),
+            OTHER_KEYS.map(range),
+        )
     })
 }
 
+/// Whether every present value lies in its range.
+fn all_in(ranges: &[Range], values: &[Option<f64>]) -> bool {
+    ranges
+        .iter()
+        .zip(values)
+        .all(|(r, v)| v.is_none_or(|x| r.contains(x)))
+}
+
 impl ImpactScenario {
-    /// Whether every value lies in its range: the quick look a sweep's thousand solves take,
-    /// before the key-naming check that runs only where it fails.
-    fn in_range(&self) -> bool {
-        let r = checked_ranges();
-        let bar_ok = |b: &Bar| {
-            r[0].contains(b.material.youngs_modulus_pa)
-                && r[1].contains(b.material.poisson_ratio)
-                && r[2].contains(b.material.density_kg_m3)
-                && r[3].contains(b.length_m)
-                && match b.section {
-                    Section::Circular { radius_m } => r[4].contains(radius_m),
-                    Section::Area { area_m2 } => r[5].contains(area_m2),
-                }
-                && r[6].contains(b.added_mass_kg)
-                && r[7].contains(b.velocity_m_s)
-                && match b.end {
-                    EndShape::Rounded { radius_m } => r[8].contains(radius_m),
-                    EndShape::Flat => true,
-                }
-        };
-        bar_ok(&self.bar1)
-            && bar_ok(&self.bar2)
-            && self.contact.stiffness.is_none_or(|k| r[9].contains(k))
-            && r[10].contains(self.contact.zone_scale)
-            && self.contact.zone_length_m.is_none_or(|d| r[11].contains(d))
-            && r[12].contains(self.contact.divisions)
-            && r[13].contains(self.contact.restitution)
-            && r[14].contains(self.solver.dt_s)
-            && r[15].contains(self.solver.window_s)
+    /// The values of [`OTHER_KEYS`], in its order.
+    fn other_values(&self) -> [Option<f64>; 10] {
+        [
+            self.contact.stiffness,
+            Some(self.contact.zone_scale),
+            self.contact.zone_length_m,
+            Some(self.contact.divisions),
+            Some(self.contact.restitution),
+            Some(self.solver.dt_s),
+            Some(self.solver.window_s),
+            Some(self.solver.max_steps as f64),
+            Some(self.fe.segments as f64),
+            Some(self.fe.courant),
+        ]
     }
 
-    /// Checks every value against its range in the settings table; the error names the key.
+    /// Checks every value against its range in the settings table; the error names the key. A
+    /// sweep's thousand solves take the quick look first; the key-naming check runs only where
+    /// it fails.
     pub fn validate(&self) -> Result<(), InputError> {
-        if self.in_range() {
-            // The counts' checks are integer compares; keep them in the one path below.
-            check("solver.max_steps", self.solver.max_steps as f64)?;
-            check("fe.segments", self.fe.segments as f64)?;
-            return check("fe.courant", self.fe.courant);
+        let (bar_ranges, other_ranges) = checked_ranges();
+        let others = self.other_values();
+        if all_in(bar_ranges, &bar_values(&self.bar1))
+            && all_in(bar_ranges, &bar_values(&self.bar2))
+            && all_in(other_ranges, &others)
+        {
+            return Ok(());
         }
-        validate_bar("bar1", &self.bar1)?;
-        validate_bar("bar2", &self.bar2)?;
-        if let Some(k) = self.contact.stiffness {
-            check("contact.stiffness", k)?;
+        for (owner, bar) in [("bar1", &self.bar1), ("bar2", &self.bar2)] {
+            for (name, value) in BAR_KEYS.iter().zip(bar_values(bar)) {
+                if let Some(v) = value {
+                    super::settings::check_of(super::settings::IMPACT_SETTINGS, owner, name, v)?;
+                }
+            }
         }
-        check("contact.zone_scale", self.contact.zone_scale)?;
-        if let Some(d) = self.contact.zone_length_m {
-            check("contact.zone_length", d)?;
+        for (key, value) in OTHER_KEYS.iter().zip(others) {
+            if let Some(v) = value {
+                check(key, v)?;
+            }
         }
-        check("contact.divisions", self.contact.divisions)?;
-        check("contact.restitution", self.contact.restitution)?;
-        check("solver.dt", self.solver.dt_s)?;
-        check("solver.window", self.solver.window_s)?;
-        check("solver.max_steps", self.solver.max_steps as f64)?;
-        check("fe.segments", self.fe.segments as f64)?;
-        check("fe.courant", self.fe.courant)?;
         Ok(())
     }
 

@@ -273,12 +273,17 @@ pub fn find(table: &'static [Setting], key: &str) -> Option<&'static Setting> {
     })
 }
 
-/// Checks `value` of `field` against its row of `table`.
+/// Checks `value` of `field` against its row of `table`; a key the table does not list is an
+/// error too (a check that passed for a misspelt key would check nothing).
 pub fn check(table: &'static [Setting], field: &str, value: f64) -> Result<(), InputError> {
     match find(table, field) {
         Some(s) => s.check(field, value),
-        None => Ok(()),
+        None => Err(not_listed(field)),
     }
+}
+
+fn not_listed(field: &str) -> InputError {
+    InputError::new(field, "no such setting in the settings table")
 }
 
 /// Checks `value` of `owner.name` (`bar1.length`) against its row of `table`; the key is only
@@ -301,7 +306,8 @@ pub fn check_of(
         Some(s) if s.range().is_some_and(|r| !r.contains(value)) => {
             s.check(&format!("{owner}.{name}"), value)
         }
-        _ => Ok(()),
+        Some(_) => Ok(()),
+        None => Err(not_listed(&format!("{owner}.{name}"))),
     }
 }
 
@@ -922,6 +928,15 @@ mod tests {
         let e = s.check("bar2.length", -1.0).unwrap_err();
         assert_eq!(e.field, "bar2.length");
         assert!(e.message.contains("[1e-6, 1e6] m"), "{}", e.message);
+    }
+
+    #[test]
+    fn a_key_the_table_does_not_list_fails_its_check() {
+        let e = check(IMPACT_SETTINGS, "bar2.lenght", 1.0).unwrap_err();
+        assert_eq!(e.field, "bar2.lenght");
+        assert!(check(IMPACT_SETTINGS, "bar2.length", 1.0).is_ok());
+        assert!(check_of(BUILDING_SETTINGS, "left", "masess", 1.0).is_err());
+        assert!(check_of(BUILDING_SETTINGS, "left", "masses", 1.0).is_ok());
     }
 
     #[test]
