@@ -34,7 +34,7 @@ pub const COMPARED: [ModelKind; 5] = [
 
 type Job = (ImpactSetup, bool);
 type Output = (
-    Vec<(ModelKind, Result<ImpactResult, String>)>,
+    Vec<(ModelKind, Result<ImpactResult, SolveError>)>,
     Option<ErrorEstimate>,
 );
 
@@ -78,8 +78,7 @@ fn run_job((setup, compare): Job, control: &Control) -> Output {
         .enumerate()
         .map(|(k, m)| {
             control.stage(k as u32, stages);
-            let r = solve_with(m, &setup.scenario, control).map_err(|e| e.to_string());
-            (m, r)
+            (m, solve_with(m, &setup.scenario, control))
         })
         .collect();
     control.stage(1, stages);
@@ -138,10 +137,9 @@ impl BarScene {
                 return;
             }
         };
-        let cancelled = SolveError::Cancelled.to_string();
         if results
             .iter()
-            .any(|(_, r)| r.as_ref().is_err_and(|e| *e == cancelled))
+            .any(|(_, r)| matches!(r, Err(SolveError::Cancelled)))
         {
             self.error = Some("cancelled: the last result is kept".into());
             return;

@@ -43,8 +43,28 @@ type Output = Result<
         BuildingResult,
         Option<BuildingErrorEstimate>,
     ),
-    String,
+    JobError,
 >;
+
+/// Why a building job gave no result, typed across the thread: the scene words it.
+#[derive(Debug, thiserror::Error)]
+enum JobError {
+    #[error("ground motion: {0}")]
+    Motion(#[from] crate::io::motion::MotionError),
+    #[error("cancelled: the last result is kept")]
+    Cancelled,
+    #[error(transparent)]
+    Solve(SolveError),
+}
+
+impl From<SolveError> for JobError {
+    fn from(e: SolveError) -> Self {
+        match e {
+            SolveError::Cancelled => JobError::Cancelled,
+            e => JobError::Solve(e),
+        }
+    }
+}
 
 /// The slabs an x-t diagram shows: the run (its history id) and level they belong to, their
 /// waves, and those on the GPU.
@@ -79,19 +99,11 @@ pub struct BuildingScene {
     pub visibility: Visibility,
 }
 
-/// What the scene says when its solve was cancelled.
-const CANCELLED: &str = "cancelled: the last result is kept";
-
 fn run_job(setup: BuildingSetup, control: &Control) -> Output {
-    let motion =
-        crate::io::motion::load(&setup.motion).map_err(|e| format!("ground motion: {e}"))?;
+    let motion = crate::io::motion::load(&setup.motion)?;
     // The estimate's run takes about twice the main one, the run without contact a tenth.
     control.stage(0, 3);
-    let failed = |e: SolveError| match e {
-        SolveError::Cancelled => CANCELLED.to_string(),
-        e => e.to_string(),
-    };
-    let result = solve_with(&setup.scenario, &motion, control).map_err(failed)?;
+    let result = solve_with(&setup.scenario, &motion, control)?;
     let baseline = solve_with(
         &BuildingScenario {
             contact: ContactModel::None,
@@ -99,12 +111,11 @@ fn run_job(setup: BuildingSetup, control: &Control) -> Output {
         },
         &motion,
         control,
-    )
-    .map_err(failed)?;
+    )?;
     control.stage(1, 3);
     let estimate = estimate_error_with(&setup.scenario, &motion, &result, control);
     if matches!(estimate, Err(SolveError::Cancelled)) {
-        return Err(CANCELLED.into());
+        return Err(JobError::Cancelled);
     }
     Ok((motion, result, baseline, estimate.ok()))
 }
@@ -165,10 +176,11 @@ impl BuildingScene {
         };
         self.solve_time = done.elapsed;
         self.latency = latency;
-        match done
-            .output
-            .unwrap_or_else(|panic| Err(internal_error(&panic)))
-        {
+        let outcome = match done.output {
+            Ok(outcome) => outcome.map_err(|e| e.to_string()),
+            Err(panic) => Err(internal_error(&panic)),
+        };
+        match outcome {
             Ok((motion, result, baseline, estimate)) => {
                 self.error = None;
                 self.playback.t_max = motion.duration_s();

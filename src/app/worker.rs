@@ -161,8 +161,13 @@ mod tests {
     fn a_newer_request_interrupts_a_long_solve_and_only_its_outcome_lands() {
         let mut w = Worker::new(long, || {});
         w.request(1_000_000);
-        std::thread::sleep(Duration::from_millis(30));
-        assert!(w.progress(Duration::ZERO).is_some_and(|f| f > 0.0));
+        // Wait for the solve to report progress, however slowly its thread is scheduled (a fixed
+        // sleep would fail on a loaded machine).
+        let waiting = Instant::now();
+        while !w.progress(Duration::ZERO).is_some_and(|f| f > 0.0) {
+            assert!(waiting.elapsed() < Duration::from_secs(60), "no progress");
+            std::thread::sleep(Duration::from_millis(1));
+        }
         let start = Instant::now();
         w.request(3);
         let done = wait(&mut w);
