@@ -141,7 +141,7 @@ fn the_impulse_of_each_contact_is_the_momentum_it_exchanges() {
 }
 
 /// Two free buildings (no springs to speak of, no ground motion) meeting at 1 m/s.
-fn isolated(model: ContactModel) -> BuildingResult {
+fn free_buildings(model: ContactModel) -> BuildingScenario {
     let mut sc = BuildingScenario::paper();
     sc.contact = model;
     for b in [&mut sc.left, &mut sc.right] {
@@ -150,12 +150,20 @@ fn isolated(model: ContactModel) -> BuildingResult {
     }
     sc.gap_m = 0.0;
     sc.initial_velocity_m_s = [1.0, 0.0];
-    let quiet = GroundMotion {
+    sc
+}
+
+/// 0.2 s of still ground.
+fn quiet() -> GroundMotion {
+    GroundMotion {
         name: "none".into(),
         dt_s: 0.001,
         accel_m_s2: vec![0.0; 201],
-    };
-    run(&sc, &quiet)
+    }
+}
+
+fn isolated(model: ContactModel) -> BuildingResult {
+    run(&free_buildings(model), &quiet())
 }
 
 fn restitution(r: &BuildingResult) -> f64 {
@@ -229,21 +237,9 @@ fn an_undamped_sears_impact_of_free_buildings_rebounds_as_the_bar_model_of_their
     // Free floors (no storey stiffness, no damping, no ground motion) meeting at 1 m/s are two
     // bars with their floors' masses: the building solver's Sears element must give the
     // rebound the bar solver gives, two different integrations of the same d'Alembert model.
-    let mut sc = BuildingScenario::paper();
-    sc.contact = ContactModel::Sears;
+    let mut sc = free_buildings(ContactModel::Sears);
     sc.slab_damping = 0.0;
-    for b in [&mut sc.left, &mut sc.right] {
-        b.stiffnesses_n_m = vec![1e-3];
-        b.damping_ratio = 0.0;
-    }
-    sc.gap_m = 0.0;
-    sc.initial_velocity_m_s = [1.0, 0.0];
-    let quiet = GroundMotion {
-        name: "none".into(),
-        dt_s: 0.001,
-        accel_m_s2: vec![0.0; 201],
-    };
-    let r = run(&sc, &quiet);
+    let r = run(&sc, &quiet());
     let bars = slab_bars(&sc);
     let b = pounding::model::impact::solve(pounding::model::impact::ModelKind::Sears, &bars)
         .expect("the bar model solves");
