@@ -9,7 +9,7 @@ use super::impact_params;
 use super::params::Fields;
 use super::playback::Playback;
 use super::visibility::Visibility;
-use super::worker::{Worker, internal_error};
+use super::worker::SolveSlot;
 use super::xt_view::{XtDiagram, XtOptions, XtSource};
 use crate::io::preset;
 use crate::io::settings::ImpactSetup;
@@ -42,7 +42,7 @@ pub struct BarScene {
     pub setup: ImpactSetup,
     pub compare: bool,
     pub fields: Fields,
-    worker: Worker<Job, Output>,
+    pub(super) slot: SolveSlot<Job, Output>,
     solved: Option<Solved>,
     /// Every model's run (the comparison), or the one model's.
     peers: Vec<(ModelKind, Solved)>,
@@ -53,9 +53,6 @@ pub struct BarScene {
     estimate: Option<ErrorEstimate>,
     shown: [bool; 5],
     pub playback: Playback,
-    pub solve_time: Duration,
-    pub latency: Duration,
-    pub error: Option<String>,
     /// The view's rectangle last frame (for a screenshot of the view alone).
     pub view_rect: Option<egui::Rect>,
     shown_force: ShownPlot,
@@ -97,7 +94,7 @@ impl BarScene {
             setup,
             compare,
             fields: Fields::default(),
-            worker: Worker::new(run_job, move || waker.request_repaint()),
+            slot: SolveSlot::new(run_job, move || waker.request_repaint()),
             solved: None,
             peers: vec![],
             xt: XtOptions::default(),
@@ -105,9 +102,6 @@ impl BarScene {
             estimate: None,
             shown: [true; 5],
             playback: Playback::default(),
-            solve_time: Duration::ZERO,
-            latency: Duration::ZERO,
-            error: None,
             view_rect: None,
             shown_force: ShownPlot::default(),
             shown_approach: ShownPlot::default(),
@@ -118,30 +112,20 @@ impl BarScene {
     }
 
     pub fn request(&mut self) {
-        self.worker.request((self.setup, self.compare));
+        self.slot.request((self.setup, self.compare));
     }
 
     /// Takes a finished solve, if any.
     pub fn poll(&mut self) {
-        let Some((done, latency)) = self.worker.poll() else {
+        // A panic's message stays as the error, and the last result on screen.
+        let Some((results, estimate)) = self.slot.poll() else {
             return;
-        };
-        self.solve_time = done.elapsed;
-        self.latency = latency;
-        self.error = None;
-        let (results, estimate) = match done.output {
-            Ok(out) => out,
-            // The last result stays on screen.
-            Err(panic) => {
-                self.error = Some(internal_error(&panic));
-                return;
-            }
         };
         if results
             .iter()
             .any(|(_, r)| matches!(r, Err(SolveError::Cancelled)))
         {
-            self.error = Some("cancelled: the last result is kept".into());
+            self.slot.error = Some("cancelled: the last result is kept".into());
             return;
         }
         self.peers.clear();
@@ -163,22 +147,22 @@ impl BarScene {
                     self.peers.push((model, solved));
                 }
                 // The last result stays on screen; the error says why this one failed.
-                Err(e) => self.error = Some(format!("{}: {e}", model.name())),
+                Err(e) => self.slot.error = Some(format!("{}: {e}", model.name())),
             }
         }
     }
 
     pub fn busy(&self) -> bool {
-        self.worker.busy()
+        self.slot.busy()
     }
 
     /// The running solve's progress, once it has taken longer than a frame.
     pub fn progress(&self) -> Option<f64> {
-        self.worker.progress(super::worker::PROGRESS_AFTER)
+        self.slot.progress()
     }
 
     pub fn cancel(&mut self) {
-        self.worker.cancel();
+        self.slot.cancel();
     }
 
     /// Loads a preset by name or file; on error the scene is kept and the error returned.
@@ -223,7 +207,7 @@ impl BarScene {
     }
 
     pub fn main_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
-        if let Some(e) = &self.error {
+        if let Some(e) = &self.slot.error {
             ui.colored_label(Color32::from_rgb(220, 60, 50), e);
         }
         if self.solved.is_none() {
@@ -262,7 +246,12 @@ impl BarScene {
         if !self.compare
             && let Some(solved) = &self.solved
         {
-            readouts_ui(ui, &solved.result, self.solve_time, self.estimate.as_ref());
+            readouts_ui(
+                ui,
+                &solved.result,
+                self.slot.solve_time,
+                self.estimate.as_ref(),
+            );
         } else {
             compare_table(ui, &self.peers);
         }

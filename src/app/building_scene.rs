@@ -10,7 +10,7 @@ use super::params::Fields;
 use super::playback::Playback;
 use super::series::decimate;
 use super::visibility::Visibility;
-use super::worker::{Worker, internal_error};
+use super::worker::SolveSlot;
 use super::xt_view::{XtDiagram, XtOptions, XtSource};
 use crate::io::building_settings::BuildingSetup;
 use crate::model::building::gaps::{GapAssessment, assess};
@@ -26,7 +26,6 @@ use crate::render::bars::GpuHistory;
 use eframe::egui::{self, Color32};
 use egui_plot::{Legend, Line, Plot, PlotBounds, VLine};
 use std::sync::Arc;
-use std::time::Duration;
 
 /// A landed solve: the drawing (setup, record, run), the run without contact, the estimate.
 struct Solved {
@@ -48,7 +47,7 @@ type Output = Result<
 
 /// Why a building job gave no result, typed across the thread: the scene words it.
 #[derive(Debug, thiserror::Error)]
-enum JobError {
+pub(super) enum JobError {
     #[error("ground motion: {0}")]
     Motion(#[from] crate::io::motion::MotionError),
     #[error("cancelled: the last result is kept")]
@@ -73,16 +72,13 @@ type SlabsShown = (u64, usize, Box<[BarWaves; 2]>, Arc<GpuHistory>);
 pub struct BuildingScene {
     pub setup: BuildingSetup,
     fields: Fields,
-    worker: Worker<BuildingSetup, Output>,
+    pub(super) slot: SolveSlot<BuildingSetup, Output>,
     solved: Option<Solved>,
     pub playback: Playback,
     exaggeration: f64,
     zoom: Option<(f64, f64)>,
     /// The level the force plot and the impact list show (`None`: all).
     level: Option<usize>,
-    pub solve_time: Duration,
-    pub latency: Duration,
-    pub error: Option<String>,
     motion_path: String,
     /// The view's rectangle last frame (for a screenshot of the view alone).
     pub view_rect: Option<egui::Rect>,
@@ -127,7 +123,7 @@ impl BuildingScene {
             visibility: Visibility::default(),
             setup,
             fields: Fields::default(),
-            worker: Worker::new(run_job, move || waker.request_repaint()),
+            slot: SolveSlot::new(run_job, move || waker.request_repaint()),
             solved: None,
             playback: Playback {
                 t: 0.0,
@@ -141,9 +137,6 @@ impl BuildingScene {
             selected: None,
             xt: XtOptions::default(),
             xt_slabs: None,
-            solve_time: Duration::ZERO,
-            latency: Duration::ZERO,
-            error: None,
             motion_path: String::new(),
             view_rect: None,
             shown_displacements: ShownPlot::default(),
@@ -154,35 +147,29 @@ impl BuildingScene {
     }
 
     pub fn request(&mut self) {
-        self.worker.request(self.setup.clone());
+        self.slot.request(self.setup.clone());
     }
 
     pub fn busy(&self) -> bool {
-        self.worker.busy()
+        self.slot.busy()
     }
 
     /// The running solve's progress, once it has taken longer than a frame.
     pub fn progress(&self) -> Option<f64> {
-        self.worker.progress(super::worker::PROGRESS_AFTER)
+        self.slot.progress()
     }
 
     pub fn cancel(&mut self) {
-        self.worker.cancel();
+        self.slot.cancel();
     }
 
     pub fn poll(&mut self) {
-        let Some((done, latency)) = self.worker.poll() else {
+        // A panic's message stays as the error, and the last result on screen.
+        let Some(outcome) = self.slot.poll() else {
             return;
-        };
-        self.solve_time = done.elapsed;
-        self.latency = latency;
-        let outcome = match done.output {
-            Ok(outcome) => outcome.map_err(|e| e.to_string()),
-            Err(panic) => Err(internal_error(&panic)),
         };
         match outcome {
             Ok((motion, result, baseline, estimate)) => {
-                self.error = None;
                 self.playback.t_max = motion.duration_s();
                 self.playback.t = self.playback.t.min(self.playback.t_max);
                 if self.level.is_some_and(|l| l >= result.levels.len()) {
@@ -198,7 +185,7 @@ impl BuildingScene {
                 });
             }
             // The last result stays; the error says why the new one failed.
-            Err(e) => self.error = Some(e),
+            Err(e) => self.slot.error = Some(e.to_string()),
         }
     }
 
@@ -268,7 +255,7 @@ impl BuildingScene {
     }
 
     pub fn main_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
-        if let Some(e) = &self.error {
+        if let Some(e) = &self.slot.error {
             ui.colored_label(Color32::from_rgb(220, 60, 50), e);
         }
         let Some(s) = &self.solved else {
@@ -304,7 +291,7 @@ impl BuildingScene {
             s.baseline.peak_displacement_m[0] * 1e3,
             r.peak_displacement_m[1] * 1e3,
             s.baseline.peak_displacement_m[1] * 1e3,
-            super::ms(self.solve_time.as_secs_f64(), 1)
+            super::ms(self.slot.solve_time.as_secs_f64(), 1)
         ));
             if let Some(e) = &s.estimate {
                 ui.label(format!(

@@ -41,7 +41,7 @@ impl Scene for BarScene {
         BarScene::cancel(self)
     }
     fn timings(&self) -> (Duration, Duration) {
-        (self.solve_time, self.latency)
+        self.slot.timings()
     }
     fn view_rect(&self) -> Option<egui::Rect> {
         self.view_rect
@@ -71,7 +71,7 @@ impl Scene for BuildingScene {
         BuildingScene::cancel(self)
     }
     fn timings(&self) -> (Duration, Duration) {
-        (self.solve_time, self.latency)
+        self.slot.timings()
     }
     fn view_rect(&self) -> Option<egui::Rect> {
         self.view_rect

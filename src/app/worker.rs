@@ -131,6 +131,77 @@ impl<I: Send + 'static, O: Send + 'static> Worker<I, O> {
     }
 }
 
+/// A scene's solve core: its worker, the timings of its last landed solve, and the error the
+/// scene shows while the last good result stays on screen. Every scene that solves in the
+/// background keeps one, so requesting, cancelling, progress, timings and a caught panic are
+/// handled once.
+pub struct SolveSlot<I, O> {
+    worker: Worker<I, O>,
+    /// How long the last landed solve took.
+    pub solve_time: Duration,
+    /// From the change that asked for the last landed solve to its landing.
+    pub latency: Duration,
+    /// Why the newest request gave no (or only part of a) result; `None` after a good one.
+    pub error: Option<String>,
+}
+
+impl<I: Send + 'static, O: Send + 'static> SolveSlot<I, O> {
+    /// Starts the solver thread; `wake` is called after each job.
+    pub fn new(
+        job: impl Fn(I, &Control) -> O + Send + 'static,
+        wake: impl Fn() + Send + 'static,
+    ) -> Self {
+        SolveSlot {
+            worker: Worker::new(job, wake),
+            solve_time: Duration::ZERO,
+            latency: Duration::ZERO,
+            error: None,
+        }
+    }
+
+    /// Posts new inputs; the solve under way, if any, is cancelled.
+    pub fn request(&mut self, input: I) {
+        self.worker.request(input);
+    }
+
+    /// Asks the solve under way to stop.
+    pub fn cancel(&self) {
+        self.worker.cancel();
+    }
+
+    pub fn busy(&self) -> bool {
+        self.worker.busy()
+    }
+
+    /// The running solve's progress, once it has taken longer than a frame.
+    pub fn progress(&self) -> Option<f64> {
+        self.worker.progress(PROGRESS_AFTER)
+    }
+
+    /// The last landed solve's time and its change-to-result latency.
+    pub fn timings(&self) -> (Duration, Duration) {
+        (self.solve_time, self.latency)
+    }
+
+    /// The newest request's output once it lands, its timings recorded and the error cleared.
+    /// A solve that panicked gives `None` and leaves the panic's message as the error.
+    pub fn poll(&mut self) -> Option<O> {
+        let (done, latency) = self.worker.poll()?;
+        self.solve_time = done.elapsed;
+        self.latency = latency;
+        match done.output {
+            Ok(out) => {
+                self.error = None;
+                Some(out)
+            }
+            Err(panic) => {
+                self.error = Some(internal_error(&panic));
+                None
+            }
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -184,6 +255,39 @@ mod tests {
         std::thread::sleep(Duration::from_millis(10));
         w.cancel();
         assert_eq!(wait(&mut w).output, Ok(Err("cancelled")));
+    }
+
+    /// Polls the slot until the newest request lands (or its panic is taken).
+    fn land<O: Send + 'static>(slot: &mut SolveSlot<u64, O>) -> Option<O> {
+        let start = Instant::now();
+        while slot.busy() {
+            if let Some(out) = slot.poll() {
+                return Some(out);
+            }
+            assert!(start.elapsed() < Duration::from_secs(60), "no outcome");
+            std::thread::sleep(Duration::from_millis(1));
+        }
+        None
+    }
+
+    #[test]
+    fn a_solve_slot_keeps_a_panics_message_as_its_error_and_clears_it_on_the_next_result() {
+        let mut slot = SolveSlot::new(
+            |n: u64, _: &Control| {
+                assert!(n != 13, "unlucky input");
+                n * 2
+            },
+            || {},
+        );
+        slot.request(13);
+        assert_eq!(land(&mut slot), None);
+        let error = slot.error.clone().expect("the panic is the error");
+        assert!(error.contains("unlucky input"), "{error}");
+        slot.request(4);
+        assert_eq!(land(&mut slot), Some(8));
+        assert_eq!(slot.error, None);
+        let (solve, latency) = slot.timings();
+        assert!(latency >= solve, "the latency includes the solve");
     }
 
     #[test]
