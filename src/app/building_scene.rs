@@ -356,7 +356,7 @@ impl BuildingScene {
             return;
         };
         let e = &r.impacts[i];
-        let Some([Some(left), Some(right)]) = r.slab_waves.get(e.level) else {
+        let Some([Some(left), Some(right)]) = r.slab_waves().get(e.level) else {
             ui.label(format!(
                 "impact {}: a floor meets a column at this level, so there is no pair of slabs to draw",
                 i + 1

@@ -33,7 +33,7 @@ impl BuildingDrawing {
     pub fn new(setup: BuildingSetup, motion: GroundMotion, result: BuildingResult) -> Self {
         let mut bars = vec![];
         let mut waves: Vec<&BarWaves> = vec![];
-        for (l, level) in result.slab_waves.iter().enumerate() {
+        for (l, level) in result.slab_waves().iter().enumerate() {
             for (s, w) in level.iter().enumerate() {
                 if let Some(w) = w {
                     bars.push((l, s));
@@ -154,7 +154,7 @@ impl<'a> Scene<'a> {
                 let f = a.floor().expect("a slab is a floor's");
                 let b = buildings[s];
                 let slab = b.slab(f);
-                let w = r.slab_waves[level][s].as_ref().expect("drawn");
+                let w = r.slab_waves()[level][s].as_ref().expect("drawn");
                 let (offset, count, dt, end) = d.gpu.layout[i];
                 let z = b.elevations_m()[f];
                 GpuBar {

@@ -29,6 +29,44 @@ pub enum History {
         /// H on each step.
         values: Vec<f64>,
     },
+    /// Stretches of samples at t = n dt, in time order, zero before the first; after each
+    /// stretch no force acts until the next, so H repeats its stretch's last round trip,
+    /// attenuated by r each time (a building slab between contacts).
+    Segments {
+        /// The spacing [s].
+        dt_s: f64,
+        /// The stretches, in time order.
+        segments: Vec<HistorySegment>,
+    },
+}
+
+/// One stretch of a [`History::Segments`]: samples at indices `first`, `first + 1`, ...
+#[derive(Debug, Clone, PartialEq)]
+pub struct HistorySegment {
+    /// Grid index of the first sample.
+    pub first: usize,
+    /// H at each sample.
+    pub values: Vec<f64>,
+}
+
+impl HistorySegment {
+    /// H at the fractional grid index `p` (at or after `first`): cubic inside the stretch, and
+    /// after it the stretch's last round trip (`round_steps` grid steps) repeated, attenuated by
+    /// `r` per round trip.
+    pub fn value_at(&self, p: f64, round_steps: f64, r: f64) -> f64 {
+        let last = (self.first + self.values.len()) as f64 - 1.0;
+        let (mut p, mut weight) = (p, 1.0);
+        if p > last && round_steps > 0.0 {
+            let k = ((p - last) / round_steps).ceil();
+            p -= k * round_steps;
+            weight = r.powi(k as i32);
+        }
+        let local = p - self.first as f64;
+        if local < 0.0 {
+            return 0.0;
+        }
+        weight * sample_at(&self.values, 1.0, local)
+    }
 }
 
 /// The wave state of one bar, enough to evaluate its field at any point and time.
@@ -74,6 +112,18 @@ impl BarWaves {
         if t_s < 0.0 {
             return 0.0;
         }
+        if let History::Segments { dt_s, segments } = &self.history {
+            let p = t_s / dt_s;
+            let k = segments.partition_point(|s| s.first as f64 <= p);
+            return match k {
+                0 => 0.0,
+                k => segments[k - 1].value_at(
+                    p,
+                    self.round_trip_s() / dt_s,
+                    self.attenuation(self.round_trip_s()),
+                ),
+            };
+        }
         let mut t = t_s;
         let mut weight = 1.0;
         let period = self.round_trip_s();
@@ -92,6 +142,7 @@ impl BarWaves {
                     let k = times.partition_point(|&x| x <= t);
                     if k == 0 { 0.0 } else { values[k - 1] }
                 }
+                History::Segments { .. } => unreachable!("read above"),
             }
     }
 
@@ -146,6 +197,20 @@ impl BarWaves {
             }
             History::Steps { times, values } => {
                 integrate_square_steps(times, values, t_s - period, t_s)
+            }
+            History::Segments { dt_s, .. } => {
+                // The trapezoid rule on the grid the stretches are stored on.
+                let (a, b) = ((t_s - period).max(0.0), t_s);
+                let n = ((b - a) / dt_s).ceil().max(1.0) as usize;
+                let step = (b - a) / n as f64;
+                (0..=n)
+                    .map(|i| {
+                        let v = self.history_at(a + i as f64 * step);
+                        let w = if i == 0 || i == n { 0.5 } else { 1.0 };
+                        w * v * v
+                    })
+                    .sum::<f64>()
+                    * step
             }
         };
         integral / self.impedance_n_s_m

@@ -230,6 +230,14 @@ impl Tap {
         (-self.first) as usize
     }
 
+    /// The stencil's start relative to the sample about to be pushed, the number of its stored
+    /// samples (3 when the newest one is part of it, else 4) and its weights: what a reader of
+    /// another container (a ring buffer) needs to give the same look-up.
+    pub fn stencil(&self) -> (isize, usize, [f64; 4]) {
+        let stored = if self.first == -3 { 3 } else { 4 };
+        (self.first, stored, self.weights)
+    }
+
     /// Weight on the newest sample (nonzero only for lags shorter than a step).
     #[inline]
     pub fn newest_weight(&self) -> f64 {

@@ -110,8 +110,13 @@ impl Default for GpuHistory {
     }
 }
 
-/// Samples per round trip when a step-function history (wave theory) is put on a grid.
+/// Samples per round trip when a step-function history (wave theory) or one stored in stretches
+/// (a building slab) is put on a grid.
 const STEP_SAMPLES_PER_ROUND_TRIP: f64 = 400.0;
+
+/// The most samples all the bars of one upload take together (16 MB of f32): a long run of many
+/// slabs is put on a coarser grid rather than outgrow the GPU's buffer.
+const GPU_SAMPLE_BUDGET: f64 = 4.0e6;
 
 impl GpuHistory {
     /// A lumped result's force F(t) and impulse J(t) on `samples` points over [0, t_end]: both
@@ -136,6 +141,8 @@ impl GpuHistory {
 
     /// Any number of bars, in the order their [`GpuBar`]s will be drawn.
     pub fn from_bars<'a>(waves: impl IntoIterator<Item = &'a BarWaves>) -> Self {
+        let waves: Vec<&BarWaves> = waves.into_iter().collect();
+        let per_bar = GPU_SAMPLE_BUDGET / waves.len().max(1) as f64;
         let mut samples = Vec::new();
         let mut layout = Vec::new();
         for w in waves {
@@ -145,8 +152,8 @@ impl GpuHistory {
                     samples.extend(values.iter().map(|&v| v as f32));
                     *dt_s
                 }
-                History::Steps { .. } => {
-                    let dt = w.round_trip_s() / STEP_SAMPLES_PER_ROUND_TRIP;
+                History::Steps { .. } | History::Segments { .. } => {
+                    let dt = (w.round_trip_s() / STEP_SAMPLES_PER_ROUND_TRIP).max(w.end_s / per_bar);
                     let n = (w.end_s / dt).ceil() as usize + 2;
                     samples.extend((0..n).map(|k| w.history_at(k as f64 * dt) as f32));
                     dt

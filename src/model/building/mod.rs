@@ -25,10 +25,11 @@ pub use estimate::{BuildingErrorEstimate, estimate_error, estimate_error_with};
 pub use levels::{Attachment, Level, LevelKind};
 pub use modal::{DampingModel, Modes};
 pub use result::{
-    BuildingEnergy, BuildingResult, BuildingStats, ImpactEvent, RawContact, group_impacts,
+    BuildingEnergy, BuildingResult, BuildingStats, ImpactEvent, RawContact, SlabRecord,
+    group_impacts,
 };
 pub use scenario::{Building, BuildingScenario, SLAB_YOUNGS_MODULUS_PA, Slab};
-pub use solve::{solve, solve_with};
+pub use solve::{solve, solve_summary, solve_summary_with, solve_with};
 pub use warning::Warning;
 
 /// The contact element between the buildings.

@@ -4,7 +4,9 @@
 use super::levels::Level;
 use super::modal::Modes;
 use super::{ContactModel, Warning};
+use super::slab::SlabWaves;
 use crate::model::field::BarWaves;
+use std::sync::OnceLock;
 
 /// One interval of contact at one level.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -103,6 +105,36 @@ pub struct BuildingStats {
 /// A level's slabs' waves (Sears): left and right, `None` where a column meets the floor.
 pub type LevelWaves = [Option<BarWaves>; 2];
 
+/// The Sears slabs as the run left them (the forces they were pushed with), and their waves,
+/// worked out from those when first asked for: a run that is not drawn does not pay for them.
+#[derive(Debug, Clone, Default)]
+pub struct SlabRecord {
+    slabs: Vec<[Option<SlabWaves>; 2]>,
+    end_s: f64,
+    waves: OnceLock<Vec<LevelWaves>>,
+}
+
+impl SlabRecord {
+    /// The slabs of each level (empty for the other elements) at the end of a run at `end_s`.
+    pub(super) fn new(slabs: Vec<[Option<SlabWaves>; 2]>, end_s: f64) -> Self {
+        SlabRecord {
+            slabs,
+            end_s,
+            waves: OnceLock::new(),
+        }
+    }
+
+    /// Each level's slabs' waves.
+    pub fn waves(&self) -> &[LevelWaves] {
+        self.waves.get_or_init(|| {
+            self.slabs
+                .iter()
+                .map(|pair| std::array::from_fn(|i| pair[i].as_ref().map(|s| s.waves(self.end_s))))
+                .collect()
+        })
+    }
+}
+
 /// Everything one building run reports.
 #[derive(Debug, Clone)]
 pub struct BuildingResult {
@@ -150,14 +182,22 @@ pub struct BuildingResult {
     /// The largest closing motion at each level, u_left - u_right at the point, over the run
     /// [m]: the smallest gap that avoids contact there (for a run without contact).
     pub max_closing_m: Vec<f64>,
-    /// The Sears slabs' waves at each level (empty for the other elements).
-    pub slab_waves: Vec<LevelWaves>,
+    /// The Sears slabs at each level (empty for the other elements), whose waves
+    /// [`BuildingResult::slab_waves`] gives.
+    pub slabs: SlabRecord,
     /// Where the energy went.
     pub energy: BuildingEnergy,
     /// What the run cost.
     pub stats: BuildingStats,
     /// What the reader must know besides the numbers.
     pub warnings: Vec<Warning>,
+}
+
+impl BuildingResult {
+    /// The Sears slabs' waves at each level (empty for the other elements).
+    pub fn slab_waves(&self) -> &[LevelWaves] {
+        self.slabs.waves()
+    }
 }
 
 /// Groups raw contacts into impact events, level by level: a contact starting within

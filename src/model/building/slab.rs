@@ -13,14 +13,160 @@
 //! With no damping A = Phi, Q = Psi, B = integral of Phi: the undamped d'Alembert response.
 //! t_d = T / (2 pi zeta): zeta is the damping ratio of the slab's fundamental axial mode.
 //!
-//! The force samples are kept too, so the slab's stress waves can be drawn and exported
-//! ([`SlabWaves::waves`]: the field module's damped history H = F + r H(t - T)).
+//! **Between contacts the slab rings, and the ringing is known in closed form.** Once the force
+//! is zero, A(t) decays as exp(-t/t_d) and B(t) = (B_q + A_q (t - t_q)) exp(-(t - t_q)/t_d), and
+//! unrolling the recursion J round trips (r^j A(t - j T) = A(t)) gives
+//!   Q(t) = J A(t) + r^J Q(t - J T),
+//! with t - J T inside the last round trip before the force stopped. So the slab is stepped on
+//! the contact grid only while its force acts; then it falls **quiet**: it keeps the samples of
+//! Q its look-ups reach and reads e at any later instant from that closed form, so a free
+//! stretch of any length costs it nothing. Since 2/Z = T/m, a round trip after the force stopped
+//! the ringing repeats itself, attenuated: e(t + T) = r e(t); its largest value over one round
+//! trip bounds every later one, which is what lets a free stretch be cleared of an onset without
+//! looking at each grid point. At the next contact it is **revived**: the samples before the
+//! contact are rebuilt from the closed form. Its memory is a round trip, whatever the run's
+//! length.
+//!
+//! The force samples are kept while it steps, so the slab's stress waves can be drawn and
+//! exported ([`SlabWaves::waves`]: the field module's damped history H = F + r H(t - T), stored
+//! over each stretch of contact and repeated, attenuated, between them).
 
 use super::Slab;
-use crate::model::field::{BarWaves, History};
-use crate::model::history::{Series, Tap};
+use crate::model::field::{BarWaves, History, HistorySegment};
+use crate::model::history::Tap;
 
-/// A floor slab's elastic response to the contact force, stepped on the contact grid.
+/// A fixed-lag look-up into a [`Ring`]: the same stencil a [`Tap`] reads from a series.
+#[derive(Debug, Clone, Copy)]
+struct Look {
+    first: isize,
+    stored: usize,
+    w: [f64; 4],
+    newest: f64,
+}
+
+impl Look {
+    fn of(tap: Tap) -> Self {
+        let (first, stored, w) = tap.stencil();
+        Look {
+            first,
+            stored,
+            w,
+            newest: tap.newest_weight(),
+        }
+    }
+
+    fn reach(&self) -> usize {
+        (-self.first) as usize
+    }
+}
+
+/// The newest samples of a history on the grid, by absolute index (zero before index 0).
+#[derive(Debug, Clone)]
+struct Ring {
+    data: Vec<f64>,
+    mask: usize,
+    /// The index the next sample will have.
+    next: usize,
+}
+
+impl Ring {
+    fn new(reach: usize) -> Self {
+        let cap = (reach + 8).next_power_of_two();
+        Ring {
+            data: vec![0.0; cap],
+            mask: cap - 1,
+            next: 0,
+        }
+    }
+
+    #[inline]
+    fn push(&mut self, v: f64) {
+        self.data[self.next & self.mask] = v;
+        self.next += 1;
+    }
+
+    #[inline]
+    fn at(&self, i: isize) -> f64 {
+        if i < 0 {
+            0.0
+        } else {
+            self.data[i as usize & self.mask]
+        }
+    }
+
+    /// The look-up's part from stored samples, for the sample about to be pushed.
+    #[inline]
+    fn known(&self, l: &Look) -> f64 {
+        let base = self.next as isize + l.first;
+        let w = &l.w;
+        if base >= 0 && l.stored == 4 {
+            // The common case, without a branch per sample: four stored samples, all at or after
+            // index 0.
+            let (b, m, d) = (base as usize, self.mask, &self.data);
+            return (w[0] * d[b & m] + w[1] * d[(b + 1) & m])
+                + (w[2] * d[(b + 2) & m] + w[3] * d[(b + 3) & m]);
+        }
+        if l.stored == 3 {
+            w[0] * self.at(base) + w[1] * self.at(base + 1) + w[2] * self.at(base + 2)
+        } else {
+            (w[0] * self.at(base) + w[1] * self.at(base + 1))
+                + (w[2] * self.at(base + 2) + w[3] * self.at(base + 3))
+        }
+    }
+
+    /// The `len` newest samples, oldest first, into `out`.
+    fn newest(&self, len: usize, out: &mut Vec<f64>) {
+        out.clear();
+        let next = self.next as isize;
+        out.extend((next - len as isize..next).map(|i| self.at(i)));
+    }
+}
+
+/// The slab's state frozen when it fell quiet: its last samples, from which every later instant
+/// is read until the next contact.
+#[derive(Debug, Clone, Default)]
+struct Quiet {
+    /// Index of the newest sample when it fell quiet.
+    n: usize,
+    a: f64,
+    b: f64,
+    /// Q at indices n - len + 1 ..= n.
+    q: Vec<f64>,
+    /// The largest |e| over the first round trip after `n` and over the second (from which
+    /// the ringing repeats, attenuated), once asked for.
+    envelope: std::cell::OnceCell<[f64; 2]>,
+}
+
+/// Cubic Lagrange interpolation in a window whose last sample has index `last`, at the fractional
+/// index `s` (at most `last`); zero before index 0.
+fn window_at(values: &[f64], last: usize, s: f64) -> f64 {
+    let len = values.len() as isize;
+    let first = last as isize - len + 1;
+    // Four points j - 1 ..= j + 2 around s, moved back so that none lies past the window's end.
+    let j = (s.floor() as isize).min(last as isize - 2);
+    let x = s - j as f64;
+    let at = |i: isize| {
+        if i < 0 || i < first {
+            0.0
+        } else {
+            values[(i - first) as usize]
+        }
+    };
+    let (a, b, c, d) = (at(j - 1), at(j), at(j + 1), at(j + 2));
+    let wa = -x * (x - 1.0) * (x - 2.0) / 6.0;
+    let wb = (x + 1.0) * (x - 1.0) * (x - 2.0) / 2.0;
+    let wc = -(x + 1.0) * x * (x - 2.0) / 2.0;
+    let wd = (x + 1.0) * x * (x - 1.0) / 6.0;
+    wa * a + wb * b + wc * c + wd * d
+}
+
+/// What the ringing between grid points, and at the phases of later round trips that fall
+/// between grid points, can exceed its largest value on the grid by: the cubic look-ups'
+/// overshoot, with room to spare.
+const WINDOW_OVERSHOOT: f64 = 1.5;
+
+/// A floor slab's elastic response to the contact force, stepped on the contact grid while its
+/// waves are fresh and read in closed form once they only ring.
 #[derive(Debug, Clone)]
 pub struct SlabWaves {
     inv_z: f64,
@@ -30,15 +176,32 @@ pub struct SlabWaves {
     round_decay: f64,
     near_weight: f64,
     far_weight: f64,
-    recur: Tap,
-    near: Tap,
-    far: Tap,
+    recur: Look,
+    near: Look,
+    far: Look,
+    /// T / h: the round trip in grid steps.
+    round_steps: f64,
+    /// Samples a quiet window keeps: the deepest look-up and a stencil more.
+    window: usize,
+    /// Material damping 1 / t_d [1/s].
+    decay_per_s: f64,
+    tau_steps: f64,
     a: f64,
     b: f64,
     f_prev: f64,
-    q: Series,
+    q: Ring,
     elastic: f64,
-    forces: Vec<f64>,
+    /// Pushes since the last nonzero force.
+    zero_run: usize,
+    /// The last prediction, for the index it was made for (a contact step predicts, then
+    /// pushes).
+    predicted: std::cell::Cell<Option<(usize, f64, f64)>>,
+    /// `Some` while quiet.
+    quiet: Option<Quiet>,
+    /// The buffers of the last quiet window, kept for the next.
+    spare: Quiet,
+    /// Stretches of forces while stepping: (index of the first, the forces).
+    forces: Vec<(usize, Vec<f64>)>,
     geometry: Geometry,
 }
 
@@ -53,27 +216,28 @@ struct Geometry {
     push_direction: f64,
 }
 
-/// A saved state to return to (after a trial step).
+/// A saved state to return to after one trial step.
 #[derive(Debug, Clone, Copy)]
 pub struct SlabMark {
-    len: usize,
+    next: usize,
     a: f64,
     b: f64,
     f_prev: f64,
     elastic: f64,
+    zero_run: usize,
+    forces: usize,
 }
 
 impl SlabWaves {
     /// The slab `slab` carrying `mass_kg`, read at `zone_m` from its contact end, with damping
     /// ratio `damping_ratio`, on a grid of step `h`; `push_direction` is +1 when the force
-    /// pushes it towards +x (the right building), -1 for the left.
+    /// pushes it towards +x (the right building), -1 for the left. It starts at rest, quiet.
     pub fn new(
         slab: &Slab,
         mass_kg: f64,
         zone_m: f64,
         damping_ratio: f64,
         h: f64,
-        capacity: usize,
         push_direction: f64,
     ) -> Self {
         let c = slab.wave_speed_m_s(mass_kg);
@@ -85,10 +249,14 @@ impl SlabWaves {
             f64::INFINITY
         };
         let decay = |s: f64| (-s / decay_time).exp();
-        let mut q = Series::with_capacity(capacity);
-        q.push(0.0);
-        let mut forces = Vec::with_capacity(capacity);
-        forces.push(0.0);
+        let (recur, near, far) = (
+            Look::of(Tap::new(t, h)),
+            Look::of(Tap::new(tau, h)),
+            Look::of(Tap::new(t - tau, h)),
+        );
+        let reach = recur.reach().max(near.reach()).max(far.reach());
+        let round_steps = t / h;
+        let window = reach + 4;
         SlabWaves {
             inv_z: 1.0 / slab.impedance_n_s_m(mass_kg),
             inv_m: 1.0 / mass_kg,
@@ -97,15 +265,26 @@ impl SlabWaves {
             round_decay: decay(t),
             near_weight: decay(tau),
             far_weight: decay(t - tau),
-            recur: Tap::new(t, h),
-            near: Tap::new(tau, h),
-            far: Tap::new(t - tau, h),
+            recur,
+            near,
+            far,
+            round_steps,
+            window,
+            decay_per_s: 1.0 / decay_time,
+            tau_steps: tau / h,
             a: 0.0,
             b: 0.0,
             f_prev: 0.0,
-            q,
+            q: Ring::new(reach),
             elastic: 0.0,
-            forces,
+            zero_run: 0,
+            predicted: std::cell::Cell::new(None),
+            quiet: Some(Quiet {
+                q: vec![0.0; window],
+                ..Quiet::default()
+            }),
+            spare: Quiet::default(),
+            forces: Vec::new(),
             geometry: Geometry {
                 length_m: slab.length_m,
                 area_m2: slab.area_m2(),
@@ -117,25 +296,59 @@ impl SlabWaves {
         }
     }
 
-    /// The elastic displacement at the plane after one more step, as e0 + e1 F_{n+1}.
+    /// Whether it is being stepped (a contact now or within the last two round trips).
+    #[inline]
+    pub fn is_live(&self) -> bool {
+        self.quiet.is_none()
+    }
+
+    /// The elastic displacement at the plane after one more step, as e0 + e1 F_{n+1} (while
+    /// live).
     #[inline]
     pub fn predict(&self) -> (f64, f64) {
+        debug_assert!(self.is_live());
+        if let Some((next, e0, e1)) = self.predicted.get()
+            && next == self.q.next
+        {
+            return (e0, e1);
+        }
         let (e, h) = (self.step_decay, self.h);
         let a0 = e * self.a + 0.5 * h * e * self.f_prev;
         let b0 = e * self.b + 0.5 * h * (e * self.a + a0);
-        let gain = 1.0 / (1.0 - self.round_decay * self.recur.newest_weight());
-        let q0 = (a0 + self.round_decay * self.recur.known_before_push(&self.q)) * gain;
+        let gain = 1.0 / (1.0 - self.round_decay * self.recur.newest);
+        let q0 = (a0 + self.round_decay * self.q.known(&self.recur)) * gain;
         let q1 = 0.5 * h * gain;
-        let top = self.near_weight * self.near.newest_weight()
-            + self.far_weight * self.far.newest_weight();
-        let known = self.near_weight * self.near.known_before_push(&self.q)
-            + self.far_weight * self.far.known_before_push(&self.q);
+        let top = self.near_weight * self.near.newest + self.far_weight * self.far.newest;
+        let known = self.near_weight * self.q.known(&self.near)
+            + self.far_weight * self.q.known(&self.far);
         let e0 = self.inv_z * (known + top * q0) - self.inv_m * b0;
         let e1 = self.inv_z * top * q1 - self.inv_m * 0.25 * h * h;
+        self.predicted.set(Some((self.q.next, e0, e1)));
         (e0, e1)
     }
 
-    /// Advances one step with the force F_{n+1}.
+    /// The elastic displacement at grid index `next` (the next step) as e0 + e1 F_next: the
+    /// stepped prediction while live; while quiet, the ringing there and the compliance the
+    /// slab would have if it were pushed.
+    pub fn predict_at(&self, next: usize) -> (f64, f64) {
+        match &self.quiet {
+            None => {
+                debug_assert_eq!(self.q.next, next);
+                self.predict()
+            }
+            Some(_) => (self.elastic_at(next), self.instant_compliance()),
+        }
+    }
+
+    /// de/dF over one step: what the newest force moves the plane by (independent of the state).
+    fn instant_compliance(&self) -> f64 {
+        let h = self.h;
+        let gain = 1.0 / (1.0 - self.round_decay * self.recur.newest);
+        let top = self.near_weight * self.near.newest + self.far_weight * self.far.newest;
+        self.inv_z * top * 0.5 * h * gain - self.inv_m * 0.25 * h * h
+    }
+
+    /// Advances one step with the force F_{n+1} (while live).
     #[inline]
     pub fn push(&mut self, force: f64) {
         let (e0, e1) = self.predict();
@@ -143,52 +356,243 @@ impl SlabWaves {
         let a1 = e * self.a + 0.5 * h * (e * self.f_prev + force);
         self.b = e * self.b + 0.5 * h * (e * self.a + a1);
         self.a = a1;
-        let gain = 1.0 / (1.0 - self.round_decay * self.recur.newest_weight());
-        let q1 = (a1 + self.round_decay * self.recur.known_before_push(&self.q)) * gain;
+        let gain = 1.0 / (1.0 - self.round_decay * self.recur.newest);
+        let q1 = (a1 + self.round_decay * self.q.known(&self.recur)) * gain;
         self.q.push(q1);
-        self.forces.push(force);
         self.f_prev = force;
         self.elastic = e0 + e1 * force;
+        if let Some((_, f)) = self.forces.last_mut() {
+            f.push(force);
+        }
+        self.zero_run = if force == 0.0 { self.zero_run + 1 } else { 0 };
     }
 
-    /// Elastic displacement of the plane at the newest step [m].
+    /// Index of the newest sample.
+    pub fn newest_index(&self) -> usize {
+        match &self.quiet {
+            Some(q) => q.n,
+            None => self.q.next - 1,
+        }
+    }
+
+    /// Elastic displacement of the plane at the newest step [m] (while live).
     pub fn elastic_m(&self) -> f64 {
         self.elastic
     }
 
-    /// The state to come back to if a trial step is taken again.
+    /// Elastic displacement of the plane at grid index `n` [m]: the newest step's while live, the
+    /// closed form while quiet.
+    pub fn elastic_at(&self, n: usize) -> f64 {
+        match &self.quiet {
+            None => {
+                debug_assert_eq!(n, self.q.next - 1);
+                self.elastic
+            }
+            Some(q) => self.quiet_elastic(q, n as f64),
+        }
+    }
+
+    /// e at grid index `n` of a quiet slab: the d'Alembert sum of the closed-form Q less the
+    /// rigid part B / m (one exponential: the decays at the two look-ups differ from the one at
+    /// n by the look-ups' own weights).
+    fn quiet_elastic(&self, q: &Quiet, n: f64) -> f64 {
+        let base = self.decay(n - q.n as f64);
+        let near = self.fold_q(q, n - self.tau_steps, q.a * base / self.near_weight);
+        let far = self.fold_q(
+            q,
+            n - (self.round_steps - self.tau_steps),
+            q.a * base / self.far_weight,
+        );
+        let b = base * (q.b + (n - q.n as f64) * self.h * q.a);
+        self.inv_z * (self.near_weight * near + self.far_weight * far) - self.inv_m * b
+    }
+
+    /// Q at the fractional grid index `s` of a quiet slab: J A(s) + r^J Q(s - J T), with s - J T
+    /// inside the window.
+    fn quiet_q(&self, q: &Quiet, s: f64) -> f64 {
+        self.fold_q(q, s, self.quiet_a(q, s))
+    }
+
+    /// [`SlabWaves::quiet_q`] with A(s) given.
+    fn fold_q(&self, q: &Quiet, s: f64, a: f64) -> f64 {
+        let past = s - q.n as f64;
+        if past <= 0.0 {
+            return window_at(&q.q, q.n, s);
+        }
+        let j = (past / self.round_steps).ceil();
+        j * a + self.round_decay.powi(j as i32) * window_at(&q.q, q.n, s - j * self.round_steps)
+    }
+
+    /// A(s) after the slab fell quiet: its value then, decayed.
+    fn quiet_a(&self, q: &Quiet, s: f64) -> f64 {
+        q.a * self.decay(s - q.n as f64)
+    }
+
+    /// B(s) after the slab fell quiet (exact for the grid's recursion at grid points).
+    fn quiet_b(&self, q: &Quiet, s: f64) -> f64 {
+        let steps = s - q.n as f64;
+        self.decay(steps) * (q.b + steps * self.h * q.a)
+    }
+
+    /// exp(-steps h / t_d).
+    fn decay(&self, steps: f64) -> f64 {
+        if self.decay_per_s == 0.0 {
+            1.0
+        } else {
+            (-steps * self.h * self.decay_per_s).exp()
+        }
+    }
+
+    /// A bound on |e| at every grid index from `n` on (infinite while live: the waves are
+    /// fresh).
+    pub fn envelope_from(&self, n: usize) -> f64 {
+        let Some(q) = &self.quiet else {
+            return f64::INFINITY;
+        };
+        if q.a == 0.0 && q.b == 0.0 && q.q.iter().all(|&x| x == 0.0) {
+            return 0.0;
+        }
+        let [early, late] = *q.envelope.get_or_init(|| self.tabulate_envelope(q));
+        let trips = (n as f64 - q.n as f64) / self.round_steps;
+        let bound = if trips <= 1.0 {
+            early.max(late)
+        } else {
+            late * self.round_decay.powi((trips - 1.0).floor() as i32)
+        };
+        WINDOW_OVERSHOOT * bound
+    }
+
+    /// The largest |e| on the grid over the first round trip after the slab fell quiet and over
+    /// the second: from the second on, e(t + T) = r e(t). The grid recursion is stepped on with
+    /// zero force from the quiet window (a copy of its samples), the cheapest way to every grid
+    /// point of two round trips.
+    fn tabulate_envelope(&self, q: &Quiet) -> [f64; 2] {
+        let steps = self.round_steps.ceil() as usize + 1;
+        let mut ring = Ring::new(self.window);
+        // The window's samples at indices q.n + 1 - len ..= q.n (those before index 0 are zero).
+        let len = q.q.len();
+        let skip = len.saturating_sub(q.n + 1);
+        ring.next = q.n + 1 + skip - len;
+        for &v in &q.q[skip..] {
+            ring.push(v);
+        }
+        let (e, h) = (self.step_decay, self.h);
+        let gain = 1.0 / (1.0 - self.round_decay * self.recur.newest);
+        let top = self.near_weight * self.near.newest + self.far_weight * self.far.newest;
+        let (mut a, mut b) = (q.a, q.b);
+        let mut most = [0.0f64; 2];
+        for i in 0..2 * steps {
+            let a1 = e * a;
+            b = e * b + 0.5 * h * (e * a + a1);
+            a = a1;
+            let q1 = (a1 + self.round_decay * ring.known(&self.recur)) * gain;
+            let known = self.near_weight * ring.known(&self.near)
+                + self.far_weight * ring.known(&self.far);
+            let elastic = self.inv_z * (known + top * q1) - self.inv_m * b;
+            ring.push(q1);
+            let k = usize::from(i >= steps);
+            most[k] = most[k].max(elastic.abs());
+        }
+        most
+    }
+
+    /// Falls quiet once the force has stopped: from then on its ringing is read in closed form.
+    pub fn settle(&mut self) {
+        if self.quiet.is_some() || self.zero_run == 0 {
+            return;
+        }
+        let mut q = std::mem::take(&mut self.spare);
+        q.n = self.q.next - 1;
+        q.a = self.a;
+        q.b = self.b;
+        q.envelope = std::cell::OnceCell::new();
+        self.q.newest(self.window, &mut q.q);
+        self.quiet = Some(q);
+    }
+
+    /// Starts stepping again at grid index `n` (at or after the quiet window's end): the samples
+    /// the look-ups need are rebuilt from the closed form of the ringing.
+    pub fn revive(&mut self, n: usize) {
+        let Some(q) = self.quiet.take() else {
+            return;
+        };
+        self.predicted.set(None);
+        let from = (n as isize - self.window as isize + 1).max(0) as usize;
+        self.q.next = from;
+        for i in from..=n {
+            let v = self.quiet_q(&q, i as f64);
+            self.q.push(v);
+        }
+        self.a = self.quiet_a(&q, n as f64);
+        self.b = self.quiet_b(&q, n as f64);
+        self.f_prev = 0.0;
+        self.elastic = self.quiet_elastic(&q, n as f64);
+        self.zero_run = 0;
+        self.forces.push((n + 1, Vec::new()));
+        self.spare = q;
+    }
+
+    /// The state to come back to if one trial step is taken again (while live).
     pub fn mark(&self) -> SlabMark {
         SlabMark {
-            len: self.q.len(),
+            next: self.q.next,
             a: self.a,
             b: self.b,
             f_prev: self.f_prev,
             elastic: self.elastic,
+            zero_run: self.zero_run,
+            forces: self.forces.last().map_or(0, |(_, f)| f.len()),
         }
     }
 
-    /// Back to a marked state.
+    /// Back to a marked state (one step back at most: the ring keeps a few spare samples).
     pub fn reset(&mut self, mark: SlabMark) {
-        self.q.truncate(mark.len);
-        self.forces.truncate(mark.len);
+        self.q.next = mark.next;
         self.a = mark.a;
         self.b = mark.b;
         self.f_prev = mark.f_prev;
         self.elastic = mark.elastic;
+        self.zero_run = mark.zero_run;
+        if let Some((_, f)) = self.forces.last_mut() {
+            f.truncate(mark.forces);
+        }
     }
 
-    /// The slab's stress waves over the run: H = F + r H(t - T) on the step grid, read as any
-    /// bar's (stress from the contact end to the free end).
-    pub fn waves(&self) -> BarWaves {
+    /// The slab's stress waves over the run: H = F + r H(t - T) on the step grid over each
+    /// stretch the slab was stepped, repeated round trip by round trip (attenuated by r) between
+    /// them, read as any bar's (stress from the contact end to the free end). `end_s` is the
+    /// run's end.
+    pub fn waves(&self, end_s: f64) -> BarWaves {
         let g = self.geometry;
         let t = 2.0 * g.length_m / g.wave_speed_m_s;
-        let tap = Tap::new(t, self.h);
+        let tap = Look::of(Tap::new(t, self.h));
         let r = self.round_decay;
-        let mut hs = Series::with_capacity(self.forces.len());
-        let gain = 1.0 / (1.0 - r * tap.newest_weight());
-        for &f in &self.forces {
-            let v = (f + r * tap.known_before_push(&hs)) * gain;
-            hs.push(v);
+        let gain = 1.0 / (1.0 - r * tap.newest);
+        // Each stretch starts a round trip early (the previous stretch's ringing): folding past
+        // its end reads its last round trip, which must be stored whatever the contact's length.
+        let lead = self.round_steps.ceil() as usize + tap.reach() + 4;
+        let mut segments: Vec<HistorySegment> = Vec::with_capacity(self.forces.len());
+        let mut ring = Ring::new(tap.reach());
+        for (first, forces) in &self.forces {
+            // The samples before the stretch: the previous stretch's ringing, or rest.
+            let start = first.saturating_sub(lead);
+            ring.next = start;
+            for i in start..*first {
+                let v = segments.last().map_or(0.0, |s: &HistorySegment| {
+                    s.value_at(i as f64, self.round_steps, r)
+                });
+                ring.push(v);
+            }
+            let mut values: Vec<f64> = (start..*first).map(|i| ring.at(i as isize)).collect();
+            for &f in forces {
+                let v = (f + r * ring.known(&tap)) * gain;
+                ring.push(v);
+                values.push(v);
+            }
+            segments.push(HistorySegment {
+                first: start,
+                values,
+            });
         }
         BarWaves {
             body_length_m: g.length_m,
@@ -198,10 +602,10 @@ impl SlabWaves {
             impedance_n_s_m: g.impedance_n_s_m,
             initial_velocity_m_s: 0.0,
             push_direction: g.push_direction,
-            end_s: (self.forces.len() - 1) as f64 * self.h,
-            history: History::Uniform {
+            end_s,
+            history: History::Segments {
                 dt_s: self.h,
-                values: hs.into_samples(),
+                segments,
             },
             decay_per_s: g.decay_per_s,
         }

@@ -2,8 +2,8 @@
 
 use super::elements::Element;
 use super::levels::Level;
-use super::result::{BuildingResult, BuildingStats, ImpactEvent, group_impacts};
-use super::stepper::{Grid, Sample, Stepper};
+use super::result::{BuildingResult, BuildingStats, ImpactEvent, SlabRecord, group_impacts};
+use super::stepper::{Grid, Record, Stepper};
 use super::{BuildingScenario, ContactModel, SlabReading, Warning};
 use crate::model::contact::ContactLaw;
 use crate::model::control::Control;
@@ -115,15 +115,29 @@ fn plan(
         .clamp(1.0, MAX_FREE_STEP as f64) as usize;
     let h = dt / (free_per_sample * per_free_step) as f64;
     let total = ((duration / h) - 1e-9).ceil().max(0.0) as usize;
+    // A free stretch is checked every 0.3 / w_max at most: between two checks the cubic through
+    // them is then within (0.3^4 / 384) of the motion's amplitude (a part in 20 000), so that a
+    // check clears all but the parts that come close to the gap or to a peak.
+    let w_max = modes
+        .iter()
+        .flat_map(|m| m.omega_rad_s.iter())
+        .fold(0.0f64, |a, &w| a.max(w));
+    let check = ((0.3 / w_max / h).floor() as usize).clamp(1, per_free_step);
     (
         Grid {
             h,
             per_free_step,
             total,
+            check,
+            contact_sample_s: (scale / CONTACT_SAMPLES_PER_SCALE).max(h),
         },
         warning,
     )
 }
+
+/// Samples recorded per contact time scale inside contacts: a force pulse is drawn by some tens
+/// of points, whatever the step.
+const CONTACT_SAMPLES_PER_SCALE: f64 = 8.0;
 
 /// Runs two buildings through a ground motion.
 pub fn solve(sc: &BuildingScenario, motion: &GroundMotion) -> Result<BuildingResult, SolveError> {
@@ -136,6 +150,34 @@ pub fn solve_with(
     motion: &GroundMotion,
     control: &Control,
 ) -> Result<BuildingResult, SolveError> {
+    run(sc, motion, control, true)
+}
+
+/// The run's summary alone: contacts, impacts, peaks, forces, energy and warnings, without the
+/// histories and the slabs' waves (what an error estimate or a gap assessment compares).
+pub fn solve_summary(
+    sc: &BuildingScenario,
+    motion: &GroundMotion,
+) -> Result<BuildingResult, SolveError> {
+    solve_summary_with(sc, motion, Control::never())
+}
+
+/// [`solve_summary`], reporting to `control`.
+pub fn solve_summary_with(
+    sc: &BuildingScenario,
+    motion: &GroundMotion,
+    control: &Control,
+) -> Result<BuildingResult, SolveError> {
+    run(sc, motion, control, false)
+}
+
+/// A run, with its histories and waves when `histories`.
+fn run(
+    sc: &BuildingScenario,
+    motion: &GroundMotion,
+    control: &Control,
+    histories: bool,
+) -> Result<BuildingResult, SolveError> {
     sc.validate()?;
     let start = Instant::now();
     let levels = sc.levels();
@@ -146,7 +188,7 @@ pub fn solve_with(
     }
     let mut warnings: Vec<Warning> = grid_warning.into_iter().collect();
     warnings.extend(paper_reading_warnings(sc, &levels));
-    let mut stepper = Stepper::new(sc, motion, grid, &levels, modes.clone());
+    let mut stepper = Stepper::new(sc, motion, grid, &levels, modes.clone(), histories);
     stepper.run(control)?;
     let end_s = grid.total as f64 * grid.h;
     let (energy, still) = stepper.finish(end_s);
@@ -160,7 +202,15 @@ pub fn solve_with(
             relative: energy.balance_error(),
         });
     }
-    let h = Histories::of(std::mem::take(&mut stepper.samples), sc, levels.len());
+    let slabs = SlabRecord::new(
+        if histories {
+            stepper.take_slabs()
+        } else {
+            vec![]
+        },
+        end_s,
+    );
+    let h = std::mem::replace(&mut stepper.record, Record::new(0, 0, 0, 0.0));
     let roofs = [
         h.floors[0].last().cloned().unwrap_or_default(),
         h.floors[1].last().cloned().unwrap_or_default(),
@@ -195,7 +245,7 @@ pub fn solve_with(
         max_force_by_level_n: max_by_level,
         max_closing_m: stepper.max_closing(),
         peak_level_displacement_m: peak_points,
-        slab_waves: stepper.slab_waves(),
+        slabs,
         contacts,
         impacts,
         energy,
@@ -244,53 +294,6 @@ fn stereo_chatter(impacts: &[ImpactEvent]) -> Option<Warning> {
         impacts: chattering.len(),
         exchanges: chattering.iter().sum(),
     })
-}
-
-/// The run's samples as one history per quantity.
-struct Histories {
-    time_s: Vec<f64>,
-    ground: Vec<f64>,
-    floors: [Vec<Vec<f64>>; 2],
-    floor_v: [Vec<Vec<f64>>; 2],
-    roof_v: [Vec<f64>; 2],
-    /// Absolute roof accelerations (relative plus the ground's).
-    roof_a: [Vec<f64>; 2],
-    level_force: Vec<Vec<f64>>,
-    force: Vec<f64>,
-}
-
-impl Histories {
-    fn of(samples: Vec<Sample>, sc: &BuildingScenario, levels: usize) -> Self {
-        let n = samples.len();
-        let per_floor = |storeys: usize| vec![Vec::with_capacity(n); storeys];
-        let mut h = Histories {
-            time_s: Vec::with_capacity(n),
-            ground: Vec::with_capacity(n),
-            floors: [per_floor(sc.left.storeys), per_floor(sc.right.storeys)],
-            floor_v: [per_floor(sc.left.storeys), per_floor(sc.right.storeys)],
-            roof_v: [Vec::with_capacity(n), Vec::with_capacity(n)],
-            roof_a: [Vec::with_capacity(n), Vec::with_capacity(n)],
-            level_force: vec![Vec::with_capacity(n); levels],
-            force: Vec::with_capacity(n),
-        };
-        for s in samples {
-            h.time_s.push(s.t);
-            h.ground.push(s.ground);
-            for side in 0..2 {
-                for (f, u) in s.floors[side].iter().enumerate() {
-                    h.floors[side][f].push(*u);
-                    h.floor_v[side][f].push(s.floor_v[side][f]);
-                }
-                h.roof_v[side].push(s.roof_v[side]);
-                h.roof_a[side].push(s.roof_a[side] + s.ground);
-            }
-            for (l, f) in s.forces.iter().enumerate() {
-                h.level_force[l].push(*f);
-            }
-            h.force.push(s.forces.iter().sum());
-        }
-        h
-    }
 }
 
 /// A building run over its step budget, with the building command's own keys as the remedy

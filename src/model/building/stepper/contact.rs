@@ -1,7 +1,44 @@
 //! The contact step: Newmark's average acceleration with the contact forces implicit, the
-//! levels in contact solved together.
+//! levels in contact solved together. Its buffers live in a [`Scratch`] kept for the whole run,
+//! and the compliance of the points over a whole grid step (the same at every such step) is
+//! computed once.
 
 use super::*;
+
+/// A contact step computed but not taken.
+#[derive(Default)]
+pub(super) struct Trial {
+    hh: f64,
+    ground: f64,
+    /// The modal displacements' increments.
+    dq: [Vec<f64>; 2],
+    forces: Vec<f64>,
+    deltas: Vec<f64>,
+    rates: Vec<f64>,
+    /// The level whose Kelvin-Voigt link let go at the end of this (shortened) step.
+    released: Option<usize>,
+}
+
+/// The contact step's buffers.
+#[derive(Default)]
+pub(super) struct Scratch {
+    k_hat: [Vec<f64>; 2],
+    step: [Vec<f64>; 2],
+    /// Each point's overlap at the step's end without new forces.
+    predicted: Vec<f64>,
+    /// The compliance G (points x points, row-major) of the step being tried.
+    g: Vec<f64>,
+    /// G over a whole grid step, once computed, and whether the step tried reads it.
+    g_full: Option<Vec<f64>>,
+    use_full: bool,
+    /// The slabs' elastic displacement after the step without new force, and their
+    /// instantaneous compliance, per point.
+    elastic: Vec<f64>,
+    compliance: Vec<f64>,
+    trial: Trial,
+    before: Vec<f64>,
+    u_before: Vec<(f64, f64)>,
+}
 
 impl Stepper<'_> {
     /// One implicit step of every level in contact, to the next grid point (or a Kelvin-Voigt
@@ -19,39 +56,65 @@ impl Stepper<'_> {
         }
         // A level out of contact follows the motion: its overlap and rate are the kinematics
         // now, not what they were when it last let go.
+        let n = self.n;
         for i in 0..self.points.len() {
             if self.points[i].force <= 0.0 {
                 let (c, w) = self.point_now(i);
                 let p = &mut self.points[i];
-                p.delta = c - self.sc.gap_m - p.elastic();
+                p.delta = c - self.sc.gap_m - p.elastic_at(n);
                 p.rate = w;
             }
         }
-        let trial = self.trial(hh);
+        let mut cs = self
+            .contact_scratch
+            .take()
+            .expect("the scratch is home between stages");
+        self.trial(hh, &mut cs);
+        // A quiet slab (its waves only ringing) starts stepping where its level is pushed.
+        if self.sears && self.revive_pushed(&cs.trial.forces) {
+            self.trial(hh, &mut cs);
+        }
         // A Kelvin-Voigt link lets go where k delta + c delta' reaches zero, inside the step.
         let released = (0..self.points.len()).find(|&i| {
             self.sc.contact == ContactModel::Kelvin
                 && self.points[i].force > 0.0
-                && trial.forces[i] <= 0.0
-                && trial.deltas[i] > 0.0
+                && cs.trial.forces[i] <= 0.0
+                && cs.trial.deltas[i] > 0.0
         });
-        let trial = match released {
-            Some(i) => {
-                let push = |x: f64| {
-                    let t = self.trial(x * hh);
-                    let p = &self.points[i];
-                    p.element.push(t.deltas[i], t.rates[i], p.v0)
-                };
-                let x = bracket(push, 0.0, 1.0, 1e-12).second_side.max(1e-9);
-                let mut t = self.trial(x * hh);
-                t.forces[i] = 0.0;
-                t.released = Some(i);
-                t
-            }
-            None => trial,
-        };
-        self.commit_contact(trial);
+        if let Some(i) = released {
+            let push = |x: f64, cs: &mut Scratch| {
+                self.trial(x * hh, cs);
+                let p = &self.points[i];
+                p.element.push(cs.trial.deltas[i], cs.trial.rates[i], p.v0)
+            };
+            let x = bracket(|x| push(x, &mut cs), 0.0, 1.0, 1e-12)
+                .second_side
+                .max(1e-9);
+            self.trial(x * hh, &mut cs);
+            cs.trial.forces[i] = 0.0;
+            cs.trial.released = Some(i);
+        }
+        self.commit_contact(&mut cs);
+        self.contact_scratch = Some(cs);
         Ok(())
+    }
+
+    /// Revives the quiet slabs of every level the trial pushes; whether there were any (the
+    /// trial must then be made again, with their stepped waves).
+    fn revive_pushed(&mut self, forces: &[f64]) -> bool {
+        let n = self.n;
+        let mut any = false;
+        for (p, f) in self.points.iter_mut().zip(forces) {
+            if *f > 0.0 {
+                for slab in p.slabs.iter_mut().flatten() {
+                    if !slab.is_live() {
+                        slab.revive(n);
+                        any = true;
+                    }
+                }
+            }
+        }
+        any
     }
 
     /// Newmark's step needs accelerations that satisfy the equations of motion where it starts:
@@ -70,48 +133,42 @@ impl Stepper<'_> {
         }
     }
 
-    /// A contact step of length hh, not yet taken.
-    pub(super) fn trial(&self, hh: f64) -> Trial {
+    /// A contact step of length hh, not yet taken, into `cs.trial`.
+    fn trial(&self, hh: f64, cs: &mut Scratch) {
         let ground = self.motion.at(self.time() + hh);
-        let (k_hat, step) = self.free_increment(hh, ground);
-        let (predicted, g) = self.contact_compliance(&k_hat, &step);
-        let (forces, deltas, rates) = self.contact_forces(hh, &predicted, &g);
-        let dq: [Vec<f64>; 2] = std::array::from_fn(|s| {
+        self.free_increment(hh, ground, cs);
+        self.contact_compliance(hh, cs);
+        self.contact_forces(hh, cs);
+        let out = &mut cs.trial;
+        for s in 0..2 {
             let sign = if s == 0 { -1.0 } else { 1.0 };
-            (0..step[s].len())
-                .map(|k| {
-                    let f: f64 = self
-                        .points
-                        .iter()
-                        .zip(&forces)
-                        .map(|(p, f)| p.r[s][k] * f)
-                        .sum();
-                    step[s][k] + sign * f / k_hat[s][k]
-                })
-                .collect()
-        });
-        Trial {
-            hh,
-            ground,
-            dq,
-            forces,
-            deltas,
-            rates,
-            released: None,
+            out.dq[s].clear();
+            for k in 0..cs.step[s].len() {
+                let f: f64 = self
+                    .points
+                    .iter()
+                    .zip(&out.forces)
+                    .map(|(p, f)| p.r[s][k] * f)
+                    .sum();
+                out.dq[s].push(cs.step[s][k] + sign * f / cs.k_hat[s][k]);
+            }
         }
+        out.hh = hh;
+        out.ground = ground;
+        out.released = None;
     }
 
     /// Newmark's step in incremental form, k_hat dq = dp + (4/h + 2c) v + 2a, so that short
     /// steps lose nothing to cancellation: each mode's effective stiffness and its increment
     /// over hh without a change of the contact forces (the ground at the step's end given).
-    fn free_increment(&self, hh: f64, ground: f64) -> ([Vec<f64>; 2], [Vec<f64>; 2]) {
+    fn free_increment(&self, hh: f64, ground: f64, cs: &mut Scratch) {
         let ground_change = ground - self.motion.at(self.time());
         let full = (hh - self.grid.h).abs() <= 1e-12 * hh;
-        let mut k_hat: [Vec<f64>; 2] = [vec![], vec![]];
-        let mut step: [Vec<f64>; 2] = [vec![], vec![]];
         for s in 0..2 {
             let side = &self.sides[s];
             let sign = if s == 0 { -1.0 } else { 1.0 };
+            cs.k_hat[s].clear();
+            cs.step[s].clear();
             for k in 0..side.modes() {
                 let kh = if full {
                     side.k_hat[k]
@@ -123,69 +180,89 @@ impl Stepper<'_> {
                 let load = -side.gamma[k] * ground_change - contact_now
                     + (4.0 / hh + 2.0 * c) * side.v[k]
                     + 2.0 * side.a[k];
-                k_hat[s].push(kh);
-                step[s].push(load / kh);
+                cs.k_hat[s].push(kh);
+                cs.step[s].push(load / kh);
             }
         }
-        (k_hat, step)
     }
 
     /// Each contact point's overlap at the step's end without new forces, less the gap (and
     /// the slabs' predicted elastic part), and the compliance G: delta_p = predicted_p -
     /// sum_q G_pq F_q.
-    fn contact_compliance(
-        &self,
-        k_hat: &[Vec<f64>; 2],
-        step: &[Vec<f64>; 2],
-    ) -> (Vec<f64>, Vec<Vec<f64>>) {
-        let pred: [Vec<f64>; 2] = std::array::from_fn(|s| {
-            self.sides[s]
-                .q
-                .iter()
-                .zip(&step[s])
-                .map(|(q, dq)| q + dq)
-                .collect()
-        });
+    fn contact_compliance(&self, hh: f64, cs: &mut Scratch) {
         let np = self.points.len();
-        let mut predicted = vec![0.0; np];
-        let mut g = vec![vec![0.0; np]; np];
-        for (i, p) in self.points.iter().enumerate() {
+        cs.predicted.clear();
+        cs.elastic.clear();
+        cs.compliance.clear();
+        let next = self.n + 1;
+        for p in &self.points {
             let (e0, e1) = if self.sears {
-                p.predict_elastic()
+                p.slabs
+                    .iter()
+                    .flatten()
+                    .map(|s| s.predict_at(next))
+                    .fold((0.0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1))
             } else {
                 (0.0, 0.0)
             };
-            predicted[i] = dotv(&p.r[0], &pred[0]) - dotv(&p.r[1], &pred[1]) - self.sc.gap_m - e0;
+            let pred = |s: usize| -> f64 {
+                self.sides[s]
+                    .q
+                    .iter()
+                    .zip(&cs.step[s])
+                    .zip(&p.r[s])
+                    .map(|((q, dq), r)| r * (q + dq))
+                    .sum()
+            };
+            cs.predicted.push(pred(0) - pred(1) - self.sc.gap_m - e0);
+            cs.elastic.push(e0);
+            cs.compliance.push(e1);
+        }
+        let full = (hh - self.grid.h).abs() <= 1e-12 * hh;
+        cs.use_full = full && cs.g_full.is_some();
+        if cs.use_full {
+            return;
+        }
+        cs.g.clear();
+        cs.g.resize(np * np, 0.0);
+        for (i, p) in self.points.iter().enumerate() {
             for (j, o) in self.points.iter().enumerate() {
-                g[i][j] = (0..2)
+                cs.g[i * np + j] = (0..2)
                     .map(|s| {
-                        (0..k_hat[s].len())
-                            .map(|k| p.r[s][k] * o.r[s][k] / k_hat[s][k])
+                        (0..cs.k_hat[s].len())
+                            .map(|k| p.r[s][k] * o.r[s][k] / cs.k_hat[s][k])
                             .sum::<f64>()
                     })
                     .sum();
             }
             // The slabs' instantaneous compliance minus their rigid part can be a hair below
             // zero (the storeys' springs and dampers stiffen the rigid response): clamp.
-            g[i][i] = (g[i][i] + e1).max(0.0);
+            cs.g[i * np + i] = (cs.g[i * np + i] + cs.compliance[i]).max(0.0);
         }
-        (predicted, g)
+        if full {
+            cs.g_full = Some(cs.g.clone());
+            cs.use_full = true;
+        }
     }
 
     /// The contact forces at the step's end, with each point's overlap and its rate, by
     /// nonlinear Gauss-Seidel: each level's monotone scalar equation with the others' forces
     /// fixed, swept until the forces settle (one sweep for one level; the levels couple through
     /// the storeys only, weakly over a fine step).
-    fn contact_forces(
-        &self,
-        hh: f64,
-        predicted: &[f64],
-        g: &[Vec<f64>],
-    ) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+    fn contact_forces(&self, hh: f64, cs: &mut Scratch) {
         let np = self.points.len();
-        let mut forces: Vec<f64> = self.points.iter().map(|p| p.force).collect();
-        let mut deltas = vec![0.0; np];
-        let mut rates = vec![0.0; np];
+        let out = &mut cs.trial;
+        out.forces.clear();
+        out.forces.extend(self.points.iter().map(|p| p.force));
+        out.deltas.clear();
+        out.deltas.resize(np, 0.0);
+        out.rates.clear();
+        out.rates.resize(np, 0.0);
+        let g = if cs.use_full {
+            cs.g_full.as_ref().expect("made")
+        } else {
+            &cs.g
+        };
         for _sweep in 0..200 {
             let mut change = 0.0f64;
             let mut scale = 0.0f64;
@@ -193,16 +270,16 @@ impl Stepper<'_> {
                 let p = &self.points[i];
                 let others: f64 = (0..np)
                     .filter(|&j| j != i)
-                    .map(|j| g[i][j] * forces[j])
+                    .map(|j| g[i * np + j] * out.forces[j])
                     .sum();
-                let rhs = predicted[i] - others;
+                let rhs = cs.predicted[i] - others;
                 // A damped link that let go with the floors still overlapping takes hold again
                 // only when they approach each other (as a free step starts a contact).
                 let held =
                     p.force > 0.0 || p.delta <= 0.0 || p.rate > 0.0 || !self.needs_approach();
                 let d = if held {
                     p.element
-                        .solve_step(g[i][i], rhs, hh, p.delta, p.rate, p.v0)
+                        .solve_step(g[i * np + i], rhs, hh, p.delta, p.rate, p.v0)
                 } else {
                     rhs
                 };
@@ -214,26 +291,31 @@ impl Stepper<'_> {
                 } else {
                     0.0
                 };
-                change = change.max((f - forces[i]).abs());
+                change = change.max((f - out.forces[i]).abs());
                 scale = scale.max(f.abs());
-                forces[i] = f;
-                deltas[i] = d;
-                rates[i] = rate;
+                out.forces[i] = f;
+                out.deltas[i] = d;
+                out.rates[i] = rate;
             }
             if np == 1 || change <= 1e-13 * scale {
                 break;
             }
         }
-        (forces, deltas, rates)
     }
 
-    /// Takes a trial step: the modes, the slabs, the ledger and the contacts.
-    pub(super) fn commit_contact(&mut self, tr: Trial) {
+    /// Takes the trial step: the modes, the slabs, the ledger and the contacts.
+    fn commit_contact(&mut self, cs: &mut Scratch) {
+        let tr = &cs.trial;
         let hh = tr.hh;
         let t0 = self.time();
         let ground0 = self.motion.at(t0);
-        let before: Vec<f64> = self.points.iter().map(|p| p.force).collect();
-        let u_before: Vec<(f64, f64)> = self.points.iter().map(|p| self.point_now_of(p)).collect();
+        cs.before.clear();
+        cs.before.extend(self.points.iter().map(|p| p.force));
+        cs.u_before.clear();
+        for p in &self.points {
+            let u = self.point_now_of(p);
+            cs.u_before.push(u);
+        }
         for s in 0..2 {
             let side = &mut self.sides[s];
             for k in 0..side.modes() {
@@ -254,22 +336,25 @@ impl Stepper<'_> {
         }
         self.advance(hh);
         let t1 = self.time();
+        let n1 = self.n;
         for (i, p) in self.points.iter_mut().enumerate() {
             let f1 = tr.forces[i];
             for slab in p.slabs.iter_mut().flatten() {
-                slab.push(f1);
+                if slab.is_live() {
+                    slab.push(f1);
+                }
             }
         }
-        let u_after: Vec<(f64, f64)> = self.points.iter().map(|p| self.point_now_of(p)).collect();
-        for (i, p) in self.points.iter_mut().enumerate() {
-            let (f0, f1) = (before[i], tr.forces[i]);
+        let mut opened_or_closed = false;
+        for i in 0..self.points.len() {
+            let u_after = self.point_now(i);
+            let p = &mut self.points[i];
+            let (f0, f1) = (cs.before[i], tr.forces[i]);
             // The contact's work on the buildings: -(F0 + F1)/2 times the closing displacement.
-            self.ledger.contact_work_j -= 0.5 * (f0 + f1) * (u_after[i].0 - u_before[i].0);
+            self.ledger.contact_work_j -= 0.5 * (f0 + f1) * (u_after.0 - cs.u_before[i].0);
             let delta0 = p.delta;
             p.delta = if self.sears {
-                u_after[i].0
-                    - self.sc.gap_m
-                    - p.slabs.iter().flatten().map(|s| s.elastic_m()).sum::<f64>()
+                u_after.0 - self.sc.gap_m - p.elastic_at(n1)
             } else {
                 tr.deltas[i]
             };
@@ -277,6 +362,7 @@ impl Stepper<'_> {
             p.force = f1;
             p.max_force = p.max_force.max(f1);
             if f0 <= 0.0 && f1 > 0.0 {
+                opened_or_closed = true;
                 // Opened inside this step: where the overlap crossed zero.
                 let start = if delta0 < 0.0 && p.delta > delta0 {
                     t0 + hh * (-delta0 / (p.delta - delta0)).clamp(0.0, 1.0)
@@ -284,7 +370,7 @@ impl Stepper<'_> {
                     t0
                 };
                 if p.v0 <= 0.0 {
-                    p.v0 = u_after[i].1.max(1e-12);
+                    p.v0 = u_after.1.max(1e-12);
                 }
                 p.open = Some(self.contacts.len());
                 self.contacts.push(RawContact {
@@ -301,6 +387,7 @@ impl Stepper<'_> {
                 contact.impulse_ns += 0.5 * hh * (f0 + f1);
                 contact.peak_force_n = contact.peak_force_n.max(f1);
                 if f1 <= 0.0 {
+                    opened_or_closed = true;
                     contact.end_s = if tr.released == Some(i) || p.delta > 0.0 {
                         t1
                     } else {
@@ -320,8 +407,16 @@ impl Stepper<'_> {
             }
         }
         self.contact_steps += 1;
+        if self.sears {
+            for p in self.points.iter_mut().filter(|p| p.force <= 0.0) {
+                for slab in p.slabs.iter_mut().flatten() {
+                    slab.settle();
+                }
+            }
+        }
         // Accelerations stay Newmark's inside contacts; leaving one, the free steps need none.
-        self.record();
+        self.track_peaks_now();
+        self.record_in_contact(opened_or_closed);
     }
 
     pub(super) fn point_now_of(&self, p: &Point) -> (f64, f64) {
@@ -331,17 +426,4 @@ impl Stepper<'_> {
             [&self.sides[0].v, &self.sides[1].v],
         )
     }
-}
-
-/// A contact step computed but not taken.
-pub(super) struct Trial {
-    hh: f64,
-    ground: f64,
-    /// The modal displacements' increments.
-    dq: [Vec<f64>; 2],
-    forces: Vec<f64>,
-    deltas: Vec<f64>,
-    rates: Vec<f64>,
-    /// The level whose Kelvin-Voigt link let go at the end of this (shortened) step.
-    released: Option<usize>,
 }

@@ -1,27 +1,65 @@
-//! The free step: the exact motion between contacts, checked for an onset at every grid point.
+//! The free stretch: the exact motion between contacts, checked at a few points and walked grid
+//! point by grid point only where a bound cannot rule out an onset or a new peak.
 
+use super::bound::{cubic_bound, cubic_margin, cubic_max, cubic_max_abs, derivative_bounds};
 use super::*;
+
+/// What the rounding of the states at two points can move a cubic's maximum by, relative to the
+/// size of its ends and slopes: far above the states' round-off, far below any gap or peak.
+const ROUNDING: f64 = 1e-12;
+
+/// Whether a signal's rate, known with its own rate (the acceleration) at both ends of a span
+/// `l`, keeps one sign over it: the cubic through them, widened by its margin from the bound `m5`
+/// on the rate's fourth derivative, stays off zero.
+fn monotone(start: [f64; 2], end: [f64; 2], l: f64, m5: f64) -> bool {
+    let margin = cubic_margin(m5, l)
+        + ROUNDING * (start[0].abs() + end[0].abs() + l * (start[1].abs() + end[1].abs()));
+    let high = cubic_max(start[0], start[1], end[0], end[1], l);
+    let low = -cubic_max(-start[0], -start[1], -end[0], -end[1], l);
+    low - margin > 0.0 || high + margin < 0.0
+}
+
+/// A part this short (in grid steps) is walked rather than halved again.
+const WALK_SPAN: usize = 8;
+
+/// The part of a stretch a check covers: grid indices (from the stretch's start) a to b.
+#[derive(Clone, Copy)]
+struct Part {
+    a: usize,
+    b: usize,
+}
 
 impl Stepper<'_> {
     /// The augmented initial states y0 = [q, q', g, g'] of every mode of a side.
     pub(super) fn initial(&self, s: usize, t: f64) -> Vec<[f64; 4]> {
-        let (a0, slope) = self.ground(t);
-        let side = &self.sides[s];
-        (0..side.modes())
-            .map(|k| {
-                [
-                    side.q[k],
-                    side.v[k],
-                    -side.gamma[k] * a0,
-                    -side.gamma[k] * slope,
-                ]
-            })
-            .collect()
+        let mut y = Vec::new();
+        self.initial_into(s, t, &mut y);
+        y
     }
 
-    /// Writes a free stretch of length `len` from `y0` to the ledger and moves the state there:
-    /// the exact integrals of the ground's power and of the damping.
-    pub(super) fn commit_free(&mut self, y0: [&[[f64; 4]]; 2], ends: [&[(f64, f64)]; 2], len: f64) {
+    fn initial_into(&self, s: usize, t: f64, out: &mut Vec<[f64; 4]>) {
+        let (a0, slope) = self.ground(t);
+        let side = &self.sides[s];
+        out.clear();
+        out.extend((0..side.modes()).map(|k| {
+            [
+                side.q[k],
+                side.v[k],
+                -side.gamma[k] * a0,
+                -side.gamma[k] * slope,
+            ]
+        }));
+    }
+
+    /// Writes a free stretch of length `len` from `y0` to the ledger and moves the state to
+    /// (`q1`, `v1`): the exact integrals of the ground's power and of the damping.
+    pub(super) fn commit_free(
+        &mut self,
+        y0: [&[[f64; 4]]; 2],
+        q1: [&[f64]; 2],
+        v1: [&[f64]; 2],
+        len: f64,
+    ) {
         self.newmark = false;
         // A whole number of fine steps reuses its integrals; another length (up to an event
         // inside a step) needs its own.
@@ -50,86 +88,344 @@ impl Stepper<'_> {
                     None => step_integrals(side.omega[k], side.zeta[k], len),
                 };
                 let y = &y0[s][k];
-                let (q1, v1) = ends[s][k];
-                let dq = q1 - y[0];
+                let dq = q1[s][k] - y[0];
                 let int_q: f64 = (0..4).map(|j| ints.int_q[j] * y[j]).sum();
-                let int_s_v = len * q1 - int_q;
+                let int_s_v = len * q1[s][k] - int_q;
                 self.ledger.input_j += y[2] * dq + y[3] * int_s_v;
                 self.ledger.damping_j +=
                     2.0 * side.zeta[k] * side.omega[k] * ints.velocity_squared(y);
-                side.q[k] = q1;
-                side.v[k] = v1;
+                side.q[k] = q1[s][k];
+                side.v[k] = v1[s][k];
+            }
+        }
+    }
+
+    /// Both sides' exact states j fine steps after the start of the stretch from `y0`.
+    fn states_at(&self, y0: &[Vec<[f64; 4]>; 2], j: usize, q: &mut [Vec<f64>; 2], v: &mut [Vec<f64>; 2]) {
+        for s in 0..2 {
+            for (k, p) in self.sides[s].sub[j - 1].iter().enumerate() {
+                let (qk, vk) = p.apply(&y0[s][k]);
+                q[s][k] = qk;
+                v[s][k] = vk;
             }
         }
     }
 
     /// One free stretch from a grid point to the next sample of the record (or the longest free
-    /// step), checked at every grid point.
+    /// step). Its parts are checked against the bounds; a part a bound cannot clear is halved
+    /// until what is left near an onset or a peak is walked grid point by grid point.
     pub(super) fn free_step(&mut self) -> Result<Free, SolveError> {
         self.newmark = false;
         let g = self.grid;
         // To the next free-step boundary (record samples are boundaries too).
         let len = (g.per_free_step - self.n % g.per_free_step).min(g.total - self.n);
-        self.steps += len - 1;
         self.count_step()?;
         let t0 = self.time();
-        let y0 = [self.initial(0, t0), self.initial(1, t0)];
-        let mut w = std::mem::take(&mut self.scratch);
-        w.marks.clear();
-        w.marks.extend(
-            self.points
-                .iter()
-                .map(|p| std::array::from_fn(|i| p.slabs[i].as_ref().map(|s| s.mark()))),
-        );
-        w.prev.clear();
-        for p in &self.points {
-            w.prev.push(self.point_now_of(p));
-        }
-        for s in 0..2 {
-            w.q[s].resize(self.sides[s].modes(), 0.0);
-            w.v[s].resize(self.sides[s].modes(), 0.0);
-        }
-        let contact = self.sc.contact;
-        let gap = self.sc.gap_m;
-        let needs_approach = matches!(contact, ContactModel::Kelvin | ContactModel::HertzDamp);
-        let mut onset = None;
-        for j in 1..=len {
-            for (s, y) in y0.iter().enumerate() {
-                for (k, p) in self.sides[s].sub[j - 1].iter().enumerate() {
-                    let (q, v) = p.apply(&y[k]);
-                    w.q[s][k] = q;
-                    w.v[s][k] = v;
+        let mut w = self.scratch.take().expect("the scratch is home between stages");
+        self.prepare(&mut w, t0);
+        let mut a = 0;
+        while a < len {
+            let part = Part {
+                a,
+                b: (a + g.check).min(len),
+            };
+            match self.refine(&mut w, 0, part, t0) {
+                Ok(None) => {}
+                other => {
+                    self.scratch = Some(w);
+                    return other.map(|o| o.expect("an onset"));
                 }
             }
-            for i in 0..self.points.len() {
-                if self.sears {
-                    for slab in self.points[i].slabs.iter_mut().flatten() {
-                        slab.push(0.0);
+            a = part.b;
+        }
+        self.states_at(&w.y0, len, &mut w.q, &mut w.v);
+        {
+            let Scratch { y0, q, v, .. } = &*w;
+            self.commit_free(
+                [&y0[0], &y0[1]],
+                [&q[0], &q[1]],
+                [&v[0], &v[1]],
+                len as f64 * g.h,
+            );
+        }
+        self.scratch = Some(w);
+        self.n += len;
+        self.record_now();
+        Ok(Free::Done)
+    }
+
+    /// Checks a part at depth `d` of the halving (for what its parent left open): clears it,
+    /// halves it, or walks it. Returns the onset, if one was found in it.
+    fn refine(
+        &mut self,
+        w: &mut Scratch,
+        d: usize,
+        part: Part,
+        t0: f64,
+    ) -> Result<Option<Free>, SolveError> {
+        self.steps += 1;
+        self.states_at(&w.y0, part.b, &mut w.q, &mut w.v);
+        let (any, unbounded) = self.flag(w, d, part, t0);
+        if any {
+            let len = part.b - part.a;
+            if unbounded || len <= WALK_SPAN {
+                if let Some(onset) = self.walk(w, d, part, t0)? {
+                    return Ok(Some(onset));
+                }
+            } else {
+                let mid = part.a + len / 2;
+                for half in [Part { a: part.a, b: mid }, Part { a: mid, b: part.b }] {
+                    if let Some(onset) = self.refine(w, d + 1, half, t0)? {
+                        return Ok(Some(onset));
                     }
                 }
-                let p = &mut self.points[i];
-                let c = dotv(&p.r[0], &w.q[0]) - dotv(&p.r[1], &w.q[1]);
-                let cv = dotv(&p.r[0], &w.v[0]) - dotv(&p.r[1], &w.v[1]);
-                let (c0, cv0) = w.prev[i];
-                w.prev[i] = (c, cv);
+            }
+        }
+        self.pass(w, d, part, t0);
+        Ok(None)
+    }
+
+    /// The stretch's starting states and the bounds its checks use.
+    fn prepare(&self, w: &mut Scratch, t0: f64) {
+        for s in 0..2 {
+            self.initial_into(s, t0, &mut w.y0[s]);
+            let side = &self.sides[s];
+            let n = side.modes();
+            w.q[s].resize(n, 0.0);
+            w.v[s].resize(n, 0.0);
+            w.acc[s].resize(n, 0.0);
+            w.m4[s].clear();
+            w.m5[s].clear();
+            for k in 0..n {
+                let (m4, m5) = derivative_bounds(side.omega[k], side.zeta[k], &w.y0[s][k]);
+                w.m4[s].push(m4);
+                w.m5[s].push(m5);
+                let y = &w.y0[s][k];
+                w.q[s][k] = y[0];
+                w.v[s][k] = y[1];
+            }
+        }
+        self.accelerations(w, 0);
+        let weighted = |r: &[f64], m: &[f64]| -> f64 { r.iter().zip(m).map(|(r, m)| r.abs() * m).sum() };
+        w.prev.clear();
+        w.point_m4.clear();
+        w.point_m5.clear();
+        for p in &self.points {
+            let (c, cv) = self.point_state(p, [&w.q[0], &w.q[1]], [&w.v[0], &w.v[1]]);
+            let ca = self.point_state(p, [&w.acc[0], &w.acc[1]], [&w.acc[0], &w.acc[1]]).0;
+            w.prev.push([c, cv, ca]);
+            w.point_m4
+                .push(weighted(&p.r[0], &w.m4[0]) + weighted(&p.r[1], &w.m4[1]));
+            w.point_m5
+                .push(weighted(&p.r[0], &w.m5[0]) + weighted(&p.r[1], &w.m5[1]));
+        }
+        w.signal_m4.clear();
+        w.signal_m5.clear();
+        w.signal_acc.clear();
+        for (i, sig) in self.signals.iter().enumerate() {
+            w.signal_m4.push(sig.bound(&w.m4));
+            w.signal_m5.push(sig.bound(&w.m5));
+            let a = self.signal(i, [&w.acc[0], &w.acc[1]], [&w.acc[0], &w.acc[1]]).0;
+            w.signal_acc.push(a);
+        }
+    }
+
+    /// The modal accelerations j fine steps into the stretch, from the states in `w.q`, `w.v`.
+    fn accelerations(&self, w: &mut Scratch, j: usize) {
+        let s = j as f64 * self.grid.h;
+        for side in 0..2 {
+            let sd = &self.sides[side];
+            for k in 0..sd.modes() {
+                let y = &w.y0[side][k];
+                w.acc[side][k] = y[2] + y[3] * s
+                    - 2.0 * sd.zeta[k] * sd.omega[k] * w.v[side][k]
+                    - sd.omega[k] * sd.omega[k] * w.q[side][k];
+            }
+        }
+    }
+
+    /// Decides, from the states at the part's end (in `w.q`, `w.v`), what the part must still be
+    /// looked into for, of what its parent left open: a point whose closing motion may reach the
+    /// gap or its largest value so far, a signal that may pass its peak. A signal whose rate keeps
+    /// its sign over the part (proved as its value's bound proves the rest) has its largest
+    /// value at an end: that is taken at once, as a walk would take it. Returns whether anything
+    /// must be looked into, and whether an onset can have no bound (a slab's waves fresh from a
+    /// contact).
+    fn flag(&mut self, w: &mut Scratch, d: usize, part: Part, t0: f64) -> (bool, bool) {
+        let (h, l) = (self.grid.h, (part.b - part.a) as f64 * self.grid.h);
+        let t = t0 + part.b as f64 * h;
+        let gap = self.sc.gap_m;
+        let contact = self.sc.contact != ContactModel::None;
+        self.accelerations(w, part.b);
+        if w.depths.len() <= d {
+            w.depths.resize_with(d + 1, Depth::default);
+        }
+        let (parents, rest) = w.depths.split_at_mut(d);
+        let parent = parents.last();
+        let now = &mut rest[0];
+        let (mut any, mut unbounded) = (false, false);
+        now.onset.clear();
+        now.closing.clear();
+        now.peak.clear();
+        now.values.clear();
+        let (q, v, acc) = ([&w.q[0][..], &w.q[1]], [&w.v[0][..], &w.v[1]], [&w.acc[0][..], &w.acc[1]]);
+        for i in 0..self.points.len() {
+            let (open_onset, open_closing) =
+                parent.map_or((true, true), |x| (x.onset[i], x.closing[i]));
+            if !(open_onset || open_closing) {
+                now.onset.push(false);
+                now.closing.push(false);
+                now.values.push([0.0; 3]);
+                continue;
+            }
+            let p = &self.points[i];
+            let (c, cv) = self.point_state(p, q, v);
+            let ca = self.point_state(p, acc, acc).0;
+            let [c0, cv0, _] = w.prev[i];
+            let margin = cubic_margin(w.point_m4[i], l)
+                + cubic_margin(w.point_m4[i], h)
+                + ROUNDING * (c0.abs() + c.abs() + l * (cv0.abs() + cv.abs()));
+            // The cubic's largest value: at once below a quick bound, else found exactly.
+            let quick = cubic_bound(c0, cv0, c, cv, l);
+            let below = p.max_closing - 1e-6 * p.max_closing.abs();
+            let elastic = |top: f64| {
+                if self.sears && open_onset && contact && top + margin < gap {
+                    p.elastic_bound_from(self.n + part.a)
+                } else {
+                    0.0
+                }
+            };
+            let top = if quick + margin + elastic(quick) < gap && quick + margin < below {
+                quick
+            } else {
+                cubic_max(c0, cv0, c, cv, l)
+            };
+            let elastic = elastic(top);
+            let onset = open_onset && contact && top + margin + elastic >= gap;
+            let closing = open_closing && top + margin >= below;
+            any |= onset || closing;
+            unbounded |= onset && elastic.is_infinite();
+            now.onset.push(onset);
+            now.closing.push(closing);
+            now.values.push([c, cv, ca]);
+        }
+        // A contact may start inside the part: what the free motion does after it does not
+        // count, so nothing is taken from the part's end until the onset has been ruled out.
+        let may_touch = now.onset.iter().any(|&x| x);
+        if !may_touch {
+            for i in 0..self.points.len() {
+                let [c, cv, ca] = now.values[i];
+                let [_, cv0, ca0] = w.prev[i];
+                if now.closing[i] && monotone([cv0, ca0], [cv, ca], l, w.point_m5[i]) {
+                    // Its largest value here is at an end, and the start was counted already.
+                    let p = &mut self.points[i];
+                    p.max_closing = p.max_closing.max(c);
+                    now.closing[i] = false;
+                }
+            }
+            any = now.closing.iter().any(|&x| x);
+        }
+        for i in 0..self.signals.len() {
+            if self.signals[i].same_as.is_some() || !parent.is_none_or(|x| x.peak[i]) {
+                now.peak.push(false);
+                now.values.push([0.0; 3]);
+                continue;
+            }
+            let (u, r) = self.signal(i, q, v);
+            let a = self.signal(i, acc, acc).0;
+            let (u0, r0) = self.peaks.last(i);
+            let m4 = w.signal_m4[i];
+            let margin = cubic_margin(m4, l)
+                + cubic_margin(m4, h)
+                + ROUNDING * (u0.abs() + u.abs() + l * (r0.abs() + r.abs()));
+            let bar = self.peaks.peak(i);
+            let quick = cubic_bound(u0.abs(), r0.abs(), u.abs(), r.abs(), l);
+            let top = if quick + margin < bar {
+                quick
+            } else {
+                cubic_max_abs(u0, r0, u, r, l)
+            };
+            let mut peak = top + margin >= bar;
+            if peak && !may_touch && monotone([r0, w.signal_acc[i]], [r, a], l, w.signal_m5[i]) {
+                self.peaks.update(i, t, u, r);
+                w.signal_acc[i] = a;
+                peak = false;
+            }
+            any |= peak;
+            now.peak.push(peak);
+            now.values.push([u, r, a]);
+        }
+        (any, unbounded)
+    }
+
+    /// Walks the part grid point by grid point for what [`Stepper::flag`] left open at depth
+    /// `d`, as the whole stretch used to be: the onset at the first grid point where the overlap
+    /// is positive, the largest closing motion and the peaks on the cubics between grid points.
+    /// Returns the onset, if one was found (the slabs then stand at the grid point before it).
+    fn walk(
+        &mut self,
+        w: &mut Scratch,
+        d: usize,
+        part: Part,
+        t0: f64,
+    ) -> Result<Option<Free>, SolveError> {
+        let g = self.grid;
+        let contact = self.sc.contact;
+        let gap = self.sc.gap_m;
+        let needs_approach = self.needs_approach();
+        let open = std::mem::take(&mut w.depths[d]);
+        let mut marks = std::mem::take(&mut w.marks);
+        let mut found = None;
+        for j in part.a + 1..=part.b {
+            self.steps += 1;
+            self.states_at(&w.y0, j, &mut w.q, &mut w.v);
+            self.accelerations(w, j);
+            if self.sears {
+                marks.clear();
+                for p in self.points.iter_mut() {
+                    marks.push(std::array::from_fn(|s| {
+                        p.slabs[s].as_mut().filter(|x| x.is_live()).map(|x| {
+                            let m = x.mark();
+                            x.push(0.0);
+                            m
+                        })
+                    }));
+                }
+            }
+            let (q, v, acc) = ([&w.q[0][..], &w.q[1]], [&w.v[0][..], &w.v[1]], [&w.acc[0][..], &w.acc[1]]);
+            let mut onset = None;
+            for i in 0..self.points.len() {
+                if !(open.onset[i] || open.closing[i]) {
+                    continue;
+                }
+                let (c, cv) = self.point_state(&self.points[i], q, v);
+                let ca = self.point_state(&self.points[i], acc, acc).0;
+                let [c0, cv0, _] = w.prev[i];
+                w.prev[i] = [c, cv, ca];
                 // Between grid points the closing motion is the cubic through their exact
                 // states: a maximum inside a step is found there, and a new largest one is
                 // refined on the exact motion (the gap that avoids contact is this maximum).
                 let inside = hermite_max(c0, cv0, c, cv, g.h);
+                let p = &mut self.points[i];
                 p.max_closing = p.max_closing.max(c);
                 // The cubic is good to (w h)^4 / 384 of the amplitude: near the running maximum
                 // the exact motion decides.
                 if inside > p.max_closing - 1e-6 * p.max_closing.abs() {
                     let (a, b) = ((j - 1) as f64 * g.h, j as f64 * g.h);
-                    let exact = self.exact_max_closing(i, &y0, a, b);
+                    let exact = self.exact_max_closing(i, &w.y0, a, b);
                     let m = &mut self.points[i].max_closing;
                     *m = m.max(exact);
                 }
-                let p = &mut self.points[i];
-                if contact == ContactModel::None || onset.is_some() {
+                let p = &self.points[i];
+                if contact == ContactModel::None || onset.is_some() || !open.onset[i] {
                     continue;
                 }
-                let delta = c - gap - p.elastic();
+                let elastic = if self.sears {
+                    p.elastic_at(self.n + j)
+                } else {
+                    0.0
+                };
+                let delta = c - gap - elastic;
                 let approaching = !needs_approach || cv > 0.0;
                 let exchanged = p.exchanged_in == Some(self.n + j - 1);
                 if !exchanged
@@ -139,30 +435,60 @@ impl Stepper<'_> {
                 }
             }
             if let Some(level) = onset {
-                // Back to the start of the stretch: the caller redoes it up to the onset.
-                for (p, m) in self.points.iter_mut().zip(&w.marks) {
+                // The slabs go back to the grid point before: the contact starts from there.
+                for (p, m) in self.points.iter_mut().zip(&marks) {
                     for (slab, mark) in p.slabs.iter_mut().zip(m) {
                         if let (Some(s), Some(m)) = (slab.as_mut(), mark) {
                             s.reset(*m);
                         }
                     }
                 }
-                self.scratch = w;
-                return Ok(Free::Onset { j, level });
+                found = Some(Free::Onset { j, level });
+                break;
             }
             // The motion up to here is free: its peaks count.
-            let mut now = std::mem::take(&mut w.signals);
-            self.signals([&w.q[0], &w.q[1]], [&w.v[0], &w.v[1]], &mut now);
-            self.peaks.update(t0 + j as f64 * g.h, &now);
-            w.signals = now;
+            let t = t0 + j as f64 * g.h;
+            for i in 0..self.signals.len() {
+                if open.peak[i] {
+                    let (u, r) = self.signal(i, q, v);
+                    self.peaks.update(i, t, u, r);
+                    w.signal_acc[i] = self.signal(i, acc, acc).0;
+                }
+            }
+            if self.sears {
+                for p in self.points.iter_mut() {
+                    for slab in p.slabs.iter_mut().flatten() {
+                        slab.settle();
+                    }
+                }
+            }
         }
-        let ends: [Vec<(f64, f64)>; 2] =
-            std::array::from_fn(|s| w.q[s].iter().zip(&w.v[s]).map(|(q, v)| (*q, *v)).collect());
-        self.scratch = w;
-        self.commit_free([&y0[0], &y0[1]], [&ends[0], &ends[1]], len as f64 * g.h);
-        self.n += len;
-        self.record();
-        Ok(Free::Done)
+        w.depths[d] = open;
+        w.marks = marks;
+        Ok(found)
+    }
+
+    /// The part's end becomes the last point looked at for what its parent left open and it
+    /// cleared (what it did not clear, its halves or its walk took there).
+    fn pass(&mut self, w: &mut Scratch, d: usize, part: Part, t0: f64) {
+        let np = self.points.len();
+        let t = t0 + part.b as f64 * self.grid.h;
+        let (parents, rest) = w.depths.split_at(d);
+        let parent = parents.last();
+        let now = &rest[0];
+        for i in 0..np {
+            let was = parent.is_none_or(|x| x.onset[i] || x.closing[i]);
+            if was && !(now.onset[i] || now.closing[i]) {
+                w.prev[i] = now.values[i];
+            }
+        }
+        for i in 0..self.signals.len() {
+            if parent.is_none_or(|x| x.peak[i]) && !now.peak[i] {
+                let [u, r, a] = now.values[np + i];
+                self.peaks.pass(i, t, u, r);
+                w.signal_acc[i] = a;
+            }
+        }
     }
 
     /// The largest closing motion of point i over [a, b] after the start of a free stretch from
@@ -213,17 +539,7 @@ impl Stepper<'_> {
         self.newmark = false;
         let t0 = self.time();
         let y0 = [self.initial(0, t0), self.initial(1, t0)];
-        let before: Vec<(f64, f64)> = self
-            .points
-            .iter()
-            .map(|p| {
-                self.point_state(
-                    p,
-                    [&self.sides[0].q, &self.sides[1].q],
-                    [&self.sides[0].v, &self.sides[1].v],
-                )
-            })
-            .collect();
+        let before: Vec<(f64, f64)> = self.points.iter().map(|p| self.point_now_of(p)).collect();
         let ends: [Vec<(f64, f64)>; 2] = std::array::from_fn(|s| {
             let side = &self.sides[s];
             (0..side.modes())
@@ -255,15 +571,11 @@ impl Stepper<'_> {
         if onset.is_some() {
             return Ok(onset);
         }
-        self.commit_free([&y0[0], &y0[1]], [&ends[0], &ends[1]], len);
+        self.commit_free([&y0[0], &y0[1]], [&q[0], &q[1]], [&v[0], &v[1]], len);
         self.advance(len);
+        self.track_peaks_now();
         if self.offset == 0.0 {
-            self.record();
-        } else {
-            let t = self.time();
-            let (q0, q1) = (self.sides[0].q.clone(), self.sides[1].q.clone());
-            let (v0, v1) = (self.sides[0].v.clone(), self.sides[1].v.clone());
-            self.track_peaks(t, [&q0, &q1], [&v0, &v1]);
+            self.record_now();
         }
         Ok(None)
     }

@@ -1,27 +1,35 @@
 //! The pounding run as named stages over both buildings' modes and every contact point:
 //!
-//! - **free step**: between contacts each mode is propagated exactly to the next sample of the
-//!   record (the ground acceleration is linear between samples), and the motion is checked at
-//!   every point of a fine grid for an onset at any level;
+//! - **free stretch**: between contacts each mode is propagated exactly to the next sample of the
+//!   record (the ground acceleration is linear between samples). The stretch is checked at a few
+//!   points only: between two of them every signal is within a proven margin of the cubic
+//!   through its ends ([`bound`]), so where that cubic plus its margin stays below the gap no
+//!   contact can start, and where it stays below a running peak no peak is missed. Only the
+//!   parts that a bound cannot clear are walked grid point by grid point, as a contact onset
+//!   or a new peak needs;
 //! - **onset location**: the touching instant inside its fine step, on the cubic through the
 //!   exact states at both ends (exact to round-off at these steps), or, for the Sears slabs, whose
 //!   waves live on the grid, the grid point before it;
 //! - **contact step**: Newmark's average acceleration on the modes with the contact forces
 //!   implicit (stable for any stiffness), one coupled set of monotone equations for the levels in
 //!   contact, solved by nonlinear Gauss-Seidel;
-//! - **impact bookkeeping**: contacts opened and closed per level, their impulse and peak.
+//! - **impact bookkeeping**: contacts opened and closed per level, their impulse and peak;
+//! - **recording**: the histories at the resolution a plot needs (every free stretch, and inside
+//!   contacts a few samples per contact time scale), the peaks exactly between them.
 //!
 //! Every stage writes to one energy [`Ledger`]: the free steps with the exact integrals of the
 //! modal power, the contact steps with Newmark's discrete energy identity, so the ledger balances
 //! to round-off and what it reports (work of the ground, damping, energy taken by the contact)
 //! is exact for the discrete solution.
 
+mod bound;
 mod contact;
 mod free;
 mod onset;
 mod record;
 
-use record::Peaks;
+pub(super) use record::Record;
+use record::{Peaks, Signal};
 
 use super::elements::Element;
 use super::levels::Level;
@@ -43,6 +51,10 @@ pub(super) struct Grid {
     pub per_free_step: usize,
     /// Fine steps over the record.
     pub total: usize,
+    /// Fine steps between two checks of a free stretch at most.
+    pub check: usize,
+    /// The spacing of the recorded samples inside contacts [s].
+    pub contact_sample_s: f64,
 }
 
 /// One building in modal coordinates, with its precomputed exact steps.
@@ -175,17 +187,18 @@ struct Point {
 }
 
 impl Point {
-    fn elastic(&self) -> f64 {
-        self.slabs.iter().flatten().map(|s| s.elastic_m()).sum()
+    /// The slabs' elastic displacement at grid index `n` (the newest step of a live slab).
+    fn elastic_at(&self, n: usize) -> f64 {
+        self.slabs.iter().flatten().map(|s| s.elastic_at(n)).sum()
     }
 
-    /// e0 + e1 F: the slabs' elastic displacement after one more step.
-    fn predict_elastic(&self) -> (f64, f64) {
+    /// A bound on the slabs' elastic displacement from grid index `n` on.
+    fn elastic_bound_from(&self, n: usize) -> f64 {
         self.slabs
             .iter()
             .flatten()
-            .map(|s| s.predict())
-            .fold((0.0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1))
+            .map(|s| s.envelope_from(n))
+            .sum()
     }
 }
 
@@ -200,19 +213,6 @@ const ONSET_GRADING: u32 = 8;
 /// Memory the recorded histories may take [bytes].
 pub const SAMPLE_MEMORY_BUDGET: f64 = 2.0e9;
 
-/// One sample of the histories.
-pub(super) struct Sample {
-    pub t: f64,
-    pub ground: f64,
-    /// Floors of each side, and their velocities.
-    pub floors: [Vec<f64>; 2],
-    pub floor_v: [Vec<f64>; 2],
-    pub roof_v: [f64; 2],
-    /// Roof acceleration relative to the ground.
-    pub roof_a: [f64; 2],
-    pub forces: Vec<f64>,
-}
-
 /// The run in progress.
 pub(super) struct Stepper<'a> {
     sc: &'a BuildingScenario,
@@ -226,24 +226,58 @@ pub(super) struct Stepper<'a> {
     offset: f64,
     pub ledger: Ledger,
     pub contacts: Vec<RawContact>,
-    pub samples: Vec<Sample>,
+    pub record: Record,
+    signals: Vec<Signal>,
     peaks: Peaks,
     pub steps: usize,
     pub contact_steps: usize,
     sears: bool,
+    /// Whether the histories are recorded (not for a summary).
+    histories: bool,
     /// The modal accelerations are Newmark's (the last step was a contact step).
     newmark: bool,
-    scratch: Scratch,
+    /// Buffers, boxed so that a stage can take them out of the stepper for the step's length
+    /// without copying them.
+    scratch: Option<Box<Scratch>>,
+    contact_scratch: Option<Box<contact::Scratch>>,
 }
 
-/// Buffers the free stretch reuses, so its grid points allocate nothing.
+/// Buffers the free stretch reuses, so its checks allocate nothing.
 #[derive(Default)]
 struct Scratch {
+    y0: [Vec<[f64; 4]>; 2],
     q: [Vec<f64>; 2],
     v: [Vec<f64>; 2],
-    prev: Vec<(f64, f64)>,
+    /// Modal accelerations.
+    acc: [Vec<f64>; 2],
+    /// Each mode's bounds on its fourth and fifth derivatives over the stretch.
+    m4: [Vec<f64>; 2],
+    m5: [Vec<f64>; 2],
+    /// Each point's closing motion, its rate and acceleration at the last point looked at.
+    prev: Vec<[f64; 3]>,
+    /// Each signal's acceleration at its last instant.
+    signal_acc: Vec<f64>,
+    /// The bounds of each point's closing motion and of each signal, and of their rates.
+    point_m4: Vec<f64>,
+    point_m5: Vec<f64>,
+    signal_m4: Vec<f64>,
+    signal_m5: Vec<f64>,
+    /// What each depth of the halving still looks into.
+    depths: Vec<Depth>,
+    /// The live slabs' states before the grid step being walked.
     marks: Vec<[Option<SlabMark>; 2]>,
-    signals: Vec<(f64, f64)>,
+}
+
+/// What a part at one depth of a stretch's halving must still be looked into for, of what its
+/// parent left open: per point (an onset, its largest closing motion), per signal (its peak);
+/// and every point's closing motion and every signal at the part's end, with their rates and
+/// accelerations (points first).
+#[derive(Default)]
+struct Depth {
+    onset: Vec<bool>,
+    closing: Vec<bool>,
+    peak: Vec<bool>,
+    values: Vec<[f64; 3]>,
 }
 
 /// What a free stretch ended with.
@@ -261,6 +295,7 @@ impl<'a> Stepper<'a> {
         grid: Grid,
         levels: &[Level],
         modes: [Modes; 2],
+        histories: bool,
     ) -> Self {
         let sides = [
             Side::new(
@@ -277,81 +312,43 @@ impl<'a> Stepper<'a> {
             ),
         ];
         let sears = sc.contact == ContactModel::Sears;
-        let points = levels
+        let points: Vec<Point> = levels
             .iter()
-            .map(|level| {
-                let attach = [level.left, level.right];
-                let r: [Vec<f64>; 2] = std::array::from_fn(|s| {
-                    let w = attach[s].weights();
-                    (0..sides[s].modes())
-                        .map(|k| w.iter().map(|(f, x)| x * sides[s].shapes[k][*f]).sum())
-                        .collect()
-                });
-                // The point's effective mass: the inverse of its velocity change per unit impulse.
-                let inverse_mass: f64 = r.iter().flatten().map(|x| x * x).sum();
-                let element = Element::new(
-                    sc.contact,
-                    sc.level_stiffness(level),
-                    sc.restitution,
-                    1.0 / inverse_mass,
-                );
-                let zone = if sc.reading == SlabReading::Paper {
-                    sc.level_zone_length(level)
-                } else {
-                    0.0
-                };
-                let slabs = sc.level_slabs(level);
-                let slab = |i: usize| {
-                    slabs[i].filter(|_| sears).map(|(slab, mass)| {
-                        SlabWaves::new(
-                            &slab,
-                            mass,
-                            zone,
-                            sc.slab_damping,
-                            grid.h,
-                            grid.total + 2,
-                            if i == 0 { -1.0 } else { 1.0 },
-                        )
-                    })
-                };
-                Point {
-                    element,
-                    r,
-                    slabs: [slab(0), slab(1)],
-                    force: 0.0,
-                    delta: -sc.gap_m,
-                    rate: 0.0,
-                    v0: 0.0,
-                    open: None,
-                    exchanged_in: None,
-                    max_closing: f64::NEG_INFINITY,
-                    max_force: 0.0,
-                }
-            })
+            .map(|level| new_point(sc, &sides, level, grid.h, sears))
             .collect();
+        let signals = Signal::all(&sides, &points);
         let mut s = Stepper {
             sc,
             motion,
             grid,
-            peaks: Peaks::default(),
+            peaks: Peaks::new(signals.len()),
+            record: Record::new(
+                sc.left.storeys,
+                sc.right.storeys,
+                levels.len(),
+                grid.contact_sample_s,
+            ),
+            signals,
             sides,
             points,
             n: 0,
             offset: 0.0,
             ledger: Ledger::default(),
             contacts: Vec::new(),
-            samples: Vec::new(),
             steps: 0,
             contact_steps: 0,
             sears,
+            histories,
             newmark: false,
-            scratch: Scratch::default(),
+            scratch: Some(Box::default()),
+            contact_scratch: Some(Box::default()),
         };
         s.ledger.initial_j = s.sides[0].energy() + s.sides[1].energy();
         for p in s.points.iter_mut() {
             p.max_closing = 0.0;
         }
-        s.record();
+        s.track_peaks_now();
+        s.record_now();
         s
     }
 
@@ -385,13 +382,16 @@ impl<'a> Stepper<'a> {
     pub fn run(&mut self, control: &Control) -> Result<(), SolveError> {
         let end = self.grid.total;
         let mut looked_at = 0;
+        let mut looked_steps = 0;
         while self.n < end {
-            // Free steps advance many grid steps at once: look every CHECK_EVERY grid steps.
-            if self.n >= looked_at {
+            // Look every CHECK_EVERY steps taken, and every CHECK_EVERY free stretches' worth
+            // of the grid, whichever comes first.
+            if self.n >= looked_at || self.steps >= looked_steps {
                 control.report(self.n as f64 / end.max(1) as f64)?;
                 self.check_bounded()?;
                 self.check_memory()?;
-                looked_at = self.n + CHECK_EVERY;
+                looked_at = self.n + CHECK_EVERY * self.grid.per_free_step;
+                looked_steps = self.steps + CHECK_EVERY;
             }
             if self.points.iter().any(|p| p.force > 0.0) {
                 self.contact_step()?;
@@ -413,18 +413,10 @@ impl<'a> Stepper<'a> {
         self.check_bounded()
     }
 
-    /// Bytes one recorded sample takes: its numbers and its vectors' headers and allocations.
-    fn sample_bytes(&self) -> f64 {
-        let floors = self.sides[0].heights.len() + self.sides[1].heights.len();
-        let numbers = 2 + 2 * floors + 4 + self.points.len();
-        (8 * numbers + 5 * (24 + 16)) as f64
-    }
-
     /// Stops a run whose histories outgrow [`SAMPLE_MEMORY_BUDGET`] (checked every few thousand
     /// steps, so at most that many samples past it are ever held).
     fn check_memory(&self) -> Result<(), SolveError> {
-        let bytes = self.samples.len() as f64 * self.sample_bytes();
-        if bytes <= SAMPLE_MEMORY_BUDGET {
+        if self.record.bytes() <= SAMPLE_MEMORY_BUDGET {
             return Ok(());
         }
         Err(SolveError::Memory {
@@ -467,6 +459,9 @@ impl<'a> Stepper<'a> {
                 self.contacts[c].end_s = end_s;
             }
         }
+        if self.record.last_time() < end_s {
+            self.record_now();
+        }
         let final_j = self.sides[0].energy() + self.sides[1].energy();
         let l = self.ledger;
         (
@@ -490,14 +485,66 @@ impl<'a> Stepper<'a> {
         self.points.iter().map(|p| p.max_force).collect()
     }
 
-    pub fn slab_waves(&self) -> Vec<[Option<crate::model::field::BarWaves>; 2]> {
+    /// The Sears slabs of every level, given up (none for the other elements).
+    pub fn take_slabs(&mut self) -> Vec<[Option<SlabWaves>; 2]> {
         if !self.sears {
             return vec![];
         }
         self.points
-            .iter()
-            .map(|p| std::array::from_fn(|i| p.slabs[i].as_ref().map(|s| s.waves())))
+            .iter_mut()
+            .map(|p| std::mem::take(&mut p.slabs))
             .collect()
+    }
+}
+
+/// A contact point at `level`: its element, its projections onto both buildings' modes and, for
+/// the Sears contact, its slabs.
+fn new_point(sc: &BuildingScenario, sides: &[Side; 2], level: &Level, h: f64, sears: bool) -> Point {
+    let attach = [level.left, level.right];
+    let r: [Vec<f64>; 2] = std::array::from_fn(|s| {
+        let w = attach[s].weights();
+        (0..sides[s].modes())
+            .map(|k| w.iter().map(|(f, x)| x * sides[s].shapes[k][*f]).sum())
+            .collect()
+    });
+    // The point's effective mass: the inverse of its velocity change per unit impulse.
+    let inverse_mass: f64 = r.iter().flatten().map(|x| x * x).sum();
+    let element = Element::new(
+        sc.contact,
+        sc.level_stiffness(level),
+        sc.restitution,
+        1.0 / inverse_mass,
+    );
+    let zone = if sc.reading == SlabReading::Paper {
+        sc.level_zone_length(level)
+    } else {
+        0.0
+    };
+    let slabs = sc.level_slabs(level);
+    let slab = |i: usize| {
+        slabs[i].filter(|_| sears).map(|(slab, mass)| {
+            SlabWaves::new(
+                &slab,
+                mass,
+                zone,
+                sc.slab_damping,
+                h,
+                if i == 0 { -1.0 } else { 1.0 },
+            )
+        })
+    };
+    Point {
+        element,
+        r,
+        slabs: [slab(0), slab(1)],
+        force: 0.0,
+        delta: -sc.gap_m,
+        rate: 0.0,
+        v0: 0.0,
+        open: None,
+        exchanged_in: None,
+        max_closing: f64::NEG_INFINITY,
+        max_force: 0.0,
     }
 }
 

@@ -4,32 +4,38 @@ use super::*;
 
 impl Stepper<'_> {
     /// A contact starts at `level` inside the j-th fine step of the free stretch that began at
-    /// the current time: move there exactly, then into contact.
+    /// the current time: move there exactly (the slabs already stand at the grid point before
+    /// it), then into contact.
     pub(super) fn onset(&mut self, j: usize, level: usize) -> Result<(), SolveError> {
         let g = self.grid;
         let t0 = self.time();
         if j > 1 {
-            // Exactly to the grid point before, the slabs with it.
+            // Exactly to the grid point before.
             let y0 = [self.initial(0, t0), self.initial(1, t0)];
-            let ends: [Vec<(f64, f64)>; 2] = std::array::from_fn(|s| {
+            let q: [Vec<f64>; 2] = std::array::from_fn(|s| {
                 self.sides[s].sub[j - 2]
                     .iter()
                     .zip(&y0[s])
-                    .map(|(p, y)| p.apply(y))
+                    .map(|(p, y)| p.apply(y).0)
                     .collect()
             });
-            self.commit_free([&y0[0], &y0[1]], [&ends[0], &ends[1]], (j - 1) as f64 * g.h);
-            if self.sears {
-                for p in self.points.iter_mut() {
-                    for slab in p.slabs.iter_mut().flatten() {
-                        for _ in 0..j - 1 {
-                            slab.push(0.0);
-                        }
-                    }
-                }
-            }
+            let v: [Vec<f64>; 2] = std::array::from_fn(|s| {
+                self.sides[s].sub[j - 2]
+                    .iter()
+                    .zip(&y0[s])
+                    .map(|(p, y)| p.apply(y).1)
+                    .collect()
+            });
+            self.commit_free(
+                [&y0[0], &y0[1]],
+                [&q[0], &q[1]],
+                [&v[0], &v[1]],
+                (j - 1) as f64 * g.h,
+            );
             self.n += j - 1;
-            self.record();
+            // Every signal's peak up to here (those a check cleared were not walked).
+            self.track_peaks_now();
+            self.record_now();
         }
         self.onset_in_partial(level, g.h)
     }
@@ -39,9 +45,13 @@ impl Stepper<'_> {
         if self.sears {
             // The slabs' waves are known on the grid only: the contact starts from this grid
             // point, its first step implicit from zero force; its start is interpolated.
+            let n = self.n;
             let (c0, w) = self.point_now(level);
             let p = &mut self.points[level];
-            p.delta = c0 - self.sc.gap_m - p.elastic();
+            for slab in p.slabs.iter_mut().flatten() {
+                slab.revive(n);
+            }
+            p.delta = c0 - self.sc.gap_m - p.elastic_at(n);
             p.rate = 0.0;
             p.v0 = w;
             return self.contact_step();
@@ -80,7 +90,9 @@ impl Stepper<'_> {
                     .map(|k| propagator(side.omega[k], side.zeta[k], s_on).apply(&y0[s][k]))
                     .collect()
             });
-            self.commit_free([&y0[0], &y0[1]], [&ends[0], &ends[1]], s_on);
+            let q: [Vec<f64>; 2] = std::array::from_fn(|s| ends[s].iter().map(|e| e.0).collect());
+            let v: [Vec<f64>; 2] = std::array::from_fn(|s| ends[s].iter().map(|e| e.1).collect());
+            self.commit_free([&y0[0], &y0[1]], [&q[0], &q[1]], [&v[0], &v[1]], s_on);
             self.advance(s_on);
         }
         let (c, w) = self.point_now(level);
@@ -90,7 +102,8 @@ impl Stepper<'_> {
             // approaching: nothing to exchange in this step.
             self.exchange(level, w, t_on);
             self.points[level].exchanged_in = Some(self.n);
-            self.record();
+            self.track_peaks_now();
+            self.record_now();
             return Ok(());
         }
         let p = &mut self.points[level];
@@ -111,7 +124,8 @@ impl Stepper<'_> {
                 approach_velocity_m_s: w,
             });
         }
-        self.record();
+        self.track_peaks_now();
+        self.record_now();
         // The force rises from the onset as a power of the time since it (t^1 linear, t^1.5
         // Hertz, t^0.25 for Jankowski's dashpot): steps graded towards the onset keep the
         // method's order where uniform ones would lose it.

@@ -1,101 +1,223 @@
-//! Recording: the samples of the histories and the peaks between them.
+//! Recording: the histories at the resolution a plot needs, and the peaks exactly between them.
 
 use super::*;
 
 /// Peaks of each floor and each storey's drift ratio per side, and each point's per side.
 pub(super) type PeakSummary = ([Vec<f64>; 2], [Vec<f64>; 2], Vec<[f64; 2]>);
 
+/// A signal whose peak is reported: a floor's displacement, a storey's drift ratio, or a contact
+/// point's displacement on one side; all relative to the ground.
+pub(super) struct Signal {
+    side: usize,
+    /// Its value per unit of each of its side's modes.
+    coef: Vec<f64>,
+    /// An earlier signal it is identical to (a contact point on a floor is that floor): its peak
+    /// is that one's, and it is not tracked itself.
+    pub(super) same_as: Option<usize>,
+}
+
+impl Signal {
+    /// Every signal, in the order [`Stepper::peaks`] reads them: each floor (left, then right),
+    /// each storey's drift ratio (left, then right), each point on each side.
+    pub(super) fn all(sides: &[Side; 2], points: &[Point]) -> Vec<Signal> {
+        let mut out = Vec::new();
+        for (s, side) in sides.iter().enumerate() {
+            for f in 0..side.heights.len() {
+                out.push(Signal {
+                    side: s,
+                    coef: (0..side.modes()).map(|k| side.shapes[k][f]).collect(),
+                    same_as: None,
+                });
+            }
+        }
+        for (s, side) in sides.iter().enumerate() {
+            for f in 0..side.heights.len() {
+                let below = |k: usize| if f == 0 { 0.0 } else { side.shapes[k][f - 1] };
+                out.push(Signal {
+                    side: s,
+                    coef: (0..side.modes())
+                        .map(|k| (side.shapes[k][f] - below(k)) / side.heights[f])
+                        .collect(),
+                    same_as: None,
+                });
+            }
+        }
+        for p in points {
+            for s in 0..2 {
+                out.push(Signal {
+                    side: s,
+                    coef: p.r[s].clone(),
+                    same_as: None,
+                });
+            }
+        }
+        for i in 0..out.len() {
+            out[i].same_as = (0..i).find(|&j| {
+                out[j].same_as.is_none() && out[j].side == out[i].side && out[j].coef == out[i].coef
+            });
+        }
+        out
+    }
+
+    /// The bound on its fourth derivative, from its modes' bounds.
+    pub(super) fn bound(&self, m4: &[Vec<f64>; 2]) -> f64 {
+        self.coef
+            .iter()
+            .zip(&m4[self.side])
+            .map(|(c, m)| c.abs() * m)
+            .sum()
+    }
+}
+
 /// The largest |value| of signals known with their rates at a sequence of instants: between
 /// two instants a signal is the cubic through both values and rates, and its extremum there is
 /// found, so a peak is not missed by the spacing of the instants (the error is that of the cubic,
 /// (w h)^4 / 384 of the amplitude, against (w h)^2 / 8 for sampling).
-#[derive(Default)]
 pub(super) struct Peaks {
-    last_t: f64,
-    last: Vec<(f64, f64)>,
+    /// Each signal's last instant, value and rate.
+    last: Vec<(f64, f64, f64)>,
     peak: Vec<f64>,
-    started: bool,
 }
 
 impl Peaks {
-    pub(super) fn update(&mut self, t: f64, now: &[(f64, f64)]) {
-        if !self.started {
-            self.started = true;
-            self.last = now.to_vec();
-            self.peak = now.iter().map(|(u, _)| u.abs()).collect();
-            self.last_t = t;
-            return;
+    pub(super) fn new(signals: usize) -> Self {
+        Peaks {
+            last: vec![(0.0, 0.0, 0.0); signals],
+            peak: vec![0.0; signals],
         }
-        let l = t - self.last_t;
-        for (i, &(u, v)) in now.iter().enumerate() {
-            let mut p = self.peak[i].max(u.abs());
-            let (u0, v0) = self.last[i];
-            if l > 0.0 && (v0 > 0.0) != (v > 0.0) {
-                let inside = if v0 > 0.0 {
-                    hermite_max(u0, v0, u, v, l)
-                } else {
-                    -hermite_max(-u0, -v0, -u, -v, l)
-                };
-                if inside.is_finite() {
-                    p = p.max(inside.abs());
-                }
+    }
+
+    /// Signal i is (u, v) at t: its peak includes the cubic's extremum since its last instant.
+    pub(super) fn update(&mut self, i: usize, t: f64, u: f64, v: f64) {
+        let (t0, u0, v0) = self.last[i];
+        let l = t - t0;
+        let mut p = self.peak[i].max(u.abs());
+        if l > 0.0 && (v0 > 0.0) != (v > 0.0) {
+            let inside = if v0 > 0.0 {
+                hermite_max(u0, v0, u, v, l)
+            } else {
+                -hermite_max(-u0, -v0, -u, -v, l)
+            };
+            if inside.is_finite() {
+                p = p.max(inside.abs());
             }
-            self.peak[i] = p;
-            self.last[i] = (u, v);
         }
-        self.last_t = t;
+        self.peak[i] = p;
+        self.last[i] = (t, u, v);
+    }
+
+    /// Signal i is (u, v) at t, where it has been shown to stay below its peak since its last
+    /// instant.
+    pub(super) fn pass(&mut self, i: usize, t: f64, u: f64, v: f64) {
+        self.last[i] = (t, u, v);
+    }
+
+    /// Signal i's value and rate at its last instant.
+    pub(super) fn last(&self, i: usize) -> (f64, f64) {
+        (self.last[i].1, self.last[i].2)
+    }
+
+    pub(super) fn peak(&self, i: usize) -> f64 {
+        self.peak[i]
+    }
+}
+
+/// The histories, one column per quantity, sampled where a plot needs them: at the end of every
+/// free stretch, and inside contacts every `contact_sample_s`, where a contact opens or closes,
+/// and at the end.
+pub(in crate::model::building) struct Record {
+    pub time_s: Vec<f64>,
+    pub ground: Vec<f64>,
+    /// `floors[side][floor][sample]`, relative to the ground.
+    pub floors: [Vec<Vec<f64>>; 2],
+    pub floor_v: [Vec<Vec<f64>>; 2],
+    pub roof_v: [Vec<f64>; 2],
+    /// Absolute roof accelerations (relative plus the ground's).
+    pub roof_a: [Vec<f64>; 2],
+    pub level_force: Vec<Vec<f64>>,
+    pub force: Vec<f64>,
+    contact_sample_s: f64,
+}
+
+impl Record {
+    pub(in crate::model::building) fn new(
+        left: usize,
+        right: usize,
+        levels: usize,
+        contact_sample_s: f64,
+    ) -> Self {
+        Record {
+            time_s: Vec::new(),
+            ground: Vec::new(),
+            floors: [vec![Vec::new(); left], vec![Vec::new(); right]],
+            floor_v: [vec![Vec::new(); left], vec![Vec::new(); right]],
+            roof_v: [Vec::new(), Vec::new()],
+            roof_a: [Vec::new(), Vec::new()],
+            level_force: vec![Vec::new(); levels],
+            force: Vec::new(),
+            contact_sample_s,
+        }
+    }
+
+    /// Bytes its samples take.
+    pub(super) fn bytes(&self) -> f64 {
+        let floors = self.floors[0].len() + self.floors[1].len();
+        let per_sample = 2 + 2 * floors + 4 + self.level_force.len() + 1;
+        (8 * per_sample * self.time_s.len()) as f64
+    }
+
+    pub(super) fn last_time(&self) -> f64 {
+        self.time_s.last().copied().unwrap_or(f64::NEG_INFINITY)
     }
 }
 
 impl Stepper<'_> {
-    /// Floor displacements of both sides from modal coordinates.
-    pub(super) fn floors(&self, q: [&[f64]; 2]) -> [Vec<f64>; 2] {
-        std::array::from_fn(|s| {
-            let side = &self.sides[s];
-            (0..side.heights.len())
-                .map(|f| side.floor(q[s], f))
-                .collect()
-        })
+    /// Signal i's value and rate from modal states: its coefficients over its side's modes
+    /// (a floor's mode shapes, a storey's difference of them over its height, a point's
+    /// projection).
+    #[inline]
+    pub(super) fn signal(&self, i: usize, q: [&[f64]; 2], v: [&[f64]; 2]) -> (f64, f64) {
+        let sig = &self.signals[i];
+        let (q, v) = (q[sig.side], v[sig.side]);
+        let (mut u, mut r) = (0.0, 0.0);
+        for ((c, q), v) in sig.coef.iter().zip(q).zip(v) {
+            u += c * q;
+            r += c * v;
+        }
+        (u, r)
     }
 
-    /// Every signal whose peak is reported, with its rate, from modal states: each floor, each
-    /// storey's drift ratio, each contact point on each side.
-    pub(super) fn signals(&self, q: [&[f64]; 2], v: [&[f64]; 2], out: &mut Vec<(f64, f64)>) {
-        out.clear();
-        for s in 0..2 {
-            let side = &self.sides[s];
-            for f in 0..side.heights.len() {
-                out.push((side.floor(q[s], f), side.floor(v[s], f)));
+    /// Every signal's peak brought up to the current state.
+    pub(super) fn track_peaks_now(&mut self) {
+        let t = self.time();
+        let (q, v) = (
+            [
+                std::mem::take(&mut self.sides[0].q),
+                std::mem::take(&mut self.sides[1].q),
+            ],
+            [
+                std::mem::take(&mut self.sides[0].v),
+                std::mem::take(&mut self.sides[1].v),
+            ],
+        );
+        for i in 0..self.signals.len() {
+            if self.signals[i].same_as.is_none() {
+                let (u, r) = self.signal(i, [&q[0], &q[1]], [&v[0], &v[1]]);
+                self.peaks.update(i, t, u, r);
             }
         }
-        for s in 0..2 {
-            let side = &self.sides[s];
-            let mut below = (0.0, 0.0);
-            for f in 0..side.heights.len() {
-                let now = (side.floor(q[s], f), side.floor(v[s], f));
-                let h = side.heights[f];
-                out.push(((now.0 - below.0) / h, (now.1 - below.1) / h));
-                below = now;
-            }
-        }
-        for p in &self.points {
-            for s in 0..2 {
-                out.push((dotv(&p.r[s], q[s]), dotv(&p.r[s], v[s])));
-            }
-        }
-    }
-
-    pub(super) fn track_peaks(&mut self, t: f64, q: [&[f64]; 2], v: [&[f64]; 2]) {
-        let mut now = std::mem::take(&mut self.scratch.signals);
-        self.signals(q, v, &mut now);
-        self.peaks.update(t, &now);
-        self.scratch.signals = now;
+        let [q0, q1] = q;
+        let [v0, v1] = v;
+        (self.sides[0].q, self.sides[1].q) = (q0, q1);
+        (self.sides[0].v, self.sides[1].v) = (v0, v1);
     }
 
     /// Peaks of each floor, each storey's drift ratio and each point.
     pub fn peaks(&self) -> PeakSummary {
         let n = [self.sides[0].heights.len(), self.sides[1].heights.len()];
-        let p = &self.peaks.peak;
+        let p: Vec<f64> = (0..self.signals.len())
+            .map(|i| self.peaks.peak(self.signals[i].same_as.unwrap_or(i)))
+            .collect();
         let floors = [p[..n[0]].to_vec(), p[n[0]..n[0] + n[1]].to_vec()];
         let d0 = n[0] + n[1];
         let drifts = [p[d0..d0 + n[0]].to_vec(), p[d0 + n[0]..2 * d0].to_vec()];
@@ -123,36 +245,42 @@ impl Stepper<'_> {
         })
     }
 
-    pub(super) fn record(&mut self) {
+    /// Records the current state as a sample of the histories.
+    pub(super) fn record_now(&mut self) {
+        if !self.histories {
+            return;
+        }
         let t = self.time();
         let ground = self.motion.at(t);
-        let floors = self.floors([&self.sides[0].q, &self.sides[1].q]);
-        let floor_v = self.floors([&self.sides[0].v, &self.sides[1].v]);
-        let roof_v = std::array::from_fn(|s| {
-            let side = &self.sides[s];
-            side.floor(&side.v, side.heights.len() - 1)
-        });
         let contact = self.points.iter().any(|p| p.force > 0.0);
         let roof_a = self.roof_accelerations(ground, contact);
-        let (q0, q1) = (
-            std::mem::take(&mut self.sides[0].q),
-            std::mem::take(&mut self.sides[1].q),
-        );
-        let (v0, v1) = (
-            std::mem::take(&mut self.sides[0].v),
-            std::mem::take(&mut self.sides[1].v),
-        );
-        self.track_peaks(t, [&q0, &q1], [&v0, &v1]);
-        (self.sides[0].q, self.sides[1].q) = (q0, q1);
-        (self.sides[0].v, self.sides[1].v) = (v0, v1);
-        self.samples.push(Sample {
-            t,
-            ground,
-            floors,
-            floor_v,
-            roof_v,
-            roof_a,
-            forces: self.points.iter().map(|p| p.force).collect(),
-        });
+        let rec = &mut self.record;
+        rec.time_s.push(t);
+        rec.ground.push(ground);
+        for s in 0..2 {
+            let side = &self.sides[s];
+            for f in 0..side.heights.len() {
+                rec.floors[s][f].push(side.floor(&side.q, f));
+                rec.floor_v[s][f].push(side.floor(&side.v, f));
+            }
+            let roof = side.heights.len() - 1;
+            rec.roof_v[s].push(side.floor(&side.v, roof));
+            rec.roof_a[s].push(roof_a[s] + ground);
+        }
+        let mut total = 0.0;
+        for (l, p) in self.points.iter().enumerate() {
+            rec.level_force[l].push(p.force);
+            total += p.force;
+        }
+        rec.force.push(total);
+    }
+
+    /// Inside contacts: records the state where a contact opened or closed in the last step, or
+    /// where the last sample is `contact_sample_s` old.
+    pub(super) fn record_in_contact(&mut self, opened_or_closed: bool) {
+        if opened_or_closed || self.time() >= self.record.last_time() + self.record.contact_sample_s
+        {
+            self.record_now();
+        }
     }
 }

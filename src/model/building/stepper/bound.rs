@@ -1,0 +1,233 @@
+//! Bounds that let a free stretch be checked at a few points instead of at every grid point.
+//!
+//! Between two samples of the record the ground acceleration is linear, so each mode is its
+//! linear particular response plus a free (homogeneous) vibration. The particular part is a line,
+//! whose fourth derivative is zero; the free part is Re(A e^(lambda t)) with |lambda| = w for an
+//! underdamped mode, so its fourth derivative never exceeds |A| w^4. A signal that is a
+//! combination of modes therefore has a known bound M4 on its fourth derivative over the whole
+//! stretch, and the cubic through its values and rates at two points a distance l apart is within
+//! l^4 M4 / 384 of it everywhere between them. A check that finds the cubic's largest value plus
+//! that margin below the gap has proved that no contact starts there, without looking at the
+//! points in between; and likewise for a peak.
+
+/// The bounds on the fourth and fifth time derivatives of one mode's response over a stretch
+/// where its forcing is linear, from the augmented state y = [q, q', g, g'] at the stretch's
+/// start: those of its value, and of its rate.
+pub(super) fn derivative_bounds(omega: f64, zeta: f64, y: &[f64; 4]) -> (f64, f64) {
+    let m4 = fourth_derivative(omega, zeta, y);
+    // Each derivative of the free vibration is at most |lambda| times the one before, with
+    // |lambda| = w (underdamped), or the larger root (overdamped), or w with the (A + B t)
+    // term's extra factor (near critical damping, covered by doubling).
+    let rate = if zeta < 0.999 {
+        omega
+    } else if zeta <= 1.001 {
+        2.0 * omega
+    } else {
+        omega * (zeta + (zeta * zeta - 1.0).sqrt())
+    };
+    (m4, m4 * rate)
+}
+
+/// The bound on the fourth time derivative of one mode's response over a stretch where its
+/// forcing is linear, from the augmented state y = [q, q', g, g'] at the stretch's start.
+pub(super) fn fourth_derivative(omega: f64, zeta: f64, y: &[f64; 4]) -> f64 {
+    if omega <= 0.0 || !omega.is_finite() {
+        return f64::INFINITY;
+    }
+    let w2 = omega * omega;
+    // The particular response to g + g' s is alpha + beta s.
+    let beta = y[3] / w2;
+    let alpha = (y[2] - 2.0 * zeta * omega * beta) / w2;
+    let (qh, vh) = (y[0] - alpha, y[1] - beta);
+    let w4 = w2 * w2;
+    if zeta < 0.999 {
+        let wd = omega * (1.0 - zeta * zeta).sqrt();
+        let b = (vh + zeta * omega * qh) / wd;
+        (qh * qh + b * b).sqrt() * w4
+    } else if zeta <= 1.001 {
+        // Near critical damping, (A + B t) e^(-w t) bounds it: the n-th derivative is within
+        // (|A| + |B| / (e w)) w^n + n |B| w^(n-1); the factor 2 covers the few per mille by which
+        // zeta may differ from 1 here.
+        let b = vh + omega * qh;
+        2.0 * (qh.abs() * w4 + b.abs() * omega * w2 * (4.0 + std::f64::consts::E.recip()))
+    } else {
+        let root = (zeta * zeta - 1.0).sqrt();
+        let (l1, l2) = (-omega * (zeta - root), -omega * (zeta + root));
+        let a1 = (vh - l2 * qh) / (l1 - l2);
+        let a2 = qh - a1;
+        a1.abs() * l1.powi(4) + a2.abs() * l2.powi(4)
+    }
+}
+
+/// The cubic through (0, y0) and (l, y1) with slopes v0 and v1: its largest value over [0, l],
+/// the ends included.
+pub(super) fn cubic_max(y0: f64, v0: f64, y1: f64, v1: f64, l: f64) -> f64 {
+    let mut best = y0.max(y1);
+    // p(s) for s in [0, 1] with p'(0) = l v0, p'(1) = l v1: p'(s) = a s^2 + b s + c.
+    let (m0, m1) = (l * v0, l * v1);
+    let a = 6.0 * y0 + 3.0 * m0 - 6.0 * y1 + 3.0 * m1;
+    let b = -6.0 * y0 - 4.0 * m0 + 6.0 * y1 - 2.0 * m1;
+    let c = m0;
+    let p = |s: f64| {
+        let (s2, s3) = (s * s, s * s * s);
+        (2.0 * s3 - 3.0 * s2 + 1.0) * y0
+            + (s3 - 2.0 * s2 + s) * m0
+            + (-2.0 * s3 + 3.0 * s2) * y1
+            + (s3 - s2) * m1
+    };
+    let mut consider = |s: f64| {
+        if s > 0.0 && s < 1.0 {
+            best = best.max(p(s));
+        }
+    };
+    if a.abs() <= 1e-14 * (b.abs() + c.abs()) {
+        if b != 0.0 {
+            consider(-c / b);
+        }
+    } else {
+        let disc = b * b - 4.0 * a * c;
+        if disc >= 0.0 {
+            let r = disc.sqrt();
+            // The root that avoids cancellation, and the other from the product of the roots.
+            let q = -0.5 * (b + b.signum() * r);
+            if q != 0.0 {
+                consider(q / a);
+                consider(c / q);
+            } else {
+                consider(0.0);
+            }
+        }
+    }
+    best
+}
+
+/// A bound on the cubic's largest value over [0, l] at the cost of a few operations: its Hermite
+/// weights on the ends sum to one and are positive, those on the slopes are at most 4/27 in size.
+#[inline]
+pub(super) fn cubic_bound(y0: f64, v0: f64, y1: f64, v1: f64, l: f64) -> f64 {
+    y0.max(y1) + 4.0 / 27.0 * l * (v0.abs() + v1.abs())
+}
+
+/// The cubic's largest |value| over [0, l].
+pub(super) fn cubic_max_abs(y0: f64, v0: f64, y1: f64, v1: f64, l: f64) -> f64 {
+    cubic_max(y0, v0, y1, v1, l).max(cubic_max(-y0, -v0, -y1, -v1, l))
+}
+
+/// How far a signal can stray from the cubic through its ends over a span `l`, given the bound
+/// `m4` on its fourth derivative: l^4 m4 / 384, three times over. Once for the signal against
+/// the cubic, once for the cubic through any two points inside the span against the signal (a
+/// check that clears a span clears every shorter cubic in it, as a walk would draw them), and
+/// once for the rounding of the bound itself.
+#[inline]
+pub(super) fn cubic_margin(m4: f64, l: f64) -> f64 {
+    let l2 = l * l;
+    3.0 * m4 * l2 * l2 / 384.0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::building::modal::propagator;
+
+    /// The exact response of one mode sampled densely, and its largest fourth derivative by
+    /// finite differences.
+    fn sampled_fourth(omega: f64, zeta: f64, y: [f64; 4], span: f64) -> f64 {
+        let n = 4000;
+        let h = span / n as f64;
+        let q: Vec<f64> = (0..=n)
+            .map(|i| propagator(omega, zeta, i as f64 * h).apply(&y).0)
+            .collect();
+        (2..n - 2)
+            .map(|i| {
+                (q[i - 2] - 4.0 * q[i - 1] + 6.0 * q[i] - 4.0 * q[i + 1] + q[i + 2]).abs()
+                    / h.powi(4)
+            })
+            .fold(0.0, f64::max)
+    }
+
+    #[test]
+    fn the_fourth_derivative_bound_holds_for_light_critical_and_heavy_damping() {
+        for (omega, zeta) in [(18.0, 0.05), (3.0, 0.0), (40.0, 0.6), (10.0, 1.0), (7.0, 3.0)] {
+            for y in [
+                [0.01, 0.0, 0.0, 0.0],
+                [0.0, 0.3, 0.0, 0.0],
+                [0.004, -0.2, 2.0, -15.0],
+                [-0.02, 0.1, -1.0, 40.0],
+            ] {
+                let span = 2.0 * std::f64::consts::PI / omega;
+                let bound = fourth_derivative(omega, zeta, &y);
+                let seen = sampled_fourth(omega, zeta, y, span);
+                assert!(
+                    seen <= bound * (1.0 + 1e-3),
+                    "w {omega}, zeta {zeta}, y {y:?}: seen {seen:e} above the bound {bound:e}"
+                );
+                // Not loose by orders of magnitude either: the bound is the free vibration's
+                // amplitude, which the sampled response reaches within its first period for
+                // light damping.
+                if zeta < 0.1 && (y[0] != 0.0 || y[1] != 0.0) {
+                    assert!(seen >= 0.5 * bound, "w {omega}, zeta {zeta}: {seen:e} vs {bound:e}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_cubic_through_a_signal_stays_within_its_margin_of_it() {
+        let (omega, zeta) = (25.0, 0.05);
+        let y = [0.01, 0.4, -3.0, 20.0];
+        let m4 = fourth_derivative(omega, zeta, &y);
+        for l in [1e-3, 1e-2, 0.05] {
+            let (y1, v1) = propagator(omega, zeta, l).apply(&y);
+            let worst = (0..=200)
+                .map(|i| {
+                    let s = l * i as f64 / 200.0;
+                    let exact = propagator(omega, zeta, s).apply(&y).0;
+                    let x = s / l;
+                    let cubic = (2.0 * x.powi(3) - 3.0 * x * x + 1.0) * y[0]
+                        + (x.powi(3) - 2.0 * x * x + x) * l * y[1]
+                        + (-2.0 * x.powi(3) + 3.0 * x * x) * y1
+                        + (x.powi(3) - x * x) * l * v1;
+                    (exact - cubic).abs()
+                })
+                .fold(0.0, f64::max);
+            assert!(worst <= cubic_margin(m4, l), "l {l}: {worst:e}");
+        }
+    }
+
+    #[test]
+    fn the_cubic_maximum_finds_interior_humps_and_the_ends() {
+        // A hump inside: y = s (1 - s) on [0, 1] has slopes 1 and -1, maximum 1/4.
+        assert!((cubic_max(0.0, 1.0, 0.0, -1.0, 1.0) - 0.25).abs() < 1e-15);
+        // Rising throughout: the end.
+        assert_eq!(cubic_max(0.0, 1.0, 1.0, 1.0, 1.0), 1.0);
+        // Slopes of the same sign at both ends and a wiggle between: x^3-type with a local
+        // maximum inside, found although neither end's slope says so.
+        let (y0, v0, y1, v1, l) = (0.0, 3.0, 0.1, 3.0, 1.0);
+        let dense = (0..=10_000)
+            .map(|i| {
+                let x = i as f64 / 10_000.0;
+                (2.0 * x.powi(3) - 3.0 * x * x + 1.0) * y0
+                    + (x.powi(3) - 2.0 * x * x + x) * l * v0
+                    + (-2.0 * x.powi(3) + 3.0 * x * x) * y1
+                    + (x.powi(3) - x * x) * l * v1
+            })
+            .fold(f64::NEG_INFINITY, f64::max);
+        assert!(dense > 0.1, "the wiggle rises above the end");
+        assert!((cubic_max(y0, v0, y1, v1, l) - dense).abs() < 1e-8);
+        assert!((cubic_max_abs(0.0, -1.0, 0.0, 1.0, 1.0) - 0.25).abs() < 1e-15);
+    }
+
+    #[test]
+    fn the_quick_bound_is_never_below_the_cubics_maximum() {
+        let mut worst: f64 = f64::INFINITY;
+        for i in 0..2000 {
+            // A fixed spread of ends and slopes, steep and flat.
+            let x = i as f64;
+            let (y0, v0, y1, v1) = ((x * 0.37).sin(), 5.0 * (x * 0.91).cos(), (x * 1.3).cos(), 3.0 * (x * 0.17).sin());
+            let l = 0.1 + (x * 0.07).sin().abs();
+            let slack = cubic_bound(y0, v0, y1, v1, l) - cubic_max(y0, v0, y1, v1, l);
+            worst = worst.min(slack);
+        }
+        assert!(worst >= -1e-12, "the bound fell below the maximum by {worst:e}");
+    }
+}
