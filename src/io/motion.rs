@@ -2,6 +2,7 @@
 //! only with a given step), the records built into the program, and the synthetic record. A
 //! malformed file gives an error naming its line.
 
+pub use crate::model::motion::Units;
 use crate::model::motion::synthetic::SyntheticSpec;
 use crate::model::motion::{G, GroundMotion};
 
@@ -117,38 +118,6 @@ pub fn load(spec: &MotionSpec) -> Result<GroundMotion, MotionError> {
         }
     }
     Ok(motion)
-}
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Units {
-    G,
-    MetresPerSecond2,
-    CentimetresPerSecond2,
-}
-
-impl Units {
-    pub fn from_name(s: &str) -> Option<Self> {
-        match s {
-            "g" => Some(Units::G),
-            "m/s2" | "m/s^2" => Some(Units::MetresPerSecond2),
-            "cm/s2" | "cm/s^2" | "gal" => Some(Units::CentimetresPerSecond2),
-            _ => None,
-        }
-    }
-    pub fn name(self) -> &'static str {
-        match self {
-            Units::G => "g",
-            Units::MetresPerSecond2 => "m/s2",
-            Units::CentimetresPerSecond2 => "cm/s2",
-        }
-    }
-    pub fn to_m_s2(self) -> f64 {
-        match self {
-            Units::G => G,
-            Units::MetresPerSecond2 => 1.0,
-            Units::CentimetresPerSecond2 => 0.01,
-        }
-    }
 }
 
 /// A record that could not be read: which file, which line, why.
