@@ -199,6 +199,14 @@ impl Setting {
         }
     }
 
+    /// The word a number setting takes instead of a number (auto, flat), if any.
+    pub fn word(&self) -> Option<&'static str> {
+        match self.kind {
+            Kind::Number { word, .. } => word,
+            _ => None,
+        }
+    }
+
     /// The accepted range of a number or list.
     pub fn range(&self) -> Option<Range> {
         match self.kind {
