@@ -624,7 +624,8 @@ fn compare_table(ui: &mut egui::Ui, peers: &[(ModelKind, Solved)]) {
         .striped(true)
         .spacing([18.0, 4.0])
         .show(ui, |ui| {
-            for h in ["model", "peak force [N]", "duration [ms]", "e", "solve"] {
+            let model = crate::model::settings::impact::MODEL.label;
+            for h in [model, "peak force [N]", "duration [ms]", "e", "solve"] {
                 ui.strong(h);
             }
             ui.end_row();

@@ -5,6 +5,7 @@
 pub use crate::model::motion::Units;
 use crate::model::motion::synthetic::SyntheticSpec;
 use crate::model::motion::{G, GroundMotion};
+use crate::model::settings::building as setting;
 
 /// A record shipped with the program: its name, what it is, and its text (our header, then
 /// time and acceleration in g).
@@ -82,7 +83,8 @@ pub fn load(spec: &MotionSpec) -> Result<GroundMotion, MotionError> {
     if too_short(&motion) {
         let why = match &spec.file {
             None => format!(
-                "motion.length: {} s is less than two samples of {} s",
+                "{}: {} s is less than two samples of {} s",
+                setting::MOTION_LENGTH.key,
                 crate::model::settings::shown(spec.synthetic.duration_s),
                 crate::model::settings::shown(spec.synthetic.dt_s)
             ),
@@ -97,7 +99,8 @@ pub fn load(spec: &MotionSpec) -> Result<GroundMotion, MotionError> {
                 &motion.name,
                 None,
                 format!(
-                    "motion.duration: {} s leaves fewer than two samples of a record sampled every {} s",
+                    "{}: {} s leaves fewer than two samples of a record sampled every {} s",
+                    setting::MOTION_DURATION.key,
                     crate::model::settings::shown(d),
                     crate::model::settings::shown(motion.dt_s)
                 ),
@@ -111,7 +114,8 @@ pub fn load(spec: &MotionSpec) -> Result<GroundMotion, MotionError> {
                 &motion.name,
                 None,
                 format!(
-                    "motion.scale: {} makes the record overflow",
+                    "{}: {} makes the record overflow",
+                    setting::MOTION_SCALE.key,
                     crate::model::settings::shown(spec.scale)
                 ),
             ));
@@ -398,7 +402,11 @@ pub fn parse_text(
         )
     })?;
     if !(dt.is_finite() && dt > 0.0) {
-        return Err(err(source, None, format!("motion.dt = {dt} must be > 0 s")));
+        return Err(err(
+            source,
+            None,
+            format!("{} = {dt} must be > 0 s", setting::MOTION_DT.key),
+        ));
     }
     Ok(GroundMotion {
         name: source.to_string(),
