@@ -4,7 +4,7 @@
 
 use super::params::{Fields, Spec};
 use crate::io::building_settings::{BUILDINGS, BuildingSetup};
-use crate::model::building::{ContactModel, DampingModel, SlabReading};
+use crate::model::building::{Building, ContactModel, DampingModel, SlabReading};
 use crate::model::settings::{Range, SIDES, Setting, building as setting};
 use eframe::egui;
 
@@ -75,6 +75,24 @@ fn building_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup
         ));
     });
     let n = b.storeys;
+    storey_lists_ui(ui, fields, b, side);
+    row(ui, fields, &setting::DAMPING_RATIO, side, setup);
+    let b = setup.building_mut(side);
+    if n > 1 {
+        ui.horizontal(|ui| {
+            ui.label(setting::DAMPING.label).on_hover_text(
+                "modal: the ratio in every mode; rayleigh: C = a M + b K with the ratio in modes 1 and 2",
+            );
+            for d in DampingModel::ALL {
+                ui.selectable_value(&mut b.damping, d, d.name());
+            }
+        });
+    }
+}
+
+/// Masses, stiffnesses and heights: one row for every storey, or a row each.
+fn storey_lists_ui(ui: &mut egui::Ui, fields: &mut Fields, b: &mut Building, side: usize) {
+    let n = b.storeys;
     // Each list, and the one-value setting that stands for all its storeys.
     for (each, one, list) in [
         (&setting::MASSES, &setting::MASS, &mut b.masses_kg),
@@ -115,18 +133,6 @@ fn building_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup
                 });
             compact(list);
         }
-    }
-    row(ui, fields, &setting::DAMPING_RATIO, side, setup);
-    let b = setup.building_mut(side);
-    if n > 1 {
-        ui.horizontal(|ui| {
-            ui.label(setting::DAMPING.label).on_hover_text(
-                "modal: the ratio in every mode; rayleigh: C = a M + b K with the ratio in modes 1 and 2",
-            );
-            for d in DampingModel::ALL {
-                ui.selectable_value(&mut b.damping, d, d.name());
-            }
-        });
     }
 }
 
