@@ -68,7 +68,7 @@ fn end_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut ImpactSetup, i: us
                 Some(w) if flat => SettingValue::Text(w.into()),
                 _ => SettingValue::Number(radius_m),
             };
-            end.set(setup, i, &value).expect("a flat end or a number");
+            end.set_value(setup, i, &value).expect("a flat end or a number");
         }
         clicked
     });

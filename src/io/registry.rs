@@ -75,7 +75,12 @@ impl<S> Entry<S> {
     }
 
     /// Writes `value` for `owner`.
-    pub fn set(&self, setup: &mut S, owner: usize, value: &SettingValue) -> Result<(), InputError> {
+    pub fn set_value(
+        &self,
+        setup: &mut S,
+        owner: usize,
+        value: &SettingValue,
+    ) -> Result<(), InputError> {
         let key = self.setting.key_of(owner);
         let target = Target {
             setting: self.setting,
@@ -91,7 +96,7 @@ impl<S> Entry<S> {
             Kind::Count { .. } => x.round(),
             _ => x,
         };
-        Entry::set(self, setup, owner, &SettingValue::Number(x))
+        self.set_value(setup, owner, &SettingValue::Number(x))
     }
 
     /// The value a saved scene writes, as TOML: the one held, or the table's word (auto) where
