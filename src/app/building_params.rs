@@ -1,14 +1,22 @@
 //! The Building pounding scene's parameter panel: each building's storeys (count and per-storey
-//! mass, stiffness and height), damping and slabs, the contact, and the ground motion.
+//! mass, stiffness and height), damping and slabs, the contact, and the ground motion; rows
+//! from the settings table, values through the settings registry.
 
 use super::params::{Fields, Spec};
-use crate::io::building_settings::BuildingSetup;
+use crate::io::building_settings::{BUILDINGS, BuildingSetup};
 use crate::model::building::{Building, ContactModel, DampingModel, SlabReading};
-use crate::model::settings::{BUILDING_SETTINGS, Range};
+use crate::model::settings::{Range, SIDES, Setting, building as setting};
 use eframe::egui;
 
-fn spec(key: &str) -> Spec<'static> {
-    Spec::of(BUILDING_SETTINGS, key)
+/// The row of a building setting of one side (0: left) or of the pair, through the registry.
+fn row(
+    ui: &mut egui::Ui,
+    fields: &mut Fields,
+    s: &Setting,
+    owner: usize,
+    setup: &mut BuildingSetup,
+) {
+    fields.setting(ui, BUILDINGS.entry(s), owner, setup);
 }
 
 /// The most storeys the panel offers (the command line takes up to 100).
@@ -29,10 +37,11 @@ fn compact(list: &mut Vec<f64>) {
     }
 }
 
-fn building_ui(ui: &mut egui::Ui, fields: &mut Fields, side: &str, b: &mut Building) {
+fn building_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup, side: usize) {
+    let b = setup.building_mut(side);
     ui.horizontal(|ui| {
         let label = ui
-            .label("storeys")
+            .label(setting::STOREYS.label)
             .on_hover_text("Number of storeys: a floor (lumped mass) above each")
             .id;
         let mut n = b.storeys;
@@ -66,72 +75,72 @@ fn building_ui(ui: &mut egui::Ui, fields: &mut Fields, side: &str, b: &mut Build
         ));
     });
     let n = b.storeys;
-    for (key, list) in [
-        ("masses", &mut b.masses_kg),
-        ("stiffnesses", &mut b.stiffnesses_n_m),
-        ("heights", &mut b.heights_m),
+    storey_lists_ui(ui, fields, b, side);
+    row(ui, fields, &setting::DAMPING_RATIO, side, setup);
+    let b = setup.building_mut(side);
+    if n > 1 {
+        ui.horizontal(|ui| {
+            ui.label(setting::DAMPING.label).on_hover_text(
+                "modal: the ratio in every mode; rayleigh: C = a M + b K with the ratio in modes 1 and 2",
+            );
+            for d in DampingModel::ALL {
+                ui.selectable_value(&mut b.damping, d, d.name());
+            }
+        });
+    }
+}
+
+/// Masses, stiffnesses and heights: one row for every storey, or a row each.
+fn storey_lists_ui(ui: &mut egui::Ui, fields: &mut Fields, b: &mut Building, side: usize) {
+    let n = b.storeys;
+    // Each list, and the one-value setting that stands for all its storeys.
+    for (each, one, list) in [
+        (&setting::MASSES, &setting::MASS, &mut b.masses_kg),
+        (
+            &setting::STIFFNESSES,
+            &setting::STIFFNESS,
+            &mut b.stiffnesses_n_m,
+        ),
+        (&setting::HEIGHTS, &setting::HEIGHT, &mut b.heights_m),
     ] {
-        let each = spec(&format!("SIDE.{key}"));
+        let key = each.key_of(side);
+        let name = each.name();
         if list.len() == 1 || n == 1 {
-            let single = match key {
-                "masses" => "SIDE.mass",
-                "stiffnesses" => "SIDE.stiffness",
-                _ => "SIDE.height",
-            };
             let mut v = list[0];
-            if fields.row(ui, &format!("{side}.{key}"), &spec(single), &mut v) {
+            if fields.row(ui, &key, &Spec::of(one), &mut v) {
                 list[0] = v;
             }
             if n > 1
                 && ui
-                    .small_button(format!("per storey ({key})"))
+                    .small_button(format!("per storey ({name})"))
                     .on_hover_text("Give each storey its own value")
                     .clicked()
             {
                 expand(list, n);
             }
         } else {
-            egui::CollapsingHeader::new(format!("{key} per storey"))
-                .id_salt(format!("{side}-{key}"))
+            let spec = Spec::of(each);
+            egui::CollapsingHeader::new(format!("{name} per storey"))
+                .id_salt(format!("{}-{name}", SIDES[side]))
                 .default_open(true)
                 .show(ui, |ui| {
                     for (j, v) in list.iter_mut().enumerate().rev() {
                         ui.horizontal(|ui| {
                             ui.label(format!("{:2}", j + 1));
-                            fields.row(ui, &format!("{side}.{key}.{j}"), &each, v);
+                            fields.row(ui, &format!("{key}.{j}"), &spec, v);
                         });
                     }
                 });
             compact(list);
         }
     }
-    fields.row(
-        ui,
-        &format!("{side}.damping_ratio"),
-        &spec("SIDE.damping_ratio"),
-        &mut b.damping_ratio,
-    );
-    if n > 1 {
-        ui.horizontal(|ui| {
-            ui.label("damping model").on_hover_text(
-                "modal: the ratio in every mode; rayleigh: C = a M + b K with the ratio in modes 1 and 2",
-            );
-            ui.selectable_value(&mut b.damping, DampingModel::Modal, "modal");
-            ui.selectable_value(
-                &mut b.damping,
-                DampingModel::Rayleigh { modes: [1, 2] },
-                "rayleigh",
-            );
-        });
-    }
 }
 
 pub fn ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup, path: &mut String) {
-    let sc = &mut setup.scenario;
-    for (side, b) in [("left", &mut sc.left), ("right", &mut sc.right)] {
-        egui::CollapsingHeader::new(format!("{side} building"))
+    for (side, name) in SIDES.iter().enumerate() {
+        egui::CollapsingHeader::new(format!("{name} building"))
             .default_open(true)
-            .show(ui, |ui| building_ui(ui, fields, side, b));
+            .show(ui, |ui| building_ui(ui, fields, setup, side));
     }
     egui::CollapsingHeader::new("Contact")
         .default_open(true)
@@ -142,56 +151,36 @@ pub fn ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup, pat
 }
 
 fn contact_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup) {
-    let sc = &mut setup.scenario;
     ui.horizontal_wrapped(|ui| {
         for m in ContactModel::ALL {
-            ui.selectable_value(&mut sc.contact, m, m.name());
+            ui.selectable_value(&mut setup.scenario.contact, m, m.name());
         }
     });
     // The question is which gap avoids pounding: it lives between 0 and a few centimetres, so
     // the slider is logarithmic from 0.1 mm (typed values go up to the validated maximum).
-    fields.row(ui, "gap", &spec("gap"), &mut sc.gap_m);
-    let mut k = sc.element_stiffness();
-    let stiffness = Spec {
-        unit: if sc.contact.is_hertzian() {
+    row(ui, fields, &setting::GAP, 0, setup);
+    let stiffness = BUILDINGS.entry(&setting::CONTACT_STIFFNESS);
+    // Automatic until moved: the row shows the stiffness the run will use.
+    let k = setup.scenario.element_stiffness();
+    let spec = Spec {
+        unit: if setup.scenario.contact.is_hertzian() {
             "N/m^1.5"
         } else {
             "N/m"
         },
-        ..spec("contact.stiffness")
+        ..Spec::of(stiffness.setting)
     };
-    if fields.row(ui, "contact.stiffness", &stiffness, &mut k) {
-        sc.stiffness = Some(k);
-    }
-    fields.row(
-        ui,
-        "contact.restitution",
-        &spec("contact.restitution"),
-        &mut sc.restitution,
-    );
+    fields.entry_row(ui, stiffness, 0, setup, &spec, k);
+    row(ui, fields, &setting::RESTITUTION, 0, setup);
     ui.horizontal(|ui| {
-        ui.label("Sears reading");
-        ui.selectable_value(&mut sc.reading, SlabReading::Paper, "paper");
-        ui.selectable_value(&mut sc.reading, SlabReading::End, "end");
+        ui.label(setting::CONTACT_READING.label);
+        for r in SlabReading::ALL {
+            ui.selectable_value(&mut setup.scenario.reading, r, r.name());
+        }
     });
-    fields.row(
-        ui,
-        "slab.damping",
-        &spec("slab.damping"),
-        &mut sc.slab_damping,
-    );
-    fields.row(
-        ui,
-        "impact.merge_gap_s",
-        &spec("impact.merge_gap_s"),
-        &mut sc.merge_gap_s,
-    );
-    fields.row(
-        ui,
-        "solver.tolerance",
-        &spec("solver.tolerance"),
-        &mut sc.tolerance,
-    );
+    row(ui, fields, &setting::SLAB_DAMPING, 0, setup);
+    row(ui, fields, &setting::MERGE_GAP, 0, setup);
+    row(ui, fields, &setting::TOLERANCE, 0, setup);
 }
 
 fn motion_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup, path: &mut String) {
@@ -241,34 +230,32 @@ fn motion_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup, 
             m.file = Some(path.trim().to_string());
         }
     });
-    let mut scale = m.scale;
-    if fields.row(ui, "motion.scale", &spec("motion.scale"), &mut scale) && scale != 0.0 {
-        m.scale = scale;
-    }
-    let mut duration = m.duration_s.unwrap_or(0.0);
+    // A factor of 0 is refused by the entry: the record keeps its last factor.
+    row(ui, fields, &setting::MOTION_SCALE, 0, setup);
+    let duration = BUILDINGS.entry(&setting::MOTION_DURATION);
     // 0 here means the whole record.
     let whole = Spec {
         tooltip: "Use only the first seconds of the record (0: all of it)",
         typed: Range::closed(0.0, 1e6),
-        ..spec("motion.duration")
+        ..Spec::of(duration.setting)
     };
-    if fields.row(ui, "motion.duration", &whole, &mut duration) {
-        m.duration_s = (duration > 0.0).then_some(duration);
+    let mut d = setup.motion.duration_s.unwrap_or(0.0);
+    if fields.row(ui, &duration.setting.key_of(0), &whole, &mut d) {
+        if d > 0.0 {
+            let _ = duration.set_number(setup, 0, d);
+        } else {
+            setup.motion.duration_s = None;
+        }
     }
-    if m.file.is_none() {
-        fields.row(
-            ui,
-            "motion.pga",
-            &spec("motion.pga"),
-            &mut m.synthetic.pga_g,
-        );
-        let mut seed = m.synthetic.seed as f64;
+    if setup.motion.file.is_none() {
+        row(ui, fields, &setting::MOTION_PGA, 0, setup);
+        let seed = BUILDINGS.entry(&setting::MOTION_SEED);
+        // The table's span is every seed there is; a slider over it could not pick one.
         let seeds = Spec {
             max: 1e6,
-            ..spec("motion.seed")
+            ..Spec::of(seed.setting)
         };
-        if fields.row(ui, "motion.seed", &seeds, &mut seed) {
-            m.synthetic.seed = seed.round() as u64;
-        }
+        let value = setup.motion.synthetic.seed as f64;
+        fields.entry_row(ui, seed, 0, setup, &seeds, value);
     }
 }

@@ -1,24 +1,27 @@
 //! The parameter panel of the bar scenes: every input of the impact core, each row's label,
-//! unit, tooltip, slider and accepted range from the settings table.
+//! unit, tooltip, slider and accepted range from the settings table, its value read and written
+//! through the settings registry.
 
 use super::params::{Fields, Spec};
-use crate::io::settings::ImpactSetup;
-use crate::model::bar::{Bar, EndShape, Section};
+use crate::io::settings::{IMPACT, ImpactSetup, SettingValue};
+use crate::model::bar::EndShape;
 use crate::model::contact::LawKind;
 use crate::model::impact::ModelKind;
 use crate::model::material::MaterialPreset;
-use crate::model::scenario::{ImpactScenario, Reading};
-use crate::model::settings::IMPACT_SETTINGS;
+use crate::model::scenario::Reading;
+use crate::model::settings::{BARS, Setting, impact as setting};
 use eframe::egui;
 
-fn spec(key: &str) -> Spec<'static> {
-    Spec::of(IMPACT_SETTINGS, key)
+/// A row's group as the lesson lock names it: `bar1.`, `contact.`.
+fn group(s: &Setting, owner: usize) -> String {
+    format!("{}.", s.group(owner))
 }
 
-fn bar_ui(ui: &mut egui::Ui, fields: &mut Fields, id: &str, bar: &mut Bar) -> bool {
-    let mut changed = fields.gate(ui, &format!("{id}.material"), |ui| {
+fn bar_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut ImpactSetup, i: usize) -> bool {
+    let bar = setup.bar_mut(i);
+    let mut changed = fields.gate(ui, &setting::MATERIAL.key_of(i), |ui| {
         ui.horizontal(|ui| {
-            ui.label("material")
+            ui.label(setting::MATERIAL.label)
                 .on_hover_text("Sets E, nu and rho; the fields below can change them");
             let mut changed = false;
             for m in MaterialPreset::ALL {
@@ -32,18 +35,28 @@ fn bar_ui(ui: &mut egui::Ui, fields: &mut Fields, id: &str, bar: &mut Bar) -> bo
         })
         .inner
     });
-    let row = |fields: &mut Fields, ui: &mut egui::Ui, key: &str, v: &mut f64| {
-        fields.row(ui, &format!("{id}.{key}"), &spec(&format!("barN.{key}")), v)
+    let row = |fields: &mut Fields, ui: &mut egui::Ui, s: &Setting, setup: &mut ImpactSetup| {
+        fields.setting(ui, IMPACT.entry(s), i, setup)
     };
-    changed |= row(fields, ui, "length", &mut bar.length_m);
-    let mut radius = bar.radius_m();
-    if row(fields, ui, "radius", &mut radius) {
-        bar.section = Section::Circular { radius_m: radius };
-        changed = true;
-    }
-    let mut flat = bar.end == EndShape::Flat;
-    let radius_m = bar.radius_m();
-    changed |= fields.gate(ui, &format!("{id}.end_radius"), |ui| {
+    changed |= row(fields, ui, &setting::LENGTH, setup);
+    // A bar given by its area shows the radius of the same area; moving it makes the bar round.
+    let radius = IMPACT.entry(&setting::RADIUS);
+    let radius_m = setup.bar(i).radius_m();
+    changed |= fields.entry_row(ui, radius, i, setup, &Spec::of(radius.setting), radius_m);
+    changed |= end_ui(ui, fields, setup, i);
+    changed |= row(fields, ui, &setting::ADDED_MASS, setup);
+    changed |= row(fields, ui, &setting::VELOCITY, setup);
+    changed |= row(fields, ui, &setting::YOUNGS_MODULUS, setup);
+    changed |= row(fields, ui, &setting::DENSITY, setup);
+    changed
+}
+
+/// Flat or rounded, and a rounded end's radius.
+fn end_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut ImpactSetup, i: usize) -> bool {
+    let end = IMPACT.entry(&setting::END_RADIUS);
+    let mut flat = setup.bar(i).end == EndShape::Flat;
+    let radius_m = setup.bar(i).radius_m();
+    let mut changed = fields.gate(ui, &end.setting.key_of(i), |ui| {
         let clicked = ui
             .checkbox(&mut flat, "flat end")
             .on_hover_text(
@@ -51,56 +64,45 @@ fn bar_ui(ui: &mut egui::Ui, fields: &mut Fields, id: &str, bar: &mut Bar) -> bo
             )
             .changed();
         if clicked {
-            bar.end = if flat {
-                EndShape::Flat
-            } else {
-                EndShape::Rounded { radius_m }
+            let value = match end.setting.word() {
+                Some(w) if flat => SettingValue::Text(w.into()),
+                _ => SettingValue::Number(radius_m),
             };
+            end.set_value(setup, i, &value).expect("a flat end or a number");
         }
         clicked
     });
-    if let EndShape::Rounded { radius_m } = bar.end {
-        let mut r = radius_m;
-        if row(fields, ui, "end_radius", &mut r) {
-            bar.end = EndShape::Rounded { radius_m: r };
-            changed = true;
-        }
+    if !flat {
+        changed |= fields.setting(ui, end, i, setup);
     }
-    changed |= row(fields, ui, "added_mass", &mut bar.added_mass_kg);
-    changed |= row(fields, ui, "velocity", &mut bar.velocity_m_s);
-    changed |= row(
-        fields,
-        ui,
-        "youngs_modulus",
-        &mut bar.material.youngs_modulus_pa,
-    );
-    changed |= row(fields, ui, "density", &mut bar.material.density_kg_m3);
     changed
 }
 
 /// The contact's law, stiffness, zone, reading and restitution.
-fn contact_ui(ui: &mut egui::Ui, fields: &mut Fields, sc: &mut ImpactScenario) {
-    fields.gate(ui, "contact.law", |ui| {
+fn contact_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut ImpactSetup) {
+    let law = &setting::CONTACT_LAW;
+    fields.gate(ui, law.key, |ui| {
         ui.horizontal(|ui| {
-            ui.label("law").on_hover_text(
-                "Hertz F = k delta^1.5 for rounded ends, linear F = kL delta for flat ones",
-            );
-            ui.selectable_value(&mut sc.contact.law, LawKind::Hertz, "hertz");
-            ui.selectable_value(&mut sc.contact.law, LawKind::Linear, "linear");
+            ui.label(law.label).on_hover_text(law.help);
+            for l in LawKind::ALL {
+                ui.selectable_value(&mut setup.scenario.contact.law, l, l.name());
+            }
         });
         false
     });
-    let mut auto = sc.contact.stiffness.is_none();
-    fields.gate(ui, "contact.stiffness", |ui| {
+    let stiffness = IMPACT.entry(&setting::CONTACT_STIFFNESS);
+    let mut auto = setup.scenario.contact.stiffness.is_none();
+    fields.gate(ui, stiffness.setting.key, |ui| {
         ui.checkbox(&mut auto, "automatic stiffness").on_hover_text(
             "Hertz from the ends and materials; linear from the paper's E A / (L / n)",
         );
         false
     });
     if auto {
-        sc.contact.stiffness = None;
+        setup.scenario.contact.stiffness = None;
     } else {
-        let mut k = sc
+        let sc = &setup.scenario;
+        let k = sc
             .contact
             .stiffness
             .unwrap_or_else(|| sc.contact_law().map(|l| l.stiffness).unwrap_or(1e10));
@@ -111,34 +113,53 @@ fn contact_ui(ui: &mut egui::Ui, fields: &mut Fields, sc: &mut ImpactScenario) {
         };
         let spec = Spec {
             unit,
-            ..spec("contact.stiffness")
+            ..Spec::of(stiffness.setting)
         };
-        fields.row(ui, "contact.stiffness", &spec, &mut k);
-        sc.contact.stiffness = Some(k);
+        // Unticking "automatic" keeps the stiffness shown, moved or not.
+        if !fields.entry_row(ui, stiffness, 0, setup, &spec, k) {
+            setup.scenario.contact.stiffness = Some(k);
+        }
     }
-    fields.row(
-        ui,
-        "contact.zone_scale",
-        &spec("contact.zone_scale"),
-        &mut sc.contact.zone_scale,
-    );
-    fields.gate(ui, "sears.reading", |ui| {
+    fields.setting(ui, IMPACT.entry(&setting::ZONE_SCALE), 0, setup);
+    let reading = &setting::SEARS_READING;
+    fields.gate(ui, reading.key, |ui| {
         ui.horizontal(|ui| {
-            ui.label("Sears reading").on_hover_text(
-                "paper: delayed planes (not energy-consistent); collocated: a massless zone spring; end: the law at the bar ends (d -> 0)",
-            );
+            ui.label(reading.label).on_hover_text(reading.help);
             for r in Reading::ALL {
-                ui.selectable_value(&mut sc.reading, r, r.name());
+                ui.selectable_value(&mut setup.scenario.reading, r, r.name());
             }
         });
         false
     });
-    fields.row(
-        ui,
-        "contact.restitution",
-        &spec("contact.restitution"),
-        &mut sc.contact.restitution,
-    );
+    fields.setting(ui, IMPACT.entry(&setting::RESTITUTION), 0, setup);
+}
+
+/// The model (Bar impact only), the step, the span and the FE mesh.
+fn solver_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut ImpactSetup, show_model: bool) {
+    if show_model {
+        fields.gate(ui, setting::MODEL.key, |ui| {
+            ui.horizontal_wrapped(|ui| {
+                ui.label(setting::MODEL.label);
+                for m in ModelKind::ALL {
+                    ui.selectable_value(&mut setup.model, m, m.name());
+                }
+            });
+            false
+        });
+    }
+    fields.setting(ui, IMPACT.entry(&setting::DT), 0, setup);
+    fields.setting(ui, IMPACT.entry(&setting::WINDOW), 0, setup);
+    let segments = IMPACT.entry(&setting::FE_SEGMENTS);
+    // The table's span reaches a million segments; the slider keeps to what solves in a frame
+    // or two.
+    let spec = Spec {
+        min: 2.0,
+        max: 2000.0,
+        log: true,
+        ..Spec::of(segments.setting)
+    };
+    let n = setup.scenario.fe.segments as f64;
+    fields.entry_row(ui, segments, 0, setup, &spec, n);
 }
 
 /// The whole panel; returns whether anything changed.
@@ -149,60 +170,30 @@ pub fn ui(
     show_model: bool,
 ) -> bool {
     let before = *setup;
-    let sc = &mut setup.scenario;
-    if fields.shows_group("bar1.") {
-        egui::CollapsingHeader::new("Bar 1 (left, moving right)")
-            .default_open(true)
-            .show(ui, |ui| bar_ui(ui, fields, "bar1", &mut sc.bar1));
+    for (i, title) in ["Bar 1 (left, moving right)", "Bar 2 (right)"]
+        .into_iter()
+        .enumerate()
+    {
+        if fields.shows_group(&format!("{}.", BARS[i])) {
+            egui::CollapsingHeader::new(title)
+                .default_open(true)
+                .show(ui, |ui| bar_ui(ui, fields, setup, i));
+        }
     }
-    if fields.shows_group("bar2.") {
-        egui::CollapsingHeader::new("Bar 2 (right)")
-            .default_open(true)
-            .show(ui, |ui| bar_ui(ui, fields, "bar2", &mut sc.bar2));
-    }
-    let contact_open = fields.shows_group("contact.") || fields.shows_group("sears.");
+    let contact_open = fields.shows_group(&group(&setting::CONTACT_LAW, 0))
+        || fields.shows_group(&group(&setting::SEARS_READING, 0));
     if contact_open {
         egui::CollapsingHeader::new("Contact")
             .default_open(true)
-            .show(ui, |ui| contact_ui(ui, fields, sc));
+            .show(ui, |ui| contact_ui(ui, fields, setup));
     }
-    let solver_open = fields.shows_group("solver.")
-        || fields.shows_group("fe.")
-        || (show_model && fields.shows_group("model"));
+    let solver_open = fields.shows_group(&group(&setting::DT, 0))
+        || fields.shows_group(&group(&setting::FE_SEGMENTS, 0))
+        || (show_model && fields.shows_group(setting::MODEL.key));
     if solver_open {
         egui::CollapsingHeader::new("Solver")
             .default_open(fields.lock.is_some())
-            .show(ui, |ui| {
-                if show_model {
-                    fields.gate(ui, "model", |ui| {
-                        ui.horizontal_wrapped(|ui| {
-                            ui.label("model");
-                            for m in ModelKind::ALL {
-                                ui.selectable_value(&mut setup.model, m, m.name());
-                            }
-                        });
-                        false
-                    });
-                }
-                let sc = &mut setup.scenario;
-                fields.row(ui, "solver.dt", &spec("solver.dt"), &mut sc.solver.dt_s);
-                fields.row(
-                    ui,
-                    "solver.window",
-                    &spec("solver.window"),
-                    &mut sc.solver.window_s,
-                );
-                let mut seg = sc.fe.segments as f64;
-                let segments = Spec {
-                    min: 2.0,
-                    max: 2000.0,
-                    log: true,
-                    ..spec("fe.segments")
-                };
-                if fields.row(ui, "fe.segments", &segments, &mut seg) {
-                    sc.fe.segments = seg.round() as usize;
-                }
-            });
+            .show(ui, |ui| solver_ui(ui, fields, setup, show_model));
     }
     *setup != before
 }

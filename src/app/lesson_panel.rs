@@ -2,6 +2,7 @@
 //! overrides loaded, its panels shown (none until its prediction is answered), its settings
 //! unlocked, its prediction judged and its task checked on every new result.
 
+use super::impact_scene::ImpactScene;
 use super::lesson_player::LessonPlayer;
 use super::visibility::{Lock, Visibility};
 use super::{PoundingApp, SceneKind};
@@ -57,9 +58,15 @@ impl PoundingApp {
         };
         let v = crate::io::settings::SettingValue::from_cli(value);
         let r = match p.current().scene {
-            LessonScene::Bar => self.bar.setup.apply(key, &v).map(|_| self.bar.request()),
+            LessonScene::Bar => self
+                .bar
+                .core
+                .setup
+                .apply(key, &v)
+                .map(|_| self.bar.request()),
             LessonScene::Compare => self
                 .compare
+                .core
                 .setup
                 .apply(key, &v)
                 .map(|_| self.compare.request()),
@@ -119,15 +126,16 @@ impl PoundingApp {
         let (t0, playing) = self.launch.time_s.map_or((0.0, true), |t| (t, false));
         match setup {
             SceneSetup::Impact(s) => {
-                let target = if scene == SceneKind::WaveVsLumped {
+                let target: &mut dyn ImpactScene = if scene == SceneKind::WaveVsLumped {
                     &mut self.compare
                 } else {
                     &mut self.bar
                 };
-                target.setup = s;
-                target.fields.clear();
-                target.playback.t = t0;
-                target.playback.playing = playing;
+                let core = target.core_mut();
+                core.setup = s;
+                core.fields.clear();
+                core.playback.t = t0;
+                core.playback.playing = playing;
                 target.request();
             }
             SceneSetup::Buildings(s) => {
@@ -149,9 +157,9 @@ impl PoundingApp {
             ),
             None => (Visibility::default(), None),
         };
-        for s in [&mut self.bar, &mut self.compare] {
-            s.visibility = visibility.clone();
-            s.fields.lock = lock.clone();
+        for core in [&mut self.bar.core, &mut self.compare.core] {
+            core.visibility = visibility.clone();
+            core.fields.lock = lock.clone();
         }
         self.buildings.visibility = visibility;
         self.buildings.set_lock(lock);

@@ -312,7 +312,7 @@ impl PoundingApp {
     }
 
     fn save_scene(&mut self) {
-        let text = preset::impact_to_toml(&self.current().setup);
+        let text = preset::impact_to_toml(&self.current().core().setup);
         self.message = Some(match std::fs::write(&self.path, text) {
             Ok(()) => (format!("saved {}", self.path), false),
             Err(e) => (format!("could not save {}: {e}", self.path), true),

@@ -7,11 +7,13 @@ mod bar_view;
 mod building_params;
 mod building_scene;
 pub(crate) mod building_view;
+mod compare_scene;
 mod dialog;
 mod energy_view;
 mod export;
 mod export_animation;
 mod impact_params;
+mod impact_scene;
 mod launch;
 mod lecture;
 mod lesson_panel;
@@ -35,7 +37,9 @@ use crate::io::preset::{self, EMBEDDED};
 use crate::io::settings::ImpactSetup;
 use bar_scene::BarScene;
 use building_scene::BuildingScene;
+use compare_scene::CompareScene;
 use eframe::egui;
+use impact_scene::ImpactScene;
 use scene::Scene;
 
 pub use launch::{HIDE_TIMINGS, Launch, SceneKind};
@@ -49,7 +53,7 @@ use std::time::Instant;
 pub struct PoundingApp {
     scene: SceneKind,
     bar: BarScene,
-    compare: BarScene,
+    compare: CompareScene,
     buildings: BuildingScene,
     study: study_scene::StudyScene,
     dark: bool,
@@ -97,28 +101,27 @@ impl PoundingApp {
         } else {
             egui::Theme::Light
         });
-        let mut bar = BarScene::new(ctx, bar_setup, false);
-        let mut compare = BarScene::new(
+        let mut bar = BarScene::new(ctx, bar_setup);
+        let mut compare = CompareScene::new(
             ctx,
             if launch.preset.is_some() {
                 bar_setup
             } else {
                 compare_setup
             },
-            true,
         );
         let mut buildings = BuildingScene::new(ctx, building_setup);
         if let Some(t) = launch.time_s {
             for p in [
-                &mut bar.playback,
-                &mut compare.playback,
+                &mut bar.core.playback,
+                &mut compare.core.playback,
                 &mut buildings.playback,
             ] {
                 p.playing = false;
                 p.t = t;
             }
         }
-        let mut study = study_scene::StudyScene::new(ctx, bar.setup);
+        let mut study = study_scene::StudyScene::new(ctx, bar.core.setup);
         if let Some(text) = storage
             .and_then(|s| s.get_string(STUDY_KEY))
             .filter(|_| !fresh)
@@ -189,7 +192,7 @@ impl PoundingApp {
 
     /// The bar scene on screen (the building scene when that is shown falls back to the bar
     /// scene for preset actions, which it does not take).
-    fn current(&mut self) -> &mut BarScene {
+    fn current(&mut self) -> &mut dyn ImpactScene {
         match self.scene {
             SceneKind::WaveVsLumped => &mut self.compare,
             _ => &mut self.bar,
@@ -199,8 +202,8 @@ impl PoundingApp {
     /// The animation time of the scene on screen [s].
     pub fn animation_time(&self) -> f64 {
         match self.scene {
-            SceneKind::BarImpact => self.bar.playback.t,
-            SceneKind::WaveVsLumped => self.compare.playback.t,
+            SceneKind::BarImpact => self.bar.core.playback.t,
+            SceneKind::WaveVsLumped => self.compare.core.playback.t,
             SceneKind::Buildings => self.buildings.playback.t,
             SceneKind::Study => self.study.playback.t,
         }
@@ -254,13 +257,12 @@ impl eframe::App for PoundingApp {
         self.keys(&ctx);
         self.lesson_keys(&ctx);
         let dt = ctx.input(|i| i.stable_dt) as f64;
-        for s in [&mut self.bar, &mut self.compare] {
-            s.poll();
-        }
+        self.bar.poll();
+        self.compare.poll();
         self.buildings.poll();
         // The study starts from the Bar impact scene's settings; only the shown study can Run.
         if self.scene == SceneKind::Study {
-            self.study.base = self.bar.setup;
+            self.study.base = self.bar.core.setup;
         }
         self.study.poll();
         if self.scene == SceneKind::Buildings {

@@ -3,7 +3,8 @@
 //! Label, unit, help, both ranges and the scale come from the settings table (`model::settings`).
 
 use super::visibility::Lock;
-use crate::model::settings::{Kind, Range, Setting, find};
+use crate::io::registry::Entry;
+use crate::model::settings::{Kind, Range, Setting};
 use eframe::egui;
 use std::collections::HashMap;
 
@@ -22,9 +23,8 @@ pub struct Spec<'a> {
 }
 
 impl Spec<'static> {
-    /// The row of `key` in a settings table.
-    pub fn of(table: &'static [Setting], key: &str) -> Self {
-        let s = find(table, key).unwrap_or_else(|| panic!("the settings table lists {key}"));
+    /// The row of a setting of the table.
+    pub fn of(s: &'static Setting) -> Self {
         let (range, slider, log) = match s.kind {
             Kind::Number {
                 range, slider, log, ..
@@ -35,7 +35,7 @@ impl Spec<'static> {
                 (min as f64, max as f64),
                 false,
             ),
-            _ => panic!("{key} is not a number"),
+            _ => panic!("{} is not a number", s.key),
         };
         Spec {
             label: s.label,
@@ -169,6 +169,35 @@ impl Fields {
         changed
     }
 
+    /// The row of a setting for `owner` (0: bar1 or left), read and written through its
+    /// registry entry; returns whether the setup changed.
+    pub fn setting<S>(
+        &mut self,
+        ui: &mut egui::Ui,
+        entry: &Entry<S>,
+        owner: usize,
+        setup: &mut S,
+    ) -> bool {
+        let value = entry.number(setup, owner).unwrap_or_default();
+        self.entry_row(ui, entry, owner, setup, &Spec::of(entry.setting), value)
+    }
+
+    /// The row of a setting showing `value` with `spec`, for a row that shows what the setup
+    /// works out (a stiffness picked automatically) or spans other than the table's; a change
+    /// is written through the entry, and a value the entry refuses leaves the setup as it was.
+    pub fn entry_row<S>(
+        &mut self,
+        ui: &mut egui::Ui,
+        entry: &Entry<S>,
+        owner: usize,
+        setup: &mut S,
+        spec: &Spec,
+        mut value: f64,
+    ) -> bool {
+        let id = entry.setting.key_of(owner);
+        self.row(ui, &id, spec, &mut value) && entry.set_number(setup, owner, value).is_ok()
+    }
+
     /// Forgets typed text (after a preset replaces the values).
     pub fn clear(&mut self) {
         self.text.clear();
@@ -201,7 +230,7 @@ pub fn status_ui(ui: &mut egui::Ui, status: Option<&(String, bool)>) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::settings::BUILDING_SETTINGS;
+    use crate::model::settings::building::GAP;
 
     /// The relative change one pixel of a `width`-pixel slider makes at `value`.
     fn one_pixel(spec: &Spec, value: f64, width: f64) -> f64 {
@@ -216,7 +245,7 @@ mod tests {
     fn the_gap_slider_resolves_millimetres_and_typing_reaches_the_validated_maximum() {
         // The question is which gap avoids pounding: the smallest drag from the paper's 1 mm
         // must not jump to centimetres (a linear 0-0.5 m slider moved it by 5 mm a pixel).
-        let spec = Spec::of(BUILDING_SETTINGS, "gap");
+        let spec = Spec::of(&GAP);
         let step = one_pixel(&spec, 1e-3, 100.0);
         assert!(
             step < 0.1,

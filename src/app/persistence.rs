@@ -32,8 +32,8 @@ pub(super) fn restore(
 
 /// Writes every scene's settings and the window's state.
 pub(super) fn save(app: &PoundingApp, storage: &mut dyn eframe::Storage) {
-    storage.set_string(IMPACT_KEY, preset::impact_to_toml(&app.bar.setup));
-    storage.set_string(COMPARE_KEY, preset::impact_to_toml(&app.compare.setup));
+    storage.set_string(IMPACT_KEY, preset::impact_to_toml(&app.bar.core.setup));
+    storage.set_string(COMPARE_KEY, preset::impact_to_toml(&app.compare.core.setup));
     storage.set_string(STUDY_KEY, app.study.state());
     let mut progress = app.progress.clone();
     if let Some(p) = &app.lesson {

@@ -3,6 +3,7 @@
 
 use super::bar_scene::BarScene;
 use super::building_scene::BuildingScene;
+use super::compare_scene::CompareScene;
 use super::export::{Exporter, ShownPlot};
 use super::playback::Playback;
 use super::study_scene::StudyScene;
@@ -27,35 +28,43 @@ pub trait Scene {
     fn main_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter);
 }
 
-impl Scene for BarScene {
-    fn playback(&mut self) -> &mut Playback {
-        &mut self.playback
-    }
-    fn busy(&self) -> bool {
-        BarScene::busy(self)
-    }
-    fn progress(&self) -> Option<f64> {
-        BarScene::progress(self)
-    }
-    fn cancel(&mut self) {
-        BarScene::cancel(self)
-    }
-    fn timings(&self) -> (Duration, Duration) {
-        self.slot.timings()
-    }
-    fn view_rect(&self) -> Option<egui::Rect> {
-        self.view_rect
-    }
-    fn shown_plots(&self) -> Vec<(&str, &ShownPlot)> {
-        BarScene::shown_plots(self)
-    }
-    fn params_ui(&mut self, ui: &mut egui::Ui) {
-        BarScene::params_ui(self, ui)
-    }
-    fn main_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
-        BarScene::main_ui(self, ui, exporter)
-    }
+/// The Scene of an impact scene: its core's playback and view, its own slot and panels.
+macro_rules! impact_scene {
+    ($scene:ty) => {
+        impl Scene for $scene {
+            fn playback(&mut self) -> &mut Playback {
+                &mut self.core.playback
+            }
+            fn busy(&self) -> bool {
+                <$scene>::busy(self)
+            }
+            fn progress(&self) -> Option<f64> {
+                <$scene>::progress(self)
+            }
+            fn cancel(&mut self) {
+                <$scene>::cancel(self)
+            }
+            fn timings(&self) -> (Duration, Duration) {
+                self.slot.timings()
+            }
+            fn view_rect(&self) -> Option<egui::Rect> {
+                self.core.view_rect
+            }
+            fn shown_plots(&self) -> Vec<(&str, &ShownPlot)> {
+                <$scene>::shown_plots(self)
+            }
+            fn params_ui(&mut self, ui: &mut egui::Ui) {
+                <$scene>::params_ui(self, ui)
+            }
+            fn main_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
+                <$scene>::main_ui(self, ui, exporter)
+            }
+        }
+    };
 }
+
+impact_scene!(BarScene);
+impact_scene!(CompareScene);
 
 impl Scene for BuildingScene {
     fn playback(&mut self) -> &mut Playback {

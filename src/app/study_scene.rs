@@ -102,7 +102,9 @@ pub struct StudyScene {
 
 impl StudyScene {
     pub fn new(ctx: &egui::Context, base: ImpactSetup) -> Self {
-        let param = "bar2.length".to_string();
+        let param = crate::model::settings::impact::LENGTH
+            .key_of(1)
+            .into_owned();
         let mut s = StudyScene {
             playback: Playback {
                 playing: false,

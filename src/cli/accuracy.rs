@@ -114,10 +114,9 @@ fn order(prev: Option<&Rung>, err: f64, ratio: f64) -> Option<f64> {
 /// range solver.dt accepts: the user's own dt is allowed, so its ladder must be too. Near an end
 /// of the range the ladder slides along it, still halving.
 pub fn step_ladder(dt: f64) -> Vec<f64> {
-    let range =
-        pounding::model::settings::find(pounding::model::settings::IMPACT_SETTINGS, "solver.dt")
-            .and_then(|s| s.range())
-            .expect("solver.dt has a range");
+    let range = pounding::model::settings::impact::DT
+        .range()
+        .expect("the step is a number with a range");
     // Coarsest rung over the reference step: 2^5 rungs down, then 16.
     let span = 32.0 * 16.0;
     let top = (4.0 * dt)
@@ -401,7 +400,7 @@ fn table(out: &mut dyn Write, rows: &[Rung], buildings: bool) -> anyhow::Result<
     writeln!(
         out,
         "{:18} {:>13} {:>8} {:>10} {:>11} {:>11} {:>11} {:>11} {:>7}{}",
-        "model",
+        pounding::model::settings::impact::MODEL.label,
         res,
         "steps",
         "wall [ms]",

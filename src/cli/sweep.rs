@@ -125,7 +125,12 @@ fn table(r: &SweepReport, out: &mut dyn Write) -> anyhow::Result<()> {
     writeln!(
         out,
         "{:>14}  {:<14} {:>14} {:>14} {:>8} {:>8}",
-        r.param, "model", "peak [N]", "duration [ms]", "e", "contacts"
+        r.param,
+        pounding::model::settings::impact::MODEL.label,
+        "peak [N]",
+        "duration [ms]",
+        "e",
+        "contacts"
     )?;
     for p in &r.points {
         writeln!(

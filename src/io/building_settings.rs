@@ -1,14 +1,17 @@
-//! `KEY = VALUE` settings of the building scene: presets and `--set` share them, as for impacts.
+//! `KEY = VALUE` settings of the building scene: [`BUILDINGS`] holds every setting's registry
+//! entry; presets and `--set` share them, as for impacts.
 
 pub use super::motion::MotionSpec;
 
+use super::motion::Units;
+use super::registry::{Entry, Registry, Target, number, put, uniform, word};
+use super::settings::SettingValue;
+use crate::model::building::{Building, BuildingScenario, ContactModel, DampingModel, SlabReading};
+use crate::model::error::InputError;
+use crate::model::settings::building as setting;
+
 /// The `motion.file` value that asks for the seeded synthetic record.
 pub const SYNTHETIC: &str = "synthetic";
-use super::motion::Units;
-use super::settings::{SettingValue, choice, count, number, numbers, text};
-use crate::model::building::{BuildingScenario, ContactModel, DampingModel, SlabReading};
-use crate::model::error::InputError;
-use crate::model::settings::BUILDING_SETTINGS;
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct BuildingSetup {
@@ -27,162 +30,7 @@ impl Default for BuildingSetup {
 
 impl BuildingSetup {
     pub fn apply(&mut self, key: &str, value: &SettingValue) -> Result<(), InputError> {
-        if let Some((side, field)) = key.split_once('.')
-            && (side == "left" || side == "right")
-        {
-            return self.apply_side(side == "left", field, key, value);
-        }
-        if key.starts_with("motion.") {
-            return self.apply_motion(key, value);
-        }
-        let sc = &mut self.scenario;
-        let auto = |v: &SettingValue| matches!(v, SettingValue::Text(s) if s == "auto");
-        match key {
-            "contact.model" => {
-                sc.contact = choice(BUILDING_SETTINGS, key, value, ContactModel::from_name)?
-            }
-            "gap" => sc.gap_m = number(key, value)?,
-            "contact.stiffness" => {
-                sc.stiffness = if auto(value) {
-                    None
-                } else {
-                    Some(number(key, value)?)
-                }
-            }
-            "contact.restitution" => sc.restitution = number(key, value)?,
-            "contact.reading" => {
-                sc.reading = choice(BUILDING_SETTINGS, key, value, |s| match s {
-                    "paper" => Some(SlabReading::Paper),
-                    "end" => Some(SlabReading::End),
-                    _ => None,
-                })?
-            }
-            "contact.zone_length" => {
-                sc.zone_length_m = if auto(value) {
-                    None
-                } else {
-                    Some(number(key, value)?)
-                }
-            }
-            "slab.damping" => sc.slab_damping = number(key, value)?,
-            "impact.merge_gap_s" => sc.merge_gap_s = number(key, value)?,
-            "solver.tolerance" => sc.tolerance = number(key, value)?,
-            "solver.steps_per_scale" => {
-                sc.steps_per_scale = if auto(value) {
-                    None
-                } else {
-                    Some(number(key, value)?)
-                }
-            }
-            "solver.max_step" => sc.max_step_s = number(key, value)?,
-            "solver.max_steps" => sc.max_steps = count(key, value)?,
-            _ => return Err(unknown(key)),
-        }
-        Ok(())
-    }
-
-    /// A key of one building (`left.` or `right.`).
-    fn apply_side(
-        &mut self,
-        left: bool,
-        field: &str,
-        key: &str,
-        value: &SettingValue,
-    ) -> Result<(), InputError> {
-        let sc = &mut self.scenario;
-        let b = if left { &mut sc.left } else { &mut sc.right };
-        match field {
-            "storeys" => b.storeys = count(key, value)?,
-            "masses" | "mass" => b.masses_kg = numbers(key, value)?,
-            "stiffnesses" | "stiffness" => b.stiffnesses_n_m = numbers(key, value)?,
-            "heights" | "height" => b.heights_m = numbers(key, value)?,
-            "period" => {
-                let t = checked(key, value)?;
-                let mut check = sc.clone();
-                check.contact = crate::model::building::ContactModel::None;
-                check
-                    .validate()
-                    .map_err(|e| InputError::new(key, format!("needs valid storeys first: {e}")))?;
-                let b = if left { &mut sc.left } else { &mut sc.right };
-                b.set_period(t);
-            }
-            "damping_ratio" => b.damping_ratio = number(key, value)?,
-            "damping" => {
-                let modes = match b.damping {
-                    DampingModel::Rayleigh { modes } => modes,
-                    DampingModel::Modal => [1, 2],
-                };
-                b.damping = choice(BUILDING_SETTINGS, key, value, |s| match s {
-                    "modal" => Some(DampingModel::Modal),
-                    "rayleigh" => Some(DampingModel::Rayleigh { modes }),
-                    _ => None,
-                })?
-            }
-            "rayleigh_modes" => {
-                let m = numbers(key, value)?;
-                let whole = |x: f64| x.fract() == 0.0 && (1.0..=100.0).contains(&x);
-                if m.len() != 2 || !whole(m[0]) || !whole(m[1]) {
-                    return Err(InputError::new(
-                        key,
-                        format!(
-                            "{} is not allowed: two mode numbers from 1, as i,j",
-                            value.describe()
-                        ),
-                    ));
-                }
-                b.damping = DampingModel::Rayleigh {
-                    modes: [m[0] as usize, m[1] as usize],
-                };
-            }
-            "velocity" => sc.initial_velocity_m_s[if left { 0 } else { 1 }] = number(key, value)?,
-            "slab_length" => b.slab_lengths_m = numbers(key, value)?,
-            "slab_width" => b.slab_widths_m = numbers(key, value)?,
-            "slab_thickness" => b.slab_thicknesses_m = numbers(key, value)?,
-            "youngs_modulus" => b.slab_youngs_pa = numbers(key, value)?,
-            _ => return Err(unknown(key)),
-        }
-        Ok(())
-    }
-
-    /// A key of the ground motion (`motion.`).
-    fn apply_motion(&mut self, key: &str, value: &SettingValue) -> Result<(), InputError> {
-        let m = &mut self.motion;
-        match key {
-            "motion.file" => {
-                let name = text(key, value)?;
-                m.set_source(name).map_err(|e| InputError::new(key, e))?;
-            }
-            "motion.units" => m.units = choice(BUILDING_SETTINGS, key, value, Units::from_name)?,
-            "motion.scale" => {
-                let x = checked(key, value)?;
-                if x == 0.0 {
-                    return Err(InputError::new(
-                        key,
-                        "0 is not allowed: a factor in [-100, 100] other than 0 (negative flips the record)",
-                    ));
-                }
-                m.scale = x;
-            }
-            "motion.duration" => m.duration_s = Some(checked(key, value)?),
-            "motion.dt" => m.dt_s = Some(checked(key, value)?),
-            "motion.pga" => m.synthetic.pga_g = checked(key, value)?,
-            "motion.seed" => {
-                let x = checked(key, value)?;
-                if x.fract() != 0.0 || x < 0.0 {
-                    return Err(InputError::new(
-                        key,
-                        format!(
-                            "{} is not a whole number; the seed is a whole number >= 0",
-                            crate::model::settings::shown(x)
-                        ),
-                    ));
-                }
-                m.synthetic.seed = x as u64;
-            }
-            "motion.length" => m.synthetic.duration_s = checked(key, value)?,
-            _ => return Err(unknown(key)),
-        }
-        Ok(())
+        BUILDINGS.apply(self, key, value)
     }
 
     pub fn apply_assignment(&mut self, assignment: &str) -> Result<(), InputError> {
@@ -194,26 +42,304 @@ impl BuildingSetup {
         })?;
         self.apply(key.trim(), &SettingValue::from_cli(value))
     }
+
+    /// Building `i` (0: the left one).
+    pub fn building(&self, i: usize) -> &Building {
+        [&self.scenario.left, &self.scenario.right][i]
+    }
+
+    /// Building `i`, to change.
+    pub fn building_mut(&mut self, i: usize) -> &mut Building {
+        let sc = &mut self.scenario;
+        if i == 0 { &mut sc.left } else { &mut sc.right }
+    }
 }
 
-/// A number checked at once against its row of the settings table (the ground motion's settings
-/// are read before any run validates them).
-fn checked(key: &str, value: &SettingValue) -> Result<f64, InputError> {
-    let x = number(key, value)?;
-    crate::model::settings::check(crate::model::settings::BUILDING_SETTINGS, key, x)?;
-    Ok(x)
+fn list(values: &[f64]) -> Option<SettingValue> {
+    Some(SettingValue::List(values.to_vec()))
 }
 
-fn unknown(key: &str) -> InputError {
-    let known: Vec<&str> = crate::model::settings::BUILDING_SETTINGS
-        .iter()
-        .map(|s| s.key)
-        .collect();
-    InputError::new(
-        key,
-        format!(
-            "unknown key; known keys: {} (SIDE is left or right)",
-            known.join(", ")
+/// Scales building `t.owner`'s storey stiffnesses to the period asked for; the storeys must
+/// be valid first, or there is no period to scale from.
+fn set_period(s: &mut BuildingSetup, t: &Target, v: &SettingValue) -> Result<(), InputError> {
+    let period_s = t.checked(v)?;
+    let mut check = s.scenario.clone();
+    check.contact = ContactModel::None;
+    check
+        .validate()
+        .map_err(|e| InputError::new(t.key, format!("needs valid storeys first: {e}")))?;
+    s.building_mut(t.owner).set_period(period_s);
+    Ok(())
+}
+
+/// Rayleigh damping between two modes, given as `i,j`.
+fn set_rayleigh_modes(
+    s: &mut BuildingSetup,
+    t: &Target,
+    v: &SettingValue,
+) -> Result<(), InputError> {
+    let m = t.numbers(v)?;
+    let whole = |x: f64| x.fract() == 0.0 && (1.0..=100.0).contains(&x);
+    if m.len() != 2 || !whole(m[0]) || !whole(m[1]) {
+        return Err(InputError::new(
+            t.key,
+            format!(
+                "{} is not allowed: two mode numbers from 1, as i,j",
+                v.describe()
+            ),
+        ));
+    }
+    s.building_mut(t.owner).damping = DampingModel::Rayleigh {
+        modes: [m[0] as usize, m[1] as usize],
+    };
+    Ok(())
+}
+
+/// A factor on the record: 0 would erase it.
+fn set_motion_scale(s: &mut BuildingSetup, t: &Target, v: &SettingValue) -> Result<(), InputError> {
+    let x = t.checked(v)?;
+    if x == 0.0 {
+        return Err(InputError::new(
+            t.key,
+            "0 is not allowed: a factor in [-100, 100] other than 0 (negative flips the record)",
+        ));
+    }
+    s.motion.scale = x;
+    Ok(())
+}
+
+fn set_motion_seed(s: &mut BuildingSetup, t: &Target, v: &SettingValue) -> Result<(), InputError> {
+    let x = t.checked(v)?;
+    if x.fract() != 0.0 || x < 0.0 {
+        return Err(InputError::new(
+            t.key,
+            format!(
+                "{} is not a whole number; the seed is a whole number >= 0",
+                crate::model::settings::shown(x)
+            ),
+        ));
+    }
+    s.motion.synthetic.seed = x as u64;
+    Ok(())
+}
+
+type E = Entry<BuildingSetup>;
+
+/// Every setting of the building scene, in the order of the settings table.
+pub static BUILDINGS: Registry<BuildingSetup> = Registry {
+    placeholders: "SIDE is left or right",
+    entries: &[
+        E::new(
+            &setting::CONTACT_MODEL,
+            |s, _| word(s.scenario.contact.name()),
+            |s, t, v| {
+                put(
+                    &mut s.scenario.contact,
+                    t.choice(v, ContactModel::from_name),
+                )
+            },
         ),
-    )
-}
+        E::new(
+            &setting::STOREYS,
+            |s, i| number(s.building(i).storeys as f64),
+            |s, t, v| put(&mut s.building_mut(t.owner).storeys, t.count(v)),
+        ),
+        E::new(
+            &setting::MASSES,
+            |s, i| list(&s.building(i).masses_kg),
+            |s, t, v| put(&mut s.building_mut(t.owner).masses_kg, t.numbers(v)),
+        ),
+        E::new(
+            &setting::STIFFNESSES,
+            |s, i| list(&s.building(i).stiffnesses_n_m),
+            |s, t, v| put(&mut s.building_mut(t.owner).stiffnesses_n_m, t.numbers(v)),
+        ),
+        E::new(
+            &setting::HEIGHTS,
+            |s, i| list(&s.building(i).heights_m),
+            |s, t, v| put(&mut s.building_mut(t.owner).heights_m, t.numbers(v)),
+        ),
+        // Sets every storey's value alike; saved and shown as the list.
+        E::new(
+            &setting::MASS,
+            |_, _| None,
+            |s, t, v| put(&mut s.building_mut(t.owner).masses_kg, t.numbers(v)),
+        )
+        .derived(|s, i| uniform(&s.building(i).masses_kg)),
+        // Sets every storey's value alike; saved and shown as the list.
+        E::new(
+            &setting::STIFFNESS,
+            |_, _| None,
+            |s, t, v| put(&mut s.building_mut(t.owner).stiffnesses_n_m, t.numbers(v)),
+        )
+        .derived(|s, i| uniform(&s.building(i).stiffnesses_n_m)),
+        // Sets every storey's value alike; saved and shown as the list.
+        E::new(
+            &setting::HEIGHT,
+            |_, _| None,
+            |s, t, v| put(&mut s.building_mut(t.owner).heights_m, t.numbers(v)),
+        )
+        .derived(|s, i| uniform(&s.building(i).heights_m)),
+        // An action on the stiffnesses, not a value of its own: shown, never saved.
+        E::new(&setting::PERIOD, |_, _| None, set_period)
+            .derived(|s, i| s.building(i).modes().periods_s().first().copied()),
+        E::new(
+            &setting::DAMPING_RATIO,
+            |s, i| number(s.building(i).damping_ratio),
+            |s, t, v| put(&mut s.building_mut(t.owner).damping_ratio, t.number(v)),
+        ),
+        E::new(
+            &setting::DAMPING,
+            |s, i| word(s.building(i).damping.name()),
+            |s, t, v| {
+                let b = s.building_mut(t.owner);
+                let modes = match b.damping {
+                    DampingModel::Rayleigh { modes } => modes,
+                    DampingModel::Modal => [1, 2],
+                };
+                put(
+                    &mut b.damping,
+                    t.choice(v, |w| DampingModel::from_name(w, modes)),
+                )
+            },
+        ),
+        E::new(
+            &setting::RAYLEIGH_MODES,
+            |s, i| match s.building(i).damping {
+                DampingModel::Rayleigh { modes: [i, j] } => list(&[i as f64, j as f64]),
+                DampingModel::Modal => None,
+            },
+            set_rayleigh_modes,
+        ),
+        E::new(
+            &setting::VELOCITY,
+            |s, i| number(s.scenario.initial_velocity_m_s[i]),
+            |s, t, v| put(&mut s.scenario.initial_velocity_m_s[t.owner], t.number(v)),
+        ),
+        E::new(
+            &setting::SLAB_LENGTH,
+            |s, i| list(&s.building(i).slab_lengths_m),
+            |s, t, v| put(&mut s.building_mut(t.owner).slab_lengths_m, t.numbers(v)),
+        ),
+        E::new(
+            &setting::SLAB_WIDTH,
+            |s, i| list(&s.building(i).slab_widths_m),
+            |s, t, v| put(&mut s.building_mut(t.owner).slab_widths_m, t.numbers(v)),
+        ),
+        E::new(
+            &setting::SLAB_THICKNESS,
+            |s, i| list(&s.building(i).slab_thicknesses_m),
+            |s, t, v| {
+                put(
+                    &mut s.building_mut(t.owner).slab_thicknesses_m,
+                    t.numbers(v),
+                )
+            },
+        ),
+        E::new(
+            &setting::SLAB_YOUNGS_MODULUS,
+            |s, i| list(&s.building(i).slab_youngs_pa),
+            |s, t, v| put(&mut s.building_mut(t.owner).slab_youngs_pa, t.numbers(v)),
+        ),
+        E::new(
+            &setting::GAP,
+            |s, _| number(s.scenario.gap_m),
+            |s, t, v| put(&mut s.scenario.gap_m, t.number(v)),
+        ),
+        E::new(
+            &setting::CONTACT_STIFFNESS,
+            |s, _| s.scenario.stiffness.and_then(number),
+            |s, t, v| put(&mut s.scenario.stiffness, t.number_or_word(v)),
+        ),
+        E::new(
+            &setting::RESTITUTION,
+            |s, _| number(s.scenario.restitution),
+            |s, t, v| put(&mut s.scenario.restitution, t.number(v)),
+        ),
+        E::new(
+            &setting::CONTACT_READING,
+            |s, _| word(s.scenario.reading.name()),
+            |s, t, v| put(&mut s.scenario.reading, t.choice(v, SlabReading::from_name)),
+        ),
+        E::new(
+            &setting::ZONE_LENGTH,
+            |s, _| s.scenario.zone_length_m.and_then(number),
+            |s, t, v| put(&mut s.scenario.zone_length_m, t.number_or_word(v)),
+        ),
+        E::new(
+            &setting::SLAB_DAMPING,
+            |s, _| number(s.scenario.slab_damping),
+            |s, t, v| put(&mut s.scenario.slab_damping, t.number(v)),
+        ),
+        E::new(
+            &setting::MERGE_GAP,
+            |s, _| number(s.scenario.merge_gap_s),
+            |s, t, v| put(&mut s.scenario.merge_gap_s, t.number(v)),
+        ),
+        E::new(
+            &setting::MOTION_FILE,
+            |s, _| word(s.motion.file.as_deref().unwrap_or(SYNTHETIC)),
+            |s, t, v| {
+                let name = t.text(v)?;
+                s.motion
+                    .set_source(name)
+                    .map_err(|e| InputError::new(t.key, e))
+            },
+        ),
+        E::new(
+            &setting::MOTION_UNITS,
+            |s, _| word(s.motion.units.name()),
+            |s, t, v| put(&mut s.motion.units, t.choice(v, Units::from_name)),
+        ),
+        E::new(
+            &setting::MOTION_SCALE,
+            |s, _| number(s.motion.scale),
+            set_motion_scale,
+        ),
+        E::new(
+            &setting::MOTION_DURATION,
+            |s, _| s.motion.duration_s.and_then(number),
+            |s, t, v| put(&mut s.motion.duration_s, t.checked(v).map(Some)),
+        ),
+        E::new(
+            &setting::MOTION_DT,
+            |s, _| s.motion.dt_s.and_then(number),
+            |s, t, v| put(&mut s.motion.dt_s, t.checked(v).map(Some)),
+        ),
+        E::new(
+            &setting::MOTION_PGA,
+            |s, _| number(s.motion.synthetic.pga_g),
+            |s, t, v| put(&mut s.motion.synthetic.pga_g, t.checked(v)),
+        ),
+        E::new(
+            &setting::MOTION_SEED,
+            |s, _| number(s.motion.synthetic.seed as f64),
+            set_motion_seed,
+        ),
+        E::new(
+            &setting::MOTION_LENGTH,
+            |s, _| number(s.motion.synthetic.duration_s),
+            |s, t, v| put(&mut s.motion.synthetic.duration_s, t.checked(v)),
+        ),
+        E::new(
+            &setting::TOLERANCE,
+            |s, _| number(s.scenario.tolerance),
+            |s, t, v| put(&mut s.scenario.tolerance, t.number(v)),
+        ),
+        E::new(
+            &setting::STEPS_PER_SCALE,
+            |s, _| s.scenario.steps_per_scale.and_then(number),
+            |s, t, v| put(&mut s.scenario.steps_per_scale, t.number_or_word(v)),
+        ),
+        E::new(
+            &setting::MAX_STEP,
+            |s, _| number(s.scenario.max_step_s),
+            |s, t, v| put(&mut s.scenario.max_step_s, t.number(v)),
+        ),
+        E::new(
+            &setting::MAX_STEPS,
+            |s, _| number(s.scenario.max_steps as f64),
+            |s, t, v| put(&mut s.scenario.max_steps, t.count(v)),
+        ),
+    ],
+};

@@ -5,4 +5,5 @@ pub mod csv;
 pub mod file;
 pub mod motion;
 pub mod preset;
+pub mod registry;
 pub mod settings;

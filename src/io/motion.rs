@@ -2,8 +2,10 @@
 //! only with a given step), the records built into the program, and the synthetic record. A
 //! malformed file gives an error naming its line.
 
+pub use crate::model::motion::Units;
 use crate::model::motion::synthetic::SyntheticSpec;
 use crate::model::motion::{G, GroundMotion};
+use crate::model::settings::building as setting;
 
 /// A record shipped with the program: its name, what it is, and its text (our header, then
 /// time and acceleration in g).
@@ -81,7 +83,8 @@ pub fn load(spec: &MotionSpec) -> Result<GroundMotion, MotionError> {
     if too_short(&motion) {
         let why = match &spec.file {
             None => format!(
-                "motion.length: {} s is less than two samples of {} s",
+                "{}: {} s is less than two samples of {} s",
+                setting::MOTION_LENGTH.key,
                 crate::model::settings::shown(spec.synthetic.duration_s),
                 crate::model::settings::shown(spec.synthetic.dt_s)
             ),
@@ -96,7 +99,8 @@ pub fn load(spec: &MotionSpec) -> Result<GroundMotion, MotionError> {
                 &motion.name,
                 None,
                 format!(
-                    "motion.duration: {} s leaves fewer than two samples of a record sampled every {} s",
+                    "{}: {} s leaves fewer than two samples of a record sampled every {} s",
+                    setting::MOTION_DURATION.key,
                     crate::model::settings::shown(d),
                     crate::model::settings::shown(motion.dt_s)
                 ),
@@ -110,45 +114,14 @@ pub fn load(spec: &MotionSpec) -> Result<GroundMotion, MotionError> {
                 &motion.name,
                 None,
                 format!(
-                    "motion.scale: {} makes the record overflow",
+                    "{}: {} makes the record overflow",
+                    setting::MOTION_SCALE.key,
                     crate::model::settings::shown(spec.scale)
                 ),
             ));
         }
     }
     Ok(motion)
-}
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Units {
-    G,
-    MetresPerSecond2,
-    CentimetresPerSecond2,
-}
-
-impl Units {
-    pub fn from_name(s: &str) -> Option<Self> {
-        match s {
-            "g" => Some(Units::G),
-            "m/s2" | "m/s^2" => Some(Units::MetresPerSecond2),
-            "cm/s2" | "cm/s^2" | "gal" => Some(Units::CentimetresPerSecond2),
-            _ => None,
-        }
-    }
-    pub fn name(self) -> &'static str {
-        match self {
-            Units::G => "g",
-            Units::MetresPerSecond2 => "m/s2",
-            Units::CentimetresPerSecond2 => "cm/s2",
-        }
-    }
-    pub fn to_m_s2(self) -> f64 {
-        match self {
-            Units::G => G,
-            Units::MetresPerSecond2 => 1.0,
-            Units::CentimetresPerSecond2 => 0.01,
-        }
-    }
 }
 
 /// A record that could not be read: which file, which line, why.
@@ -429,7 +402,11 @@ pub fn parse_text(
         )
     })?;
     if !(dt.is_finite() && dt > 0.0) {
-        return Err(err(source, None, format!("motion.dt = {dt} must be > 0 s")));
+        return Err(err(
+            source,
+            None,
+            format!("{} = {dt} must be > 0 s", setting::MOTION_DT.key),
+        ));
     }
     Ok(GroundMotion {
         name: source.to_string(),

@@ -296,182 +296,18 @@ pub fn load_for<S: Configurable + Default>(
     Ok(setup)
 }
 
-/// A value the program may choose, as TOML: the number as written, or "auto".
-fn or_auto(value: Option<String>) -> String {
-    value.unwrap_or_else(|| "\"auto\"".into())
-}
-
 /// A setup written back as a preset (the inverse of [`apply_text`]): what "save scene" writes
 /// and what the window keeps between sessions.
 pub fn impact_to_toml(setup: &ImpactSetup) -> String {
-    use crate::model::bar::{EndShape, Section};
-    use std::fmt::Write;
-    let sc = &setup.scenario;
-    let mut s = String::new();
-    let _ = writeln!(
-        s,
-        "name = \"saved scene\"\nscene = \"impact\"\nmodel = \"{}\"\n",
-        setup.model.name()
-    );
-    for (name, b) in [("bar1", &sc.bar1), ("bar2", &sc.bar2)] {
-        let _ = writeln!(s, "[{name}]");
-        let _ = writeln!(s, "youngs_modulus = {:e}", b.material.youngs_modulus_pa);
-        let _ = writeln!(s, "poisson_ratio = {:?}", b.material.poisson_ratio);
-        let _ = writeln!(s, "density = {:?}", b.material.density_kg_m3);
-        let _ = writeln!(s, "length = {:?}", b.length_m);
-        match b.section {
-            Section::Circular { radius_m } => writeln!(s, "radius = {radius_m:?}"),
-            Section::Area { area_m2 } => writeln!(s, "area = {area_m2:?}"),
-        }
-        .ok();
-        let _ = writeln!(s, "added_mass = {:?}", b.added_mass_kg);
-        let _ = writeln!(s, "velocity = {:?}", b.velocity_m_s);
-        match b.end {
-            EndShape::Flat => writeln!(s, "end_radius = \"flat\"\n"),
-            EndShape::Rounded { radius_m } => writeln!(s, "end_radius = {radius_m:?}\n"),
-        }
-        .ok();
-    }
-    let c = &sc.contact;
-    let _ = writeln!(s, "[contact]\nlaw = \"{}\"", c.law.name());
-    let _ = writeln!(
-        s,
-        "stiffness = {}",
-        or_auto(c.stiffness.map(|k| format!("{k:e}")))
-    );
-    let _ = writeln!(s, "zone_scale = {:?}", c.zone_scale);
-    let _ = writeln!(
-        s,
-        "zone_length = {}",
-        or_auto(c.zone_length_m.map(|d| format!("{d:?}")))
-    );
-    let _ = writeln!(
-        s,
-        "divisions = {:?}\nrestitution = {:?}\n",
-        c.divisions, c.restitution
-    );
-    let _ = writeln!(s, "[sears]\nreading = \"{}\"\n", sc.reading.name());
-    let v = &sc.solver;
-    let _ = writeln!(
-        s,
-        "[solver]\ndt = {:e}\nwindow = {:?}\nmax_steps = {}\nrefine = {}\n",
-        v.dt_s, v.window_s, v.max_steps, v.refine
-    );
-    let _ = writeln!(
-        s,
-        "[fe]\nsegments = {}\ncourant = {:?}",
-        sc.fe.segments, sc.fe.courant
-    );
-    s
+    super::settings::IMPACT.to_toml(setup, "name = \"saved scene\"\nscene = \"impact\"\n")
 }
 
 /// The building scene written back as a preset.
 pub fn buildings_to_toml(setup: &super::building_settings::BuildingSetup) -> String {
-    use crate::model::building::SlabReading;
-    use std::fmt::Write;
-    let sc = &setup.scenario;
-    let mut s = format!(
-        "name = \"saved building scene\"\nscene = \"buildings\"\ngap = {:?}\n\n",
-        sc.gap_m
-    );
-    // A list as TOML: one value as a number, several as an array.
-    let list = |v: &[f64]| {
-        if v.len() == 1 {
-            format!("{:?}", v[0])
-        } else {
-            format!(
-                "[{}]",
-                v.iter()
-                    .map(|x| format!("{x:?}"))
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            )
-        }
-    };
-    for (i, (name, b)) in [("left", &sc.left), ("right", &sc.right)]
-        .into_iter()
-        .enumerate()
-    {
-        let _ = writeln!(s, "[{name}]\nvelocity = {:?}", sc.initial_velocity_m_s[i]);
-        let _ = writeln!(
-            s,
-            "storeys = {}\nmasses = {}\nstiffnesses = {}\nheights = {}\ndamping_ratio = {:?}",
-            b.storeys,
-            list(&b.masses_kg),
-            list(&b.stiffnesses_n_m),
-            list(&b.heights_m),
-            b.damping_ratio,
-        );
-        match b.damping {
-            crate::model::building::DampingModel::Modal => {
-                let _ = writeln!(s, "damping = \"modal\"");
-            }
-            crate::model::building::DampingModel::Rayleigh { modes: [i, j] } => {
-                let _ = writeln!(s, "damping = \"rayleigh\"\nrayleigh_modes = [{i}, {j}]");
-            }
-        }
-        let _ = writeln!(
-            s,
-            "slab_length = {}\nslab_width = {}\nslab_thickness = {}\nyoungs_modulus = {}\n",
-            list(&b.slab_lengths_m),
-            list(&b.slab_widths_m),
-            list(&b.slab_thicknesses_m),
-            list(&b.slab_youngs_pa),
-        );
-    }
-    let _ = writeln!(s, "[contact]\nmodel = \"{}\"", sc.contact.name());
-    let _ = writeln!(
-        s,
-        "stiffness = {}",
-        or_auto(sc.stiffness.map(|k| format!("{k:e}")))
-    );
-    let _ = writeln!(
-        s,
-        "restitution = {:?}\nreading = \"{}\"",
-        sc.restitution,
-        if sc.reading == SlabReading::Paper {
-            "paper"
-        } else {
-            "end"
-        }
-    );
-    let _ = writeln!(
-        s,
-        "zone_length = {}\n",
-        or_auto(sc.zone_length_m.map(|d| format!("{d:?}")))
-    );
-    let _ = writeln!(
-        s,
-        "[slab]\ndamping = {:?}\n\n[impact]\nmerge_gap_s = {:?}\n",
-        sc.slab_damping, sc.merge_gap_s
-    );
-    let _ = writeln!(
-        s,
-        "[solver]\ntolerance = {:e}\nsteps_per_scale = {}\nmax_step = {:?}\nmax_steps = {}\n",
-        sc.tolerance,
-        or_auto(sc.steps_per_scale.map(|x| format!("{x:?}"))),
-        sc.max_step_s,
-        sc.max_steps
-    );
-    let m = &setup.motion;
-    let _ = writeln!(
-        s,
-        "[motion]\nscale = {:?}\npga = {:?}\nseed = {}\nlength = {:?}",
-        m.scale, m.synthetic.pga_g, m.synthetic.seed, m.synthetic.duration_s
-    );
-    let file = m
-        .file
-        .as_deref()
-        .unwrap_or(super::building_settings::SYNTHETIC);
-    let _ = writeln!(s, "file = {file:?}");
-    if let Some(d) = m.duration_s {
-        let _ = writeln!(s, "duration = {d:?}");
-    }
-    if let Some(d) = m.dt_s {
-        let _ = writeln!(s, "dt = {d:?}");
-    }
-    let _ = writeln!(s, "units = \"{}\"", m.units.name());
-    s
+    super::building_settings::BUILDINGS.to_toml(
+        setup,
+        "name = \"saved building scene\"\nscene = \"buildings\"\n",
+    )
 }
 
 #[cfg(test)]

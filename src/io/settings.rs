@@ -1,14 +1,16 @@
-//! `KEY = VALUE` settings: the one place where named keys meet the scenario. Presets (TOML) and
-//! `--set KEY=VALUE` overrides both go through [`ImpactSetup::apply`], so they accept exactly the
-//! same keys with exactly the same checks.
+//! `KEY = VALUE` settings of an impact: [`IMPACT`], the registry entry of every setting, is the
+//! one place where a setting meets the scenario. Presets (TOML) and `--set KEY=VALUE` overrides
+//! both go through [`ImpactSetup::apply`], so they accept exactly the same keys with exactly the
+//! same checks.
 
-use crate::model::bar::{EndShape, Section};
+use super::registry::{Entry, Registry, number, put, word};
+use crate::model::bar::{Bar, EndShape, Section};
 use crate::model::contact::LawKind;
 use crate::model::error::InputError;
 use crate::model::impact::ModelKind;
 use crate::model::material::MaterialPreset;
 use crate::model::scenario::{ImpactScenario, Reading};
-use crate::model::settings::{self, IMPACT_SETTINGS, Setting};
+use crate::model::settings::impact as setting;
 
 /// A value as typed by a user: TOML gives it typed, the command line as text.
 #[derive(Debug, Clone, PartialEq)]
@@ -69,172 +71,11 @@ impl Default for ImpactSetup {
     }
 }
 
-pub(crate) fn number(key: &str, v: &SettingValue) -> Result<f64, InputError> {
-    match v {
-        SettingValue::Number(x) => Ok(*x),
-        other => Err(InputError::new(
-            key,
-            format!("expected a number, got {}", other.describe()),
-        )),
-    }
-}
-
-/// One number or a list of them.
-pub(crate) fn numbers(key: &str, v: &SettingValue) -> Result<Vec<f64>, InputError> {
-    match v {
-        SettingValue::Number(x) => Ok(vec![*x]),
-        SettingValue::List(xs) if !xs.is_empty() => Ok(xs.clone()),
-        other => Err(InputError::new(
-            key,
-            format!(
-                "expected a number or numbers separated by commas, got {}",
-                other.describe()
-            ),
-        )),
-    }
-}
-
-pub(crate) fn text<'a>(key: &str, v: &'a SettingValue) -> Result<&'a str, InputError> {
-    match v {
-        SettingValue::Text(s) => Ok(s),
-        other => Err(InputError::new(
-            key,
-            format!("expected a word, got {}", other.describe()),
-        )),
-    }
-}
-
-pub(crate) fn count(key: &str, v: &SettingValue) -> Result<usize, InputError> {
-    let x = number(key, v)?;
-    if x.is_finite() && x >= 0.0 && x.fract() == 0.0 && x <= 1e15 {
-        Ok(x as usize)
-    } else {
-        Err(InputError::new(
-            key,
-            format!(
-                "expected a whole number >= 0, got {}",
-                crate::model::settings::shown(x)
-            ),
-        ))
-    }
-}
-
-pub(crate) fn choice<T: Copy>(
-    table: &'static [Setting],
-    key: &str,
-    v: &SettingValue,
-    parse: impl Fn(&str) -> Option<T>,
-) -> Result<T, InputError> {
-    let s = text(key, v)?;
-    parse(s).ok_or_else(|| {
-        // The accepted values are the key's row of the settings table, as `--list-keys` shows.
-        let allowed = settings::find(table, key)
-            .and_then(|row| row.choices())
-            .map_or_else(String::new, |options| options.join("|"));
-        InputError::new(key, format!("unknown value '{s}': allowed {allowed}"))
-    })
-}
-
 impl ImpactSetup {
     /// Sets one key. Unknown keys and ill-typed values are errors naming the key; range checks
     /// happen in [`ImpactScenario::validate`] so that they see the final combination.
     pub fn apply(&mut self, key: &str, value: &SettingValue) -> Result<(), InputError> {
-        let sc = &mut self.scenario;
-        if key == "model" {
-            self.model = choice(IMPACT_SETTINGS, key, value, ModelKind::from_name)?;
-            return Ok(());
-        }
-        if let Some((bar_name, field)) = key.split_once('.')
-            && (bar_name == "bar1" || bar_name == "bar2")
-        {
-            let bar = if bar_name == "bar1" {
-                &mut sc.bar1
-            } else {
-                &mut sc.bar2
-            };
-            match field {
-                "material" => {
-                    bar.material = choice(IMPACT_SETTINGS, key, value, |s| {
-                        MaterialPreset::from_name(s).map(|m| m.material())
-                    })?
-                }
-                "youngs_modulus" => bar.material.youngs_modulus_pa = number(key, value)?,
-                "poisson_ratio" => bar.material.poisson_ratio = number(key, value)?,
-                "density" => bar.material.density_kg_m3 = number(key, value)?,
-                "length" => bar.length_m = number(key, value)?,
-                "radius" => {
-                    bar.section = Section::Circular {
-                        radius_m: number(key, value)?,
-                    }
-                }
-                "area" => {
-                    bar.section = Section::Area {
-                        area_m2: number(key, value)?,
-                    }
-                }
-                "added_mass" => bar.added_mass_kg = number(key, value)?,
-                "velocity" => bar.velocity_m_s = number(key, value)?,
-                "end_radius" => {
-                    bar.end = match value {
-                        SettingValue::Text(s) if s == "flat" => EndShape::Flat,
-                        SettingValue::Number(r) => EndShape::Rounded { radius_m: *r },
-                        other => {
-                            return Err(InputError::new(
-                                key,
-                                format!("expected a radius in m or flat, got {}", other.describe()),
-                            ));
-                        }
-                    }
-                }
-                _ => return Err(unknown(key)),
-            }
-            return Ok(());
-        }
-        match key {
-            "contact.law" => {
-                sc.contact.law = choice(IMPACT_SETTINGS, key, value, |s| {
-                    [LawKind::Hertz, LawKind::Linear]
-                        .into_iter()
-                        .find(|l| l.name() == s)
-                })?
-            }
-            "contact.stiffness" => {
-                sc.contact.stiffness = match value {
-                    SettingValue::Text(s) if s == "auto" => None,
-                    other => Some(number(key, other)?),
-                }
-            }
-            "contact.zone_scale" => sc.contact.zone_scale = number(key, value)?,
-            "contact.zone_length" => {
-                sc.contact.zone_length_m = match value {
-                    SettingValue::Text(s) if s == "auto" => None,
-                    other => Some(number(key, other)?),
-                }
-            }
-            "contact.divisions" => sc.contact.divisions = number(key, value)?,
-            "contact.restitution" => sc.contact.restitution = number(key, value)?,
-            "sears.reading" => {
-                sc.reading = choice(IMPACT_SETTINGS, key, value, Reading::from_name)?
-            }
-            "solver.dt" => sc.solver.dt_s = number(key, value)?,
-            "solver.window" => sc.solver.window_s = number(key, value)?,
-            "solver.max_steps" => sc.solver.max_steps = count(key, value)?,
-            "solver.refine" => {
-                sc.solver.refine = match value {
-                    SettingValue::Bool(b) => *b,
-                    other => {
-                        return Err(InputError::new(
-                            key,
-                            format!("expected true or false, got {}", other.describe()),
-                        ));
-                    }
-                }
-            }
-            "fe.segments" => sc.fe.segments = count(key, value)?,
-            "fe.courant" => sc.fe.courant = number(key, value)?,
-            _ => return Err(unknown(key)),
-        }
-        Ok(())
+        IMPACT.apply(self, key, value)
     }
 
     /// Applies `KEY=VALUE` text from the command line.
@@ -244,18 +85,180 @@ impl ImpactSetup {
         })?;
         self.apply(key.trim(), &SettingValue::from_cli(value))
     }
+
+    /// Bar `i` (0: bar1, the left one).
+    pub fn bar(&self, i: usize) -> &Bar {
+        [&self.scenario.bar1, &self.scenario.bar2][i]
+    }
+
+    /// Bar `i`, to change.
+    pub fn bar_mut(&mut self, i: usize) -> &mut Bar {
+        let sc = &mut self.scenario;
+        if i == 0 { &mut sc.bar1 } else { &mut sc.bar2 }
+    }
 }
 
-fn unknown(key: &str) -> InputError {
-    let known: Vec<&str> = crate::model::settings::IMPACT_SETTINGS
-        .iter()
-        .map(|s| s.key)
-        .collect();
-    InputError::new(
-        key,
-        format!(
-            "unknown key; known keys: {} (barN is bar1 or bar2)",
-            known.join(", ")
+type E = Entry<ImpactSetup>;
+
+/// Every setting of an impact, in the order of the settings table.
+pub static IMPACT: Registry<ImpactSetup> = Registry {
+    placeholders: "barN is bar1 or bar2",
+    entries: &[
+        E::new(
+            &setting::MODEL,
+            |s, _| word(s.model.name()),
+            |s, t, v| put(&mut s.model, t.choice(v, ModelKind::from_name)),
         ),
-    )
-}
+        // A material is not kept: it sets E, nu and rho, which are saved and shown instead.
+        E::new(
+            &setting::MATERIAL,
+            |_, _| None,
+            |s, t, v| {
+                let material = t.choice(v, MaterialPreset::from_name)?.material();
+                s.bar_mut(t.owner).material = material;
+                Ok(())
+            },
+        ),
+        E::new(
+            &setting::YOUNGS_MODULUS,
+            |s, i| number(s.bar(i).material.youngs_modulus_pa),
+            |s, t, v| {
+                put(
+                    &mut s.bar_mut(t.owner).material.youngs_modulus_pa,
+                    t.number(v),
+                )
+            },
+        ),
+        E::new(
+            &setting::POISSON_RATIO,
+            |s, i| number(s.bar(i).material.poisson_ratio),
+            |s, t, v| put(&mut s.bar_mut(t.owner).material.poisson_ratio, t.number(v)),
+        ),
+        E::new(
+            &setting::DENSITY,
+            |s, i| number(s.bar(i).material.density_kg_m3),
+            |s, t, v| put(&mut s.bar_mut(t.owner).material.density_kg_m3, t.number(v)),
+        ),
+        E::new(
+            &setting::LENGTH,
+            |s, i| number(s.bar(i).length_m),
+            |s, t, v| put(&mut s.bar_mut(t.owner).length_m, t.number(v)),
+        ),
+        E::new(
+            &setting::RADIUS,
+            |s, i| match s.bar(i).section {
+                Section::Circular { radius_m } => number(radius_m),
+                Section::Area { .. } => None,
+            },
+            |s, t, v| {
+                let radius_m = t.number(v)?;
+                s.bar_mut(t.owner).section = Section::Circular { radius_m };
+                Ok(())
+            },
+        ),
+        E::new(
+            &setting::AREA,
+            |s, i| match s.bar(i).section {
+                Section::Area { area_m2 } => number(area_m2),
+                Section::Circular { .. } => None,
+            },
+            |s, t, v| {
+                let area_m2 = t.number(v)?;
+                s.bar_mut(t.owner).section = Section::Area { area_m2 };
+                Ok(())
+            },
+        )
+        .derived(|s, i| Some(s.bar(i).area_m2())),
+        E::new(
+            &setting::ADDED_MASS,
+            |s, i| number(s.bar(i).added_mass_kg),
+            |s, t, v| put(&mut s.bar_mut(t.owner).added_mass_kg, t.number(v)),
+        ),
+        E::new(
+            &setting::VELOCITY,
+            |s, i| number(s.bar(i).velocity_m_s),
+            |s, t, v| put(&mut s.bar_mut(t.owner).velocity_m_s, t.number(v)),
+        ),
+        E::new(
+            &setting::END_RADIUS,
+            |s, i| match s.bar(i).end {
+                EndShape::Rounded { radius_m } => number(radius_m),
+                EndShape::Flat => setting::END_RADIUS.word().and_then(word),
+            },
+            |s, t, v| {
+                let end = match v {
+                    SettingValue::Number(r) => EndShape::Rounded { radius_m: *r },
+                    SettingValue::Text(w) if Some(w.as_str()) == t.setting.word() => EndShape::Flat,
+                    other => return Err(t.expected("a radius in m or flat", other)),
+                };
+                s.bar_mut(t.owner).end = end;
+                Ok(())
+            },
+        ),
+        E::new(
+            &setting::CONTACT_LAW,
+            |s, _| word(s.scenario.contact.law.name()),
+            |s, t, v| put(&mut s.scenario.contact.law, t.choice(v, LawKind::from_name)),
+        ),
+        E::new(
+            &setting::CONTACT_STIFFNESS,
+            |s, _| s.scenario.contact.stiffness.and_then(number),
+            |s, t, v| put(&mut s.scenario.contact.stiffness, t.number_or_word(v)),
+        ),
+        E::new(
+            &setting::ZONE_SCALE,
+            |s, _| number(s.scenario.contact.zone_scale),
+            |s, t, v| put(&mut s.scenario.contact.zone_scale, t.number(v)),
+        ),
+        E::new(
+            &setting::ZONE_LENGTH,
+            |s, _| s.scenario.contact.zone_length_m.and_then(number),
+            |s, t, v| put(&mut s.scenario.contact.zone_length_m, t.number_or_word(v)),
+        ),
+        E::new(
+            &setting::DIVISIONS,
+            |s, _| number(s.scenario.contact.divisions),
+            |s, t, v| put(&mut s.scenario.contact.divisions, t.number(v)),
+        ),
+        E::new(
+            &setting::RESTITUTION,
+            |s, _| number(s.scenario.contact.restitution),
+            |s, t, v| put(&mut s.scenario.contact.restitution, t.number(v)),
+        ),
+        E::new(
+            &setting::SEARS_READING,
+            |s, _| word(s.scenario.reading.name()),
+            |s, t, v| put(&mut s.scenario.reading, t.choice(v, Reading::from_name)),
+        ),
+        E::new(
+            &setting::DT,
+            |s, _| number(s.scenario.solver.dt_s),
+            |s, t, v| put(&mut s.scenario.solver.dt_s, t.number(v)),
+        ),
+        E::new(
+            &setting::WINDOW,
+            |s, _| number(s.scenario.solver.window_s),
+            |s, t, v| put(&mut s.scenario.solver.window_s, t.number(v)),
+        ),
+        E::new(
+            &setting::MAX_STEPS,
+            |s, _| number(s.scenario.solver.max_steps as f64),
+            |s, t, v| put(&mut s.scenario.solver.max_steps, t.count(v)),
+        ),
+        E::new(
+            &setting::REFINE,
+            |s, _| Some(SettingValue::Bool(s.scenario.solver.refine)),
+            |s, t, v| put(&mut s.scenario.solver.refine, t.boolean(v)),
+        ),
+        E::new(
+            &setting::FE_SEGMENTS,
+            |s, _| number(s.scenario.fe.segments as f64),
+            |s, t, v| put(&mut s.scenario.fe.segments, t.count(v)),
+        ),
+        E::new(
+            &setting::FE_COURANT,
+            |s, _| number(s.scenario.fe.courant),
+            |s, t, v| put(&mut s.scenario.fe.courant, t.number(v)),
+        ),
+    ],
+};

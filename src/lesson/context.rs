@@ -8,13 +8,13 @@
 
 use super::LessonScene;
 use super::expr::{ExprError, Value};
-use crate::io::building_settings::BuildingSetup;
-use crate::io::settings::ImpactSetup;
-use crate::model::bar::{EndShape, Section};
+use crate::io::building_settings::{BUILDINGS, BuildingSetup};
+use crate::io::registry::uniform;
+use crate::io::settings::{IMPACT, ImpactSetup, SettingValue};
+use crate::model::building::BuildingResult;
 use crate::model::building::gaps::{GapAssessment, assess};
-use crate::model::building::{BuildingResult, DampingModel, SlabReading};
 use crate::model::impact::{ImpactResult, ModelKind};
-use crate::model::settings::{BUILDING_SETTINGS, IMPACT_SETTINGS, concrete_keys};
+use crate::model::settings::{BUILDING_SETTINGS, IMPACT_SETTINGS, Kind, Setting, concrete_keys};
 use std::collections::{BTreeMap, BTreeSet};
 
 /// The models the compare scene solves (its lead, the setup's model, is one of them).
@@ -424,128 +424,26 @@ impl Context {
 }
 
 /// The value of one impact setting as the setup holds it (`None` where it has no number or
-/// word: a flat end's radius, an automatic stiffness).
+/// word: an automatic stiffness, a list whose storeys differ).
 pub fn impact_setting(setup: &ImpactSetup, key: &str) -> Option<Value> {
-    let sc = &setup.scenario;
-    let n = |x: f64| Some(Value::Number(x));
-    if let Some((bar, field)) = key.split_once('.')
-        && (bar == "bar1" || bar == "bar2")
-    {
-        let b = if bar == "bar1" { &sc.bar1 } else { &sc.bar2 };
-        return match field {
-            "youngs_modulus" => n(b.material.youngs_modulus_pa),
-            "poisson_ratio" => n(b.material.poisson_ratio),
-            "density" => n(b.material.density_kg_m3),
-            "length" => n(b.length_m),
-            "radius" => match b.section {
-                Section::Circular { radius_m } => n(radius_m),
-                Section::Area { .. } => None,
-            },
-            "area" => n(b.area_m2()),
-            "added_mass" => n(b.added_mass_kg),
-            "velocity" => n(b.velocity_m_s),
-            "end_radius" => match b.end {
-                EndShape::Rounded { radius_m } => n(radius_m),
-                EndShape::Flat => Some(Value::Text("flat".into())),
-            },
-            _ => None,
-        };
-    }
-    let c = &sc.contact;
-    match key {
-        "model" => Some(Value::Text(setup.model.name().into())),
-        "contact.law" => Some(Value::Text(c.law.name().into())),
-        "contact.stiffness" => c.stiffness.and_then(n),
-        "contact.zone_scale" => n(c.zone_scale),
-        "contact.zone_length" => c.zone_length_m.and_then(n),
-        "contact.divisions" => n(c.divisions),
-        "contact.restitution" => n(c.restitution),
-        "sears.reading" => Some(Value::Text(sc.reading.name().into())),
-        "solver.dt" => n(sc.solver.dt_s),
-        "solver.window" => n(sc.solver.window_s),
-        "solver.max_steps" => n(sc.solver.max_steps as f64),
-        "solver.refine" => Some(Value::Bool(sc.solver.refine)),
-        "fe.segments" => n(sc.fe.segments as f64),
-        "fe.courant" => n(sc.fe.courant),
-        _ => None,
-    }
-}
-
-/// One number for every storey: the value where all storeys share it.
-fn uniform(values: &[f64]) -> Option<Value> {
-    let first = *values.first()?;
-    values
-        .iter()
-        .all(|v| *v == first)
-        .then_some(Value::Number(first))
+    IMPACT.shown(setup, key).and_then(lesson_value)
 }
 
 /// The value of one building setting as the setup holds it.
 pub fn building_setting(setup: &BuildingSetup, key: &str) -> Option<Value> {
-    let sc = &setup.scenario;
-    let n = |x: f64| Some(Value::Number(x));
-    if let Some((side, field)) = key.split_once('.')
-        && (side == "left" || side == "right")
-    {
-        let (b, i) = if side == "left" {
-            (&sc.left, 0)
-        } else {
-            (&sc.right, 1)
-        };
-        return match field {
-            "storeys" => n(b.storeys as f64),
-            "masses" | "mass" => uniform(&b.masses_kg),
-            "stiffnesses" | "stiffness" => uniform(&b.stiffnesses_n_m),
-            "heights" | "height" => uniform(&b.heights_m),
-            "period" => b.modes().periods_s().first().copied().and_then(n),
-            "damping_ratio" => n(b.damping_ratio),
-            "damping" => Some(Value::Text(
-                match b.damping {
-                    DampingModel::Modal => "modal",
-                    DampingModel::Rayleigh { .. } => "rayleigh",
-                }
-                .into(),
-            )),
-            "velocity" => n(sc.initial_velocity_m_s[i]),
-            "slab_length" => uniform(&b.slab_lengths_m),
-            "slab_width" => uniform(&b.slab_widths_m),
-            "slab_thickness" => uniform(&b.slab_thicknesses_m),
-            "youngs_modulus" => uniform(&b.slab_youngs_pa),
+    BUILDINGS.shown(setup, key).and_then(lesson_value)
+}
+
+/// A setting's value as an expression reads it: a per-storey list as the one value all its
+/// storeys share; no other list has a value (Rayleigh damping's two modes).
+fn lesson_value((setting, value): (&Setting, SettingValue)) -> Option<Value> {
+    match value {
+        SettingValue::Number(x) => Some(Value::Number(x)),
+        SettingValue::Bool(b) => Some(Value::Bool(b)),
+        SettingValue::Text(t) => Some(Value::Text(t)),
+        SettingValue::List(xs) => match setting.kind {
+            Kind::List { .. } => uniform(&xs).map(Value::Number),
             _ => None,
-        };
-    }
-    let m = &setup.motion;
-    match key {
-        "gap" => n(sc.gap_m),
-        "contact.model" => Some(Value::Text(sc.contact.name().into())),
-        "contact.stiffness" => sc.stiffness.and_then(n),
-        "contact.restitution" => n(sc.restitution),
-        "contact.reading" => Some(Value::Text(
-            match sc.reading {
-                SlabReading::Paper => "paper",
-                SlabReading::End => "end",
-            }
-            .into(),
-        )),
-        "contact.zone_length" => sc.zone_length_m.and_then(n),
-        "slab.damping" => n(sc.slab_damping),
-        "impact.merge_gap_s" => n(sc.merge_gap_s),
-        "motion.file" => {
-            Some(Value::Text(m.file.clone().unwrap_or_else(|| {
-                crate::io::building_settings::SYNTHETIC.into()
-            })))
-        }
-        "motion.units" => Some(Value::Text(m.units.name().into())),
-        "motion.scale" => n(m.scale),
-        "motion.duration" => m.duration_s.and_then(n),
-        "motion.dt" => m.dt_s.and_then(n),
-        "motion.pga" => n(m.synthetic.pga_g),
-        "motion.seed" => n(m.synthetic.seed as f64),
-        "motion.length" => n(m.synthetic.duration_s),
-        "solver.tolerance" => n(sc.tolerance),
-        "solver.steps_per_scale" => sc.steps_per_scale.and_then(n),
-        "solver.max_step" => n(sc.max_step_s),
-        "solver.max_steps" => n(sc.max_steps as f64),
-        _ => None,
+        },
     }
 }

@@ -24,12 +24,22 @@ pub enum LawKind {
 }
 
 impl LawKind {
+    /// Every law.
+    pub const ALL: [LawKind; 2] = [LawKind::Hertz, LawKind::Linear];
+    /// Every law's name, in the order of [`LawKind::ALL`].
+    pub const NAMES: [&'static str; 2] = crate::model::names_of!(Self::ALL, 2);
+
     /// The name presets and the command line use.
-    pub fn name(self) -> &'static str {
+    pub const fn name(self) -> &'static str {
         match self {
             LawKind::Hertz => "hertz",
             LawKind::Linear => "linear",
         }
+    }
+
+    /// The law of that name.
+    pub fn from_name(s: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|l| l.name() == s)
     }
 }
 

@@ -25,8 +25,11 @@ impl MaterialPreset {
     /// Every preset.
     pub const ALL: [MaterialPreset; 2] = [MaterialPreset::Steel, MaterialPreset::Concrete];
 
+    /// Every preset's name, in the order of [`MaterialPreset::ALL`].
+    pub const NAMES: [&'static str; 2] = crate::model::names_of!(Self::ALL, 2);
+
     /// The name presets and the command line use.
-    pub fn name(self) -> &'static str {
+    pub const fn name(self) -> &'static str {
         match self {
             MaterialPreset::Steel => "steel",
             MaterialPreset::Concrete => "concrete",

@@ -2,6 +2,21 @@
 
 #![warn(missing_docs)]
 
+/// The names of an enum's variants in the order of its `ALL`, as a const array: each enum's
+/// `name()` is the one place a name is written, and the settings table's choices are this array.
+macro_rules! names_of {
+    ($all:expr, $n:literal) => {{
+        let mut names = [""; $n];
+        let mut i = 0;
+        while i < $n {
+            names[i] = $all[i].name();
+            i += 1;
+        }
+        names
+    }};
+}
+pub(crate) use names_of;
+
 pub mod bar;
 pub mod building;
 pub mod contact;

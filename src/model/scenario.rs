@@ -6,7 +6,7 @@ use super::contact::{
     ContactLaw, LawKind, PAPER_DIVISIONS, hertz_stiffness, paper_linear_stiffness,
 };
 use super::material::MaterialPreset;
-use super::settings::Range;
+use super::settings::{Setting, impact};
 
 /// Which reading of the Sears model (docs/model.md, "Three readings").
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -22,8 +22,10 @@ pub enum Reading {
 impl Reading {
     /// Every reading.
     pub const ALL: [Reading; 3] = [Reading::Paper, Reading::Collocated, Reading::End];
+    /// Every reading's name, in the order of [`Reading::ALL`].
+    pub const NAMES: [&'static str; 3] = crate::model::names_of!(Self::ALL, 3);
     /// The name presets and the command line use.
-    pub fn name(self) -> &'static str {
+    pub const fn name(self) -> &'static str {
         match self {
             Reading::Paper => "paper",
             Reading::Collocated => "collocated",
@@ -139,24 +141,19 @@ impl Default for ImpactScenario {
 
 pub use super::error::InputError;
 
-/// A value checked against its row of the impact settings table.
-fn check(field: &str, value: f64) -> Result<(), InputError> {
-    super::settings::check(super::settings::IMPACT_SETTINGS, field, value)
-}
-
-/// The checked settings of a bar, by their names under `bar1.` / `bar2.`; [`bar_values`] gives
-/// the values in this order (`None` where the bar has no such value: a radius for a bar given
-/// by its area, an end radius for a flat end).
-const BAR_KEYS: [&str; 9] = [
-    "youngs_modulus",
-    "poisson_ratio",
-    "density",
-    "length",
-    "radius",
-    "area",
-    "added_mass",
-    "velocity",
-    "end_radius",
+/// The checked settings of a bar; [`bar_values`] gives the values in this order (`None` where
+/// the bar has no such value: a radius for a bar given by its area, an end radius for a flat
+/// end).
+const BAR_CHECKED: [&Setting; 9] = [
+    &impact::YOUNGS_MODULUS,
+    &impact::POISSON_RATIO,
+    &impact::DENSITY,
+    &impact::LENGTH,
+    &impact::RADIUS,
+    &impact::AREA,
+    &impact::ADDED_MASS,
+    &impact::VELOCITY,
+    &impact::END_RADIUS,
 ];
 
 fn bar_values(bar: &Bar) -> [Option<f64>; 9] {
@@ -182,45 +179,35 @@ fn bar_values(bar: &Bar) -> [Option<f64>; 9] {
 }
 
 /// The other checked settings; [`ImpactScenario::other_values`] gives them in this order.
-const OTHER_KEYS: [&str; 10] = [
-    "contact.stiffness",
-    "contact.zone_scale",
-    "contact.zone_length",
-    "contact.divisions",
-    "contact.restitution",
-    "solver.dt",
-    "solver.window",
-    "solver.max_steps",
-    "fe.segments",
-    "fe.courant",
+const OTHER_CHECKED: [&Setting; 10] = [
+    &impact::CONTACT_STIFFNESS,
+    &impact::ZONE_SCALE,
+    &impact::ZONE_LENGTH,
+    &impact::DIVISIONS,
+    &impact::RESTITUTION,
+    &impact::DT,
+    &impact::WINDOW,
+    &impact::MAX_STEPS,
+    &impact::FE_SEGMENTS,
+    &impact::FE_COURANT,
 ];
 
-/// The ranges of [`BAR_KEYS`] and [`OTHER_KEYS`], read from the settings table once per process.
-fn checked_ranges() -> &'static ([Range; 9], [Range; 10]) {
-    static RANGES: std::sync::OnceLock<([Range; 9], [Range; 10])> = std::sync::OnceLock::new();
-    RANGES.get_or_init(|| {
-        let range = |key: &str| {
-            super::settings::find(super::settings::IMPACT_SETTINGS, key)
-                .and_then(|s| s.range())
-                .unwrap_or_else(|| panic!("the settings table gives {key} a range"))
-        };
-        (
-            BAR_KEYS.map(|k| range(&format!("bar1.{k}"))),
-            OTHER_KEYS.map(range),
-        )
-    })
-}
-
-/// Whether every present value lies in its range.
-fn all_in(ranges: &[Range], values: &[Option<f64>]) -> bool {
-    ranges
-        .iter()
-        .zip(values)
-        .all(|(r, v)| v.is_none_or(|x| r.contains(x)))
+/// Every present value checked against its setting's range; the first refused names its key.
+fn check_all(
+    settings: &[&Setting],
+    owner: usize,
+    values: &[Option<f64>],
+) -> Result<(), InputError> {
+    for (s, v) in settings.iter().zip(values) {
+        if let Some(x) = v {
+            s.check_at(owner, *x)?;
+        }
+    }
+    Ok(())
 }
 
 impl ImpactScenario {
-    /// The values of [`OTHER_KEYS`], in its order.
+    /// The values of [`OTHER_CHECKED`], in its order.
     fn other_values(&self) -> [Option<f64>; 10] {
         [
             self.contact.stiffness,
@@ -236,31 +223,12 @@ impl ImpactScenario {
         ]
     }
 
-    /// Checks every value against its range in the settings table; the error names the key. A
-    /// sweep's thousand solves take the quick look first; the key-naming check runs only where
-    /// it fails.
+    /// Checks every value against its range in the settings table; the error names the key
+    /// (spelled out only then: a sweep's thousand solves run this).
     pub fn validate(&self) -> Result<(), InputError> {
-        let (bar_ranges, other_ranges) = checked_ranges();
-        let others = self.other_values();
-        if all_in(bar_ranges, &bar_values(&self.bar1))
-            && all_in(bar_ranges, &bar_values(&self.bar2))
-            && all_in(other_ranges, &others)
-        {
-            return Ok(());
-        }
-        for (owner, bar) in [("bar1", &self.bar1), ("bar2", &self.bar2)] {
-            for (name, value) in BAR_KEYS.iter().zip(bar_values(bar)) {
-                if let Some(v) = value {
-                    super::settings::check_of(super::settings::IMPACT_SETTINGS, owner, name, v)?;
-                }
-            }
-        }
-        for (key, value) in OTHER_KEYS.iter().zip(others) {
-            if let Some(v) = value {
-                check(key, v)?;
-            }
-        }
-        Ok(())
+        check_all(&BAR_CHECKED, 0, &bar_values(&self.bar1))?;
+        check_all(&BAR_CHECKED, 1, &bar_values(&self.bar2))?;
+        check_all(&OTHER_CHECKED, 0, &self.other_values())
     }
 
     /// Relative approach velocity v1 - v2 [m/s].
@@ -297,7 +265,7 @@ impl ImpactScenario {
             .map(ContactLaw::hertz)
             .ok_or_else(|| {
                 InputError::new(
-                    "bar1.end_radius",
+                    impact::END_RADIUS.key_of(0),
                     "a Hertz contact needs a rounded end on at least one bar; both ends are flat",
                 )
             })

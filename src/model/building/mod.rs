@@ -65,8 +65,11 @@ impl ContactModel {
         ContactModel::Stereo,
         ContactModel::None,
     ];
+    /// Every element's name, in the order of [`ContactModel::ALL`].
+    pub const NAMES: [&'static str; 8] = crate::model::names_of!(Self::ALL, 8);
+
     /// The name the command line and presets use.
-    pub fn name(self) -> &'static str {
+    pub const fn name(self) -> &'static str {
         match self {
             ContactModel::Sears => "sears",
             ContactModel::Linear => "linear",
@@ -109,4 +112,24 @@ pub enum SlabReading {
     Paper,
     /// The law at the slab ends (d -> 0).
     End,
+}
+
+impl SlabReading {
+    /// Both readings.
+    pub const ALL: [SlabReading; 2] = [SlabReading::Paper, SlabReading::End];
+    /// Their names, in the order of [`SlabReading::ALL`].
+    pub const NAMES: [&'static str; 2] = crate::model::names_of!(Self::ALL, 2);
+
+    /// The name presets and the command line use.
+    pub const fn name(self) -> &'static str {
+        match self {
+            SlabReading::Paper => "paper",
+            SlabReading::End => "end",
+        }
+    }
+
+    /// The reading of that name.
+    pub fn from_name(s: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|r| r.name() == s)
+    }
 }

@@ -37,6 +37,32 @@ pub enum DampingModel {
     },
 }
 
+impl DampingModel {
+    /// Both models, Rayleigh with its default modes 1 and 2.
+    pub const ALL: [DampingModel; 2] = [
+        DampingModel::Modal,
+        DampingModel::Rayleigh { modes: [1, 2] },
+    ];
+    /// Their names, in the order of [`DampingModel::ALL`].
+    pub const NAMES: [&'static str; 2] = crate::model::names_of!(Self::ALL, 2);
+
+    /// The name presets and the command line use.
+    pub const fn name(self) -> &'static str {
+        match self {
+            DampingModel::Modal => "modal",
+            DampingModel::Rayleigh { .. } => "rayleigh",
+        }
+    }
+
+    /// The model of that name; Rayleigh damping keeps `modes`.
+    pub fn from_name(s: &str, modes: [usize; 2]) -> Option<Self> {
+        match Self::ALL.into_iter().find(|d| d.name() == s)? {
+            DampingModel::Rayleigh { .. } => Some(DampingModel::Rayleigh { modes }),
+            modal => Some(modal),
+        }
+    }
+}
+
 impl Modes {
     /// The modes of floors with `masses` [kg] over storeys of `stiffnesses` [N/m], damped by
     /// `zeta` as `model` says.

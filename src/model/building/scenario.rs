@@ -6,6 +6,7 @@ use super::modal::{DampingModel, Modes};
 use super::{ContactModel, SlabReading};
 use crate::model::contact::{PAPER_DIVISIONS, REFERENCE_OVERLAP_M};
 use crate::model::error::InputError;
+use crate::model::settings::{SIDES, building as setting};
 
 /// Concrete of the paper's slabs: E = 25 GPa (its contact stiffness, 15 GN/m, follows from it).
 pub const SLAB_YOUNGS_MODULUS_PA: f64 = 25e9;
@@ -345,99 +346,121 @@ impl BuildingScenario {
 
     /// Checks every value against its range in the settings table; the error names the key.
     pub fn validate(&self) -> Result<(), InputError> {
-        use crate::model::settings::{BUILDING_SETTINGS, check};
-        let check = |field: &str, v: f64| check(BUILDING_SETTINGS, field, v);
-        for (name, b) in [("left", &self.left), ("right", &self.right)] {
-            check(&format!("{name}.storeys"), b.storeys as f64)?;
-            for (key, list) in [
-                ("masses", &b.masses_kg),
-                ("stiffnesses", &b.stiffnesses_n_m),
-                ("heights", &b.heights_m),
-                ("slab_length", &b.slab_lengths_m),
-                ("slab_width", &b.slab_widths_m),
-                ("slab_thickness", &b.slab_thicknesses_m),
-                ("youngs_modulus", &b.slab_youngs_pa),
-            ] {
-                let field = format!("{name}.{key}");
-                if list.len() != 1 && list.len() != b.storeys {
+        for (i, b) in [&self.left, &self.right].into_iter().enumerate() {
+            b.validate(i)?;
+        }
+        setting::GAP.check_at(0, self.gap_m)?;
+        if let Some(k) = self.stiffness {
+            setting::CONTACT_STIFFNESS.check_at(0, k)?;
+        }
+        setting::RESTITUTION.check_at(0, self.restitution)?;
+        if let Some(d) = self.zone_length_m {
+            setting::ZONE_LENGTH.check_at(0, d)?;
+        }
+        self.zone_fits_the_slabs()?;
+        setting::SLAB_DAMPING.check_at(0, self.slab_damping)?;
+        setting::MERGE_GAP.check_at(0, self.merge_gap_s)?;
+        setting::TOLERANCE.check_at(0, self.tolerance)?;
+        if let Some(s) = self.steps_per_scale {
+            setting::STEPS_PER_SCALE.check_at(0, s)?;
+        }
+        setting::MAX_STEP.check_at(0, self.max_step_s)?;
+        setting::MAX_STEPS.check_at(0, self.max_steps as f64)?;
+        for (i, v) in self.initial_velocity_m_s.into_iter().enumerate() {
+            setting::VELOCITY.check_at(i, v)?;
+        }
+        Ok(())
+    }
+
+    /// The paper reading puts the law a zone length inside each slab: a zone longer than the
+    /// slab's round trip would read the law outside it.
+    fn zone_fits_the_slabs(&self) -> Result<(), InputError> {
+        if !(self.contact == ContactModel::Sears && self.reading == SlabReading::Paper) {
+            return Ok(());
+        }
+        for level in self.levels() {
+            let d = self.level_zone_length(&level);
+            for (name, slab) in SIDES.iter().zip(self.level_slabs(&level)) {
+                if let Some((s, _)) = slab
+                    && d >= 2.0 * s.length_m
+                {
                     return Err(InputError::new(
-                        field,
+                        setting::ZONE_LENGTH.key,
                         format!(
-                            "{} values for {} storeys: give one value for every storey, or {}",
-                            list.len(),
-                            b.storeys,
-                            b.storeys
+                            "{d} m is not allowed: the paper reading needs d < 2 L = {} m of the {name} slab",
+                            2.0 * s.length_m
                         ),
                     ));
                 }
-                for &v in list.iter() {
-                    check(&field, v)?;
-                }
             }
-            check(&format!("{name}.damping_ratio"), b.damping_ratio)?;
-            spread_of_modes(name, b)?;
-            // One storey has one mode, which Rayleigh damping gives the ratio: only the default
-            // pair 1,2 is meaningful there, and any other pair would be silently ignored.
-            if let DampingModel::Rayleigh { modes: [i, j] } = b.damping
-                && b.storeys == 1
-                && !matches!((i, j), (1, 2) | (2, 1))
-            {
+        }
+        Ok(())
+    }
+}
+
+impl Building {
+    /// Checks the building's values against the settings table; `side` is 0 for the left one.
+    fn validate(&self, side: usize) -> Result<(), InputError> {
+        let b = self;
+        setting::STOREYS.check_at(side, b.storeys as f64)?;
+        for (setting, list) in [
+            (&setting::MASSES, &b.masses_kg),
+            (&setting::STIFFNESSES, &b.stiffnesses_n_m),
+            (&setting::HEIGHTS, &b.heights_m),
+            (&setting::SLAB_LENGTH, &b.slab_lengths_m),
+            (&setting::SLAB_WIDTH, &b.slab_widths_m),
+            (&setting::SLAB_THICKNESS, &b.slab_thicknesses_m),
+            (&setting::SLAB_YOUNGS_MODULUS, &b.slab_youngs_pa),
+        ] {
+            if list.len() != 1 && list.len() != b.storeys {
                 return Err(InputError::new(
-                    format!("{name}.rayleigh_modes"),
+                    setting.key_of(side),
                     format!(
-                        "modes {i} and {j} are not allowed: one storey has one mode, which Rayleigh damping gives the ratio; leave rayleigh_modes at 1,2 or use {name}.damping = modal"
-                    ),
-                ));
-            }
-            if let DampingModel::Rayleigh { modes: [i, j] } = b.damping
-                && (i == 0 || j == 0 || i > b.storeys || j > b.storeys || i == j)
-                && b.storeys > 1
-            {
-                return Err(InputError::new(
-                    format!("{name}.rayleigh_modes"),
-                    format!(
-                        "modes {i} and {j} are not allowed: two different modes in [1, {}]",
+                        "{} values for {} storeys: give one value for every storey, or {}",
+                        list.len(),
+                        b.storeys,
                         b.storeys
                     ),
                 ));
             }
-        }
-        check("gap", self.gap_m)?;
-        if let Some(k) = self.stiffness {
-            check("contact.stiffness", k)?;
-        }
-        check("contact.restitution", self.restitution)?;
-        if let Some(d) = self.zone_length_m {
-            check("contact.zone_length", d)?;
-        }
-        if self.contact == ContactModel::Sears && self.reading == SlabReading::Paper {
-            for level in self.levels() {
-                let d = self.level_zone_length(&level);
-                for (name, slab) in ["left", "right"].iter().zip(self.level_slabs(&level)) {
-                    if let Some((s, _)) = slab
-                        && d >= 2.0 * s.length_m
-                    {
-                        return Err(InputError::new(
-                            "contact.zone_length",
-                            format!(
-                                "{d} m is not allowed: the paper reading needs d < 2 L = {} m of the {name} slab",
-                                2.0 * s.length_m
-                            ),
-                        ));
-                    }
-                }
+            for &v in list.iter() {
+                setting.check_at(side, v)?;
             }
         }
-        check("slab.damping", self.slab_damping)?;
-        check("impact.merge_gap_s", self.merge_gap_s)?;
-        check("solver.tolerance", self.tolerance)?;
-        if let Some(s) = self.steps_per_scale {
-            check("solver.steps_per_scale", s)?;
+        setting::DAMPING_RATIO.check_at(side, b.damping_ratio)?;
+        spread_of_modes(side, b)?;
+        b.check_rayleigh_modes(side)
+    }
+
+    /// Rayleigh damping's two modes must be two of the building's.
+    fn check_rayleigh_modes(&self, side: usize) -> Result<(), InputError> {
+        let DampingModel::Rayleigh { modes: [i, j] } = self.damping else {
+            return Ok(());
+        };
+        let key = setting::RAYLEIGH_MODES.key_of(side);
+        // One storey has one mode, which Rayleigh damping gives the ratio: only the default
+        // pair 1,2 is meaningful there, and any other pair would be silently ignored.
+        if self.storeys == 1 && !matches!((i, j), (1, 2) | (2, 1)) {
+            return Err(InputError::new(
+                key,
+                format!(
+                    "modes {i} and {j} are not allowed: one storey has one mode, which Rayleigh damping gives the ratio; leave {} at 1,2 or use {} = {}",
+                    setting::RAYLEIGH_MODES.name(),
+                    setting::DAMPING.key_of(side),
+                    DampingModel::Modal.name()
+                ),
+            ));
         }
-        check("solver.max_step", self.max_step_s)?;
-        check("solver.max_steps", self.max_steps as f64)?;
-        check("left.velocity", self.initial_velocity_m_s[0])?;
-        check("right.velocity", self.initial_velocity_m_s[1])?;
+        if (i == 0 || j == 0 || i > self.storeys || j > self.storeys || i == j) && self.storeys > 1
+        {
+            return Err(InputError::new(
+                key,
+                format!(
+                    "modes {i} and {j} are not allowed: two different modes in [1, {}]",
+                    self.storeys
+                ),
+            ));
+        }
         Ok(())
     }
 }
@@ -455,7 +478,7 @@ const MAX_MODE_SPREAD: f64 = 1e10;
 
 /// Refuses a building whose storeys differ so much that its longest period is lost to
 /// round-off (it would come out as infinite, or as noise).
-fn spread_of_modes(name: &str, b: &Building) -> Result<(), InputError> {
+fn spread_of_modes(side: usize, b: &Building) -> Result<(), InputError> {
     if b.storeys < 2 {
         return Ok(());
     }
@@ -465,7 +488,7 @@ fn spread_of_modes(name: &str, b: &Building) -> Result<(), InputError> {
         return Ok(());
     }
     Err(InputError::new(
-        format!("{name}.stiffnesses"),
+        setting::STIFFNESSES.key_of(side),
         format!(
             "the storeys' stiffnesses and masses differ so much that the squared frequencies span more than {MAX_MODE_SPREAD:e}, so the longest period is lost to round-off; bring the storey stiffnesses (and masses) within a factor of about 1e9 of each other"
         ),

@@ -61,8 +61,11 @@ impl ModelKind {
         ModelKind::Fe,
     ];
 
+    /// Every model's name, in the order of [`ModelKind::ALL`].
+    pub const NAMES: [&'static str; 7] = crate::model::names_of!(Self::ALL, 7);
+
     /// The name the command line and presets use.
-    pub fn name(self) -> &'static str {
+    pub const fn name(self) -> &'static str {
         match self {
             ModelKind::Sears => "sears",
             ModelKind::Wave => "wave",
@@ -110,7 +113,7 @@ impl ModelKind {
             && hertz_stiffness(&sc.bar1, &sc.bar2).is_none()
         {
             return Err(InputError::new(
-                "contact.law",
+                crate::model::settings::impact::CONTACT_LAW.key,
                 "hertz needs a rounded end on at least one bar (bar1.end_radius or bar2.end_radius), or an explicit contact.stiffness; both ends are flat",
             ));
         }
@@ -118,7 +121,7 @@ impl ModelKind {
         // (e ~ 1 / (4 xi^2)); stereomechanics takes e = 0 as a plastic impact.
         if self == ModelKind::Kelvin && sc.contact.restitution <= 0.0 {
             return Err(InputError::new(
-                "contact.restitution",
+                crate::model::settings::impact::RESTITUTION.key,
                 format!(
                     "{} is not allowed for kelvin: a link that cannot pull gives e = 0 only with infinite damping; must lie in (0, 1]",
                     crate::model::settings::shown(sc.contact.restitution)

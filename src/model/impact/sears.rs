@@ -129,16 +129,17 @@ fn layout(sc: &ImpactScenario) -> Result<Layout, InputError> {
     };
     // Limits are printed in full: a rounded bound (0.0000) would be false.
     let shown = crate::model::settings::shown;
+    let zone_scale = &crate::model::settings::impact::ZONE_SCALE;
     for i in 0..2 {
         let (bar, d) = (&bars[i], zones[i]);
         let c = bar.wave_speed_m_s();
         let l = bar.length_m;
-        let name = if i == 0 { "bar1" } else { "bar2" };
+        let name = crate::model::settings::BARS[i];
         match sc.reading {
             Reading::Paper => {
                 if d > 2.0 * l {
                     return Err(InputError::new(
-                        "contact.zone_scale",
+                        zone_scale.key,
                         format!(
                             "the paper reading is undefined here: {name}'s zone d = {} m exceeds twice its length ({} m), so a reflection would arrive before it left; allowed: contact.zone_scale < {} (or sears.reading = end)",
                             shown(d),
@@ -153,7 +154,7 @@ fn layout(sc: &ImpactScenario) -> Result<Layout, InputError> {
             Reading::Collocated => {
                 if d >= l {
                     return Err(InputError::new(
-                        "contact.zone_scale",
+                        zone_scale.key,
                         format!(
                             "the collocated reading needs the zone shorter than the bar: {name}'s d = {} m >= L = {} m; allowed: contact.zone_scale < {}",
                             shown(d),

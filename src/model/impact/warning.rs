@@ -1,6 +1,7 @@
 //! What a reader of an impact result must know besides its numbers. Each warning is a variant, so
 //! a test matches the kind of warning, never a phrase; its message is its `Display`.
 
+use crate::model::settings::impact;
 use std::fmt;
 
 /// Why a step coarser than the contact's time scale was kept.
@@ -152,7 +153,8 @@ impl fmt::Display for Warning {
                 refined_s,
             } => write!(
                 f,
-                "solver.dt = {dt_s:e} s is coarser than the contact's time scale {scale_s:.3e} s: refined to {refined_s:.3e} s"
+                "{} = {dt_s:e} s is coarser than the contact's time scale {scale_s:.3e} s: refined to {refined_s:.3e} s",
+                impact::DT.key
             ),
             Warning::StepKept {
                 dt_s,
@@ -160,7 +162,7 @@ impl fmt::Display for Warning {
                 because,
             } => {
                 let why = match because {
-                    KeptBecause::RefineOff => "solver.refine = false".to_string(),
+                    KeptBecause::RefineOff => format!("{} = false", impact::REFINE.key),
                     KeptBecause::Budget {
                         refined_s,
                         steps,
@@ -171,7 +173,8 @@ impl fmt::Display for Warning {
                 };
                 write!(
                     f,
-                    "solver.dt = {dt_s:e} s is coarser than the contact's time scale {scale_s:.3e} s and was kept ({why}): the run is stable but the force's rise is not resolved; use solver.dt <= {scale_s:.1e} s for accurate peaks"
+                    "{dt} = {dt_s:e} s is coarser than the contact's time scale {scale_s:.3e} s and was kept ({why}): the run is stable but the force's rise is not resolved; use {dt} <= {scale_s:.1e} s for accurate peaks",
+                    dt = impact::DT.key
                 )
             }
             Warning::ContactOpenAtEnd { end_s } => write!(

@@ -7,6 +7,53 @@ pub mod synthetic;
 /// Standard gravity [m/s^2].
 pub const G: f64 = 9.80665;
 
+/// The units a text record's accelerations are written in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Units {
+    /// Multiples of standard gravity.
+    G,
+    /// m/s^2.
+    MetresPerSecond2,
+    /// cm/s^2 (gal).
+    CentimetresPerSecond2,
+}
+
+impl Units {
+    /// Every unit.
+    pub const ALL: [Units; 3] = [
+        Units::G,
+        Units::MetresPerSecond2,
+        Units::CentimetresPerSecond2,
+    ];
+    /// Their names, in the order of [`Units::ALL`].
+    pub const NAMES: [&'static str; 3] = crate::model::names_of!(Self::ALL, 3);
+
+    /// The unit of that name; the usual spellings with `^` and `gal` are understood too.
+    pub fn from_name(s: &str) -> Option<Self> {
+        match s {
+            "m/s^2" => Some(Units::MetresPerSecond2),
+            "cm/s^2" | "gal" => Some(Units::CentimetresPerSecond2),
+            _ => Self::ALL.into_iter().find(|u| u.name() == s),
+        }
+    }
+    /// The name presets and the command line use.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Units::G => "g",
+            Units::MetresPerSecond2 => "m/s2",
+            Units::CentimetresPerSecond2 => "cm/s2",
+        }
+    }
+    /// One unit in m/s^2.
+    pub fn to_m_s2(self) -> f64 {
+        match self {
+            Units::G => G,
+            Units::MetresPerSecond2 => 1.0,
+            Units::CentimetresPerSecond2 => 0.01,
+        }
+    }
+}
+
 /// Ground acceleration sampled at t = n dt.
 #[derive(Debug, Clone, PartialEq)]
 pub struct GroundMotion {

@@ -8,18 +8,18 @@ pub(super) fn mass(ctx: &Context) -> Result<StudyOutput, StudyError> {
     let d = base.scenario.zone_lengths_m()[0];
     // The zone length follows the bar's radius in Eq. 5; it is held at the base case's so the
     // larger section changes the mass alone, as superimposed mass does.
-    let base = with(&base, &[format!("contact.zone_length={d}")])?;
+    let base = with(&base, &[set(&impact::ZONE_LENGTH, 0, d)])?;
     let (m1, m2) = (base.scenario.bar1.mass_kg(), base.scenario.bar2.mass_kg());
     let r = base.scenario.bar1.radius_m();
     let added = move |k: f64| {
         vec![
-            format!("bar1.added_mass={}", (k - 1.0) * m1),
-            format!("bar2.added_mass={}", (k - 1.0) * m2),
+            set(&impact::ADDED_MASS, 0, (k - 1.0) * m1),
+            set(&impact::ADDED_MASS, 1, (k - 1.0) * m2),
         ]
     };
     let section = move |k: f64| {
         let rk = r * k.sqrt();
-        vec![format!("bar1.radius={rk}"), format!("bar2.radius={rk}")]
+        vec![set(&impact::RADIUS, 0, rk), set(&impact::RADIUS, 1, rk)]
     };
     let xs = geometric(1.0, 100.0, 20);
     let mut figures = Vec::new();

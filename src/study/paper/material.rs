@@ -1,6 +1,7 @@
 //! Section 3.6, material: steel, M20 concrete, and concrete loaded to steel's mass (Fig. 8).
 
 use super::*;
+use crate::model::material::MaterialPreset;
 use crate::study::StudyOutput;
 
 pub(super) fn material(ctx: &Context) -> Result<StudyOutput, StudyError> {
@@ -8,8 +9,8 @@ pub(super) fn material(ctx: &Context) -> Result<StudyOutput, StudyError> {
     let concrete = with(
         &base,
         &[
-            "bar1.material=concrete".into(),
-            "bar2.material=concrete".into(),
+            set(&impact::MATERIAL, 0, MaterialPreset::Concrete.name()),
+            set(&impact::MATERIAL, 1, MaterialPreset::Concrete.name()),
         ],
     )?;
     let steel_rho = base.scenario.bar1.material.density_kg_m3;
@@ -18,8 +19,8 @@ pub(super) fn material(ctx: &Context) -> Result<StudyOutput, StudyError> {
     let loaded = with(
         &concrete,
         &[
-            format!("bar1.added_mass={}", extra(&concrete.scenario.bar1)),
-            format!("bar2.added_mass={}", extra(&concrete.scenario.bar2)),
+            set(&impact::ADDED_MASS, 0, extra(&concrete.scenario.bar1)),
+            set(&impact::ADDED_MASS, 1, extra(&concrete.scenario.bar2)),
         ],
     )?;
     let cases = [

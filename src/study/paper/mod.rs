@@ -19,6 +19,7 @@ use crate::export::plot::{LinePlot, Series};
 use crate::io::preset;
 use crate::io::settings::ImpactSetup;
 use crate::model::impact::{ImpactResult, ModelKind, SolveError, solve};
+use crate::model::settings::{Setting, impact};
 
 pub const STUDIES: &[Study] = &[
     Study {
@@ -104,11 +105,16 @@ pub(super) fn with(base: &ImpactSetup, sets: &[String]) -> Result<ImpactSetup, S
     Ok(s)
 }
 
+/// `KEY=VALUE` for `setting` of owner `owner` (0: bar1), as `--set` takes it.
+pub(super) fn set(setting: &Setting, owner: usize, value: impl std::fmt::Display) -> String {
+    format!("{}={value}", setting.key_of(owner))
+}
+
 /// Bars of lengths `l1` and `l2` on top of `base`.
 pub(super) fn lengths_of(base: &ImpactSetup, l1: f64, l2: f64) -> Result<ImpactSetup, StudyError> {
     with(
         base,
-        &[format!("bar1.length={l1}"), format!("bar2.length={l2}")],
+        &[set(&impact::LENGTH, 0, l1), set(&impact::LENGTH, 1, l2)],
     )
 }
 

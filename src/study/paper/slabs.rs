@@ -1,6 +1,7 @@
 //! Section 4's slabs: concrete slabs with the linear contact E A/(L/n), n = 1 to 50 (Fig. 9).
 
 use super::*;
+use crate::model::scenario::Reading;
 use crate::study::StudyOutput;
 
 pub(super) fn slab_n(ctx: &Context) -> Result<StudyOutput, StudyError> {
@@ -15,8 +16,8 @@ pub(super) fn slab_n(ctx: &Context) -> Result<StudyOutput, StudyError> {
                 with(
                     &base,
                     &[
-                        format!("contact.divisions={n}"),
-                        format!("contact.zone_length={}", l / n),
+                        set(&impact::DIVISIONS, 0, n),
+                        set(&impact::ZONE_LENGTH, 0, l / n),
                     ],
                 )?,
             ))
@@ -25,7 +26,10 @@ pub(super) fn slab_n(ctx: &Context) -> Result<StudyOutput, StudyError> {
     // n = 10 once more in the end reading (no plane delay): what the waves do without the paper
     // reading's overshoot.
     let mut jobs = jobs;
-    let end = with(&jobs[3].1, &["sears.reading=end".into()])?;
+    let end = with(
+        &jobs[3].1,
+        &[set(&impact::SEARS_READING, 0, Reading::End.name())],
+    )?;
     jobs.push((ModelKind::Sears, end));
     let mut results = histories(ctx, &jobs)?;
     let end = results.pop().expect("the end-reading run");

@@ -5,7 +5,7 @@ use crate::study::StudyOutput;
 
 pub(super) fn stiffness(ctx: &Context) -> Result<StudyOutput, StudyError> {
     let base = load("paper-base")?;
-    let sets = |dome: f64| vec![format!("bar1.end_radius={}", dome / 2.0)];
+    let sets = |dome: f64| vec![set(&impact::END_RADIUS, 0, dome / 2.0)];
     let fam = Family {
         stem: "stiffness",
         key: "dome diameter",

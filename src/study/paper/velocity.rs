@@ -5,7 +5,7 @@ use crate::study::StudyOutput;
 
 pub(super) fn velocity(ctx: &Context) -> Result<StudyOutput, StudyError> {
     let base = load("paper-base")?;
-    let sets = |v: f64| vec![format!("bar1.velocity={v}")];
+    let sets = |v: f64| vec![set(&impact::VELOCITY, 0, v)];
     let fam = Family {
         stem: "fig7",
         key: "v",

@@ -2,15 +2,16 @@
 //! readings.
 
 use super::*;
+use crate::model::scenario::Reading;
 use crate::study::StudyOutput;
 
 pub(super) fn zone(ctx: &Context) -> Result<StudyOutput, StudyError> {
     let base = load("paper-base")?;
     let xs = geometric(0.01, 10.0, 25);
-    let readings = ["paper", "collocated"];
+    let readings = [Reading::Paper, Reading::Collocated].map(Reading::name);
     let mut jobs = Vec::new();
     for reading in readings {
-        let s = with(&base, &[format!("sears.reading={reading}")])?;
+        let s = with(&base, &[set(&impact::SEARS_READING, 0, reading)])?;
         for &x in &xs {
             // A zone longer than a reading allows is that point's error (solve validates), not
             // the study's.
@@ -71,7 +72,7 @@ pub(super) fn zone(ctx: &Context) -> Result<StudyOutput, StudyError> {
         .map(|&x| {
             Ok((
                 ModelKind::Sears,
-                with(&base, &[format!("contact.zone_scale={x}")])?,
+                with(&base, &[set(&impact::ZONE_SCALE, 0, x)])?,
             ))
         })
         .collect::<Result<_, StudyError>>()?;
