@@ -57,7 +57,12 @@ fn main() {
     for _ in 0..repeats {
         let r = match stage.as_str() {
             "solve" => solve(sc, &motion),
-            "estimate" => solve_summary(&pounding::model::building::estimate::refined(sc, 2.0), &motion),
+            "estimate" => solve(sc, &motion).and_then(|r| {
+                solve_summary(
+                    &pounding::model::building::estimate::companion(sc, r.stats.fine_step_s),
+                    &motion,
+                )
+            }),
             "none" => solve(
                 &BuildingScenario {
                     contact: ContactModel::None,

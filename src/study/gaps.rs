@@ -3,7 +3,7 @@
 
 use super::{Cancelled, Control, par_map};
 use crate::model::building::gaps::{GapAssessment, assess};
-use crate::model::building::{BuildingScenario, ContactModel, solve};
+use crate::model::building::{BuildingScenario, ContactModel, solve_summary};
 use crate::model::error::SolveError;
 use crate::model::motion::{G, GroundMotion};
 
@@ -28,7 +28,7 @@ pub fn record_gaps(
         ..scenario.clone()
     };
     par_map(progress, motions, |m| {
-        let r = solve(&free, m)?;
+        let r = solve_summary(&free, m)?;
         Ok(RecordGaps {
             record: m.name.clone(),
             duration_s: m.duration_s(),

@@ -45,6 +45,22 @@ pub fn refined(sc: &BuildingScenario, factor: f64) -> BuildingScenario {
     }
 }
 
+/// The run the estimate compares with: the contact step and the grid on which onsets are sought
+/// and peaks sampled halved (through the tolerance and the steps per contact time scale). The
+/// free motion between contacts is exact whatever the length of its steps, so those keep theirs,
+/// unless the grid cannot be halved within them.
+pub fn companion(sc: &BuildingScenario, fine_step_s: f64) -> BuildingScenario {
+    let fine = refined(sc, 2.0);
+    if sc.max_step_s / (0.5 * fine_step_s) <= super::solve::MAX_FREE_STEP as f64 {
+        BuildingScenario {
+            max_step_s: sc.max_step_s,
+            ..fine
+        }
+    } else {
+        fine
+    }
+}
+
 /// The estimate for run `r` of `sc`: twice its difference from the refined run.
 pub fn estimate_error(
     sc: &BuildingScenario,
@@ -62,7 +78,7 @@ pub fn estimate_error_with(
     control: &Control,
 ) -> Result<BuildingErrorEstimate, SolveError> {
     let start = std::time::Instant::now();
-    let fine = super::solve_summary_with(&refined(sc, 2.0), motion, control)?;
+    let fine = super::solve_summary_with(&companion(sc, r.stats.fine_step_s), motion, control)?;
     let mut e = compare(r, &fine);
     e.max_force *= 2.0;
     e.peak_displacement *= 2.0;

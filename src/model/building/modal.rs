@@ -246,6 +246,29 @@ fn balanced(omega: f64, zeta: f64, s: f64) -> ([[f64; 4]; 4], [f64; 4]) {
     (a, d)
 }
 
+/// One mode's exact state (q(s), q'(s)) a time s after y0 = [q, q', g, g'] under forcing linear
+/// in time: the closed form for an underdamped mode (its line of particular response plus a
+/// decaying sinusoid, one exponential and one sine-cosine), the exponential map otherwise. It
+/// agrees with [`propagator`] to round-off, at a fraction of its cost where the time is not one
+/// of the precomputed steps.
+pub fn evaluate(omega: f64, zeta: f64, y: &[f64; 4], s: f64) -> (f64, f64) {
+    if !(zeta < 0.99 && omega > 0.0) || s <= 0.0 {
+        return propagator(omega, zeta, s).apply(y);
+    }
+    let w2 = omega * omega;
+    let beta = y[3] / w2;
+    let alpha = (y[2] - 2.0 * zeta * omega * beta) / w2;
+    let (qh, vh) = (y[0] - alpha, y[1] - beta);
+    let wd = omega * (1.0 - zeta * zeta).sqrt();
+    let zw = zeta * omega;
+    let e = (-zw * s).exp();
+    let (sn, cs) = (wd * s).sin_cos();
+    (
+        alpha + beta * s + e * (qh * cs + (vh + zw * qh) / wd * sn),
+        beta + e * (vh * cs - (zw * vh + w2 * qh) / wd * sn),
+    )
+}
+
 /// The exact step of one mode (see [`Propagator`]); the identity for a step of zero.
 pub fn propagator(omega: f64, zeta: f64, s: f64) -> Propagator {
     if s <= 0.0 {
@@ -316,6 +339,21 @@ pub fn step_integrals(omega: f64, zeta: f64, s: f64) -> StepIntegrals {
 /// round-off of eps e^(2 zeta w s) into the decaying block, so the span stays near 1.
 const MAX_DECAY: f64 = 1.0;
 
+/// The integrals over a step of length a + b from those over a (whose exact map is `phi_a`) and
+/// those over b: the second part's integrands start from the state at a, y(a) = Phi(a) y0.
+pub fn joined(first: &StepIntegrals, phi_a: &[[f64; 4]; 4], second: &StepIntegrals) -> StepIntegrals {
+    let int_q = std::array::from_fn(|j| {
+        first.int_q[j] + (0..4).map(|k| second.int_q[k] * phi_a[k][j]).sum::<f64>()
+    });
+    let w_phi: [[f64; 4]; 4] = std::array::from_fn(|i| {
+        std::array::from_fn(|j| (0..4).map(|k| second.w[i][k] * phi_a[k][j]).sum())
+    });
+    let w = std::array::from_fn(|i| {
+        std::array::from_fn(|j| first.w[i][j] + (0..4).map(|k| phi_a[k][i] * w_phi[k][j]).sum::<f64>())
+    });
+    StepIntegrals { int_q, w }
+}
+
 /// The integrals over `s` from those over s / 2^halvings: over [0, 2h] they are those over
 /// [0, h] from the start and again from the state at h, y(h) = Phi(h) y0.
 fn doubled(omega: f64, zeta: f64, s: f64, halvings: i32) -> StepIntegrals {
@@ -382,13 +420,46 @@ fn identity<const N: usize>() -> [[f64; N]; N] {
     std::array::from_fn(|i| std::array::from_fn(|j| if i == j { 1.0 } else { 0.0 }))
 }
 
-fn matmul<const N: usize>(a: &[[f64; N]; N], b: &[[f64; N]; N]) -> [[f64; N]; N] {
+pub(crate) fn matmul<const N: usize>(a: &[[f64; N]; N], b: &[[f64; N]; N]) -> [[f64; N]; N] {
     std::array::from_fn(|i| std::array::from_fn(|j| (0..N).map(|k| a[i][k] * b[k][j]).sum()))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn integrals_joined_from_two_steps_are_those_of_the_whole_step() {
+        let (omega, zeta) = (17.95, 0.05);
+        let (a, b) = (3.0e-3, 4.5e-3);
+        let p = propagator(omega, zeta, a);
+        let phi = [p.q, p.v, [0.0, 0.0, 1.0, a], [0.0, 0.0, 0.0, 1.0]];
+        let both = joined(&step_integrals(omega, zeta, a), &phi, &step_integrals(omega, zeta, b));
+        let whole = step_integrals(omega, zeta, a + b);
+        for j in 0..4 {
+            assert!((both.int_q[j] - whole.int_q[j]).abs() <= 1e-13 * (1.0 + whole.int_q[j].abs()));
+            for i in 0..4 {
+                let scale = whole.w[i][i].abs().max(whole.w[j][j].abs()).max(1e-300);
+                assert!((both.w[i][j] - whole.w[i][j]).abs() <= 1e-12 * scale, "{i} {j}");
+            }
+        }
+    }
+
+    #[test]
+    fn the_closed_form_state_agrees_with_the_exponential_map() {
+        for (omega, zeta) in [(17.95, 0.05), (3.0, 0.0), (200.0, 0.3), (40.0, 0.9)] {
+            let y = [0.01, -0.2, 3.0, -40.0];
+            for s in [1e-6, 1e-3, 0.05, 1.7] {
+                let (q, v) = evaluate(omega, zeta, &y, s);
+                let (qe, ve) = propagator(omega, zeta, s).apply(&y);
+                let scale = qe.abs() + ve.abs() / omega + 1e-12;
+                assert!(
+                    (q - qe).abs() <= 1e-12 * scale && (v - ve).abs() <= 1e-12 * omega * scale,
+                    "w {omega}, zeta {zeta}, s {s}: ({q}, {v}) against ({qe}, {ve})"
+                );
+            }
+        }
+    }
 
     #[test]
     fn one_storey_is_the_oscillator_and_modal_damping_its_ratio() {

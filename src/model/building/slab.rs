@@ -90,8 +90,16 @@ impl Ring {
         if i < 0 {
             0.0
         } else {
-            self.data[i as usize & self.mask]
+            self.masked(i as usize)
         }
+    }
+
+    /// The sample at index i (at or after 0, within the ring's reach).
+    #[inline(always)]
+    fn masked(&self, i: usize) -> f64 {
+        // SAFETY: the mask is the length less one, a power of two less one, so the index is
+        // within the data.
+        unsafe { *self.data.get_unchecked(i & self.mask) }
     }
 
     /// The look-up's part from stored samples, for the sample about to be pushed.
@@ -102,9 +110,9 @@ impl Ring {
         if base >= 0 && l.stored == 4 {
             // The common case, without a branch per sample: four stored samples, all at or after
             // index 0.
-            let (b, m, d) = (base as usize, self.mask, &self.data);
-            return (w[0] * d[b & m] + w[1] * d[(b + 1) & m])
-                + (w[2] * d[(b + 2) & m] + w[3] * d[(b + 3) & m]);
+            let b = base as usize;
+            return (w[0] * self.masked(b) + w[1] * self.masked(b + 1))
+                + (w[2] * self.masked(b + 2) + w[3] * self.masked(b + 3));
         }
         if l.stored == 3 {
             w[0] * self.at(base) + w[1] * self.at(base + 1) + w[2] * self.at(base + 2)
@@ -194,8 +202,8 @@ pub struct SlabWaves {
     /// Pushes since the last nonzero force.
     zero_run: usize,
     /// The last prediction, for the index it was made for (a contact step predicts, then
-    /// pushes).
-    predicted: std::cell::Cell<Option<(usize, f64, f64)>>,
+    /// pushes): e0, e1 and the recursion's look-up.
+    predicted: std::cell::Cell<Option<(usize, f64, f64, f64)>>,
     /// `Some` while quiet.
     quiet: Option<Quiet>,
     /// The buffers of the last quiet window, kept for the next.
@@ -304,27 +312,34 @@ impl SlabWaves {
 
     /// The elastic displacement at the plane after one more step, as e0 + e1 F_{n+1} (while
     /// live).
-    #[inline]
+    #[inline(never)] // PROFILE
     pub fn predict(&self) -> (f64, f64) {
         debug_assert!(self.is_live());
-        if let Some((next, e0, e1)) = self.predicted.get()
+        self.prediction().0
+    }
+
+    /// (e0, e1) and the recursion's look-up for the next step, made once per step.
+    #[inline]
+    fn prediction(&self) -> ((f64, f64), f64) {
+        if let Some((next, e0, e1, recur)) = self.predicted.get()
             && next == self.q.next
         {
-            return (e0, e1);
+            return ((e0, e1), recur);
         }
         let (e, h) = (self.step_decay, self.h);
         let a0 = e * self.a + 0.5 * h * e * self.f_prev;
         let b0 = e * self.b + 0.5 * h * (e * self.a + a0);
         let gain = 1.0 / (1.0 - self.round_decay * self.recur.newest);
-        let q0 = (a0 + self.round_decay * self.q.known(&self.recur)) * gain;
+        let recur = self.q.known(&self.recur);
+        let q0 = (a0 + self.round_decay * recur) * gain;
         let q1 = 0.5 * h * gain;
         let top = self.near_weight * self.near.newest + self.far_weight * self.far.newest;
         let known = self.near_weight * self.q.known(&self.near)
             + self.far_weight * self.q.known(&self.far);
         let e0 = self.inv_z * (known + top * q0) - self.inv_m * b0;
         let e1 = self.inv_z * top * q1 - self.inv_m * 0.25 * h * h;
-        self.predicted.set(Some((self.q.next, e0, e1)));
-        (e0, e1)
+        self.predicted.set(Some((self.q.next, e0, e1, recur)));
+        ((e0, e1), recur)
     }
 
     /// The elastic displacement at grid index `next` (the next step) as e0 + e1 F_next: the
@@ -349,15 +364,15 @@ impl SlabWaves {
     }
 
     /// Advances one step with the force F_{n+1} (while live).
-    #[inline]
+    #[inline(never)] // PROFILE
     pub fn push(&mut self, force: f64) {
-        let (e0, e1) = self.predict();
+        let ((e0, e1), recur) = self.prediction();
         let (e, h) = (self.step_decay, self.h);
         let a1 = e * self.a + 0.5 * h * (e * self.f_prev + force);
         self.b = e * self.b + 0.5 * h * (e * self.a + a1);
         self.a = a1;
         let gain = 1.0 / (1.0 - self.round_decay * self.recur.newest);
-        let q1 = (a1 + self.round_decay * self.q.known(&self.recur)) * gain;
+        let q1 = (a1 + self.round_decay * recur) * gain;
         self.q.push(q1);
         self.f_prev = force;
         self.elastic = e0 + e1 * force;
@@ -407,13 +422,8 @@ impl SlabWaves {
         self.inv_z * (self.near_weight * near + self.far_weight * far) - self.inv_m * b
     }
 
-    /// Q at the fractional grid index `s` of a quiet slab: J A(s) + r^J Q(s - J T), with s - J T
-    /// inside the window.
-    fn quiet_q(&self, q: &Quiet, s: f64) -> f64 {
-        self.fold_q(q, s, self.quiet_a(q, s))
-    }
-
-    /// [`SlabWaves::quiet_q`] with A(s) given.
+    /// Q at the fractional grid index `s` of a quiet slab, given A(s): J A(s) + r^J Q(s - J T),
+    /// with s - J T inside the window.
     fn fold_q(&self, q: &Quiet, s: f64, a: f64) -> f64 {
         let past = s - q.n as f64;
         if past <= 0.0 {
@@ -466,30 +476,51 @@ impl SlabWaves {
     /// the second: from the second on, e(t + T) = r e(t). The grid recursion is stepped on with
     /// zero force from the quiet window (a copy of its samples), the cheapest way to every grid
     /// point of two round trips.
+    #[inline(never)] // PROFILE
     fn tabulate_envelope(&self, q: &Quiet) -> [f64; 2] {
         let steps = self.round_steps.ceil() as usize + 1;
-        let mut ring = Ring::new(self.window);
-        // The window's samples at indices q.n + 1 - len ..= q.n (those before index 0 are zero).
+        // Q at indices q.n + 1 - len ..= q.n + 2 steps, in one buffer: the window, then the
+        // steps taken (before index 0 the history is zero).
         let len = q.q.len();
-        let skip = len.saturating_sub(q.n + 1);
-        ring.next = q.n + 1 + skip - len;
-        for &v in &q.q[skip..] {
-            ring.push(v);
+        let base = q.n as isize + 1 - len as isize;
+        let mut buf = vec![0.0; len + 2 * steps];
+        for (k, (b, &v)) in buf.iter_mut().zip(&q.q).enumerate() {
+            if base + k as isize >= 0 {
+                *b = v;
+            }
         }
+        // Each look-up as four weights on four samples from a fixed offset before the sample
+        // being made (a stencil of three stored samples reads that sample, still zero, with
+        // weight zero): the window holds every sample the deepest look-up reaches.
+        let four = |l: &Look| -> (usize, [f64; 4]) {
+            let w = if l.stored == 3 {
+                [l.w[0], l.w[1], l.w[2], 0.0]
+            } else {
+                l.w
+            };
+            ((-l.first) as usize, w)
+        };
+        let (recur, near, far) = (four(&self.recur), four(&self.near), four(&self.far));
+        debug_assert!(recur.0.max(near.0).max(far.0) <= len);
+        let read = |buf: &[f64], at: usize, (back, w): (usize, [f64; 4])| {
+            let s = &buf[at - back..at - back + 4];
+            (w[0] * s[0] + w[1] * s[1]) + (w[2] * s[2] + w[3] * s[3])
+        };
         let (e, h) = (self.step_decay, self.h);
         let gain = 1.0 / (1.0 - self.round_decay * self.recur.newest);
         let top = self.near_weight * self.near.newest + self.far_weight * self.far.newest;
         let (mut a, mut b) = (q.a, q.b);
         let mut most = [0.0f64; 2];
         for i in 0..2 * steps {
+            let at = len + i;
             let a1 = e * a;
             b = e * b + 0.5 * h * (e * a + a1);
             a = a1;
-            let q1 = (a1 + self.round_decay * ring.known(&self.recur)) * gain;
-            let known = self.near_weight * ring.known(&self.near)
-                + self.far_weight * ring.known(&self.far);
-            let elastic = self.inv_z * (known + top * q1) - self.inv_m * b;
-            ring.push(q1);
+            let q1 = (a1 + self.round_decay * read(&buf, at, recur)) * gain;
+            let near_far =
+                self.near_weight * read(&buf, at, near) + self.far_weight * read(&buf, at, far);
+            let elastic = self.inv_z * (near_far + top * q1) - self.inv_m * b;
+            buf[at] = q1;
             let k = usize::from(i >= steps);
             most[k] = most[k].max(elastic.abs());
         }
@@ -512,6 +543,7 @@ impl SlabWaves {
 
     /// Starts stepping again at grid index `n` (at or after the quiet window's end): the samples
     /// the look-ups need are rebuilt from the closed form of the ringing.
+    #[inline(never)] // PROFILE
     pub fn revive(&mut self, n: usize) {
         let Some(q) = self.quiet.take() else {
             return;
@@ -519,10 +551,7 @@ impl SlabWaves {
         self.predicted.set(None);
         let from = (n as isize - self.window as isize + 1).max(0) as usize;
         self.q.next = from;
-        for i in from..=n {
-            let v = self.quiet_q(&q, i as f64);
-            self.q.push(v);
-        }
+        self.rebuild(&q, from, n);
         self.a = self.quiet_a(&q, n as f64);
         self.b = self.quiet_b(&q, n as f64);
         self.f_prev = 0.0;
@@ -530,6 +559,56 @@ impl SlabWaves {
         self.zero_run = 0;
         self.forces.push((n + 1, Vec::new()));
         self.spare = q;
+    }
+
+    /// Pushes Q at grid indices `from..=to` from the quiet slab's closed form. Along a run of
+    /// indices folded back the same number of round trips J the look-up's fraction is the
+    /// same, so its weights are too, and A(i) decays by one factor per step.
+    fn rebuild(&mut self, q: &Quiet, from: usize, to: usize) {
+        let (r_steps, last) = (self.round_steps, q.n as isize);
+        let first = last - q.q.len() as isize + 1;
+        let mut a = self.quiet_a(q, from as f64);
+        let mut i = from;
+        while i <= to {
+            if i <= q.n {
+                let k = i as isize - first;
+                self.q.push(if k >= 0 { q.q[k as usize] } else { 0.0 });
+                i += 1;
+                a *= self.step_decay;
+                continue;
+            }
+            let j = ((i - q.n) as f64 / r_steps).ceil();
+            let shift = j * r_steps;
+            let run_end = ((q.n as f64 + shift).floor() as usize).min(to);
+            let weight = self.round_decay.powi(j as i32);
+            let s0 = i as f64 - shift;
+            let x = s0 - s0.floor();
+            let w = [
+                -x * (x - 1.0) * (x - 2.0) / 6.0,
+                (x + 1.0) * (x - 1.0) * (x - 2.0) / 2.0,
+                -(x + 1.0) * x * (x - 2.0) / 2.0,
+                (x + 1.0) * x * (x - 1.0) / 6.0,
+            ];
+            let at = |k: isize| {
+                if k < first.max(0) {
+                    0.0
+                } else {
+                    q.q[(k - first) as usize]
+                }
+            };
+            while i <= run_end {
+                let s = i as f64 - shift;
+                let base = s.floor() as isize;
+                let v = if base <= last - 2 {
+                    (w[0] * at(base - 1) + w[1] * at(base)) + (w[2] * at(base + 1) + w[3] * at(base + 2))
+                } else {
+                    window_at(&q.q, q.n, s)
+                };
+                self.q.push(j * a + weight * v);
+                i += 1;
+                a *= self.step_decay;
+            }
+        }
     }
 
     /// The state to come back to if one trial step is taken again (while live).

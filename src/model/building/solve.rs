@@ -13,7 +13,7 @@ use crate::model::motion::GroundMotion;
 use std::time::Instant;
 
 /// The most fine steps one free step spans (its exact sub-steps are precomputed).
-const MAX_FREE_STEP: usize = 4096;
+pub(super) const MAX_FREE_STEP: usize = 4096;
 
 /// Memory the Sears slabs' histories may take [bytes]: 16 bytes a step per slab.
 pub const SLAB_MEMORY_BUDGET: f64 = 1.0e9;

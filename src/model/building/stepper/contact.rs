@@ -31,9 +31,7 @@ pub(super) struct Scratch {
     /// G over a whole grid step, once computed, and whether the step tried reads it.
     g_full: Option<Vec<f64>>,
     use_full: bool,
-    /// The slabs' elastic displacement after the step without new force, and their
-    /// instantaneous compliance, per point.
-    elastic: Vec<f64>,
+    /// The slabs' instantaneous compliance, per point.
     compliance: Vec<f64>,
     trial: Trial,
     before: Vec<f64>,
@@ -48,6 +46,7 @@ impl Stepper<'_> {
     }
 
     /// A contact step of length hh (the last one of a graded start lands on the grid).
+    #[inline(never)] // PROFILE
     pub(super) fn contact_step_of(&mut self, hh: f64) -> Result<(), SolveError> {
         self.count_step()?;
         if !self.newmark {
@@ -134,6 +133,7 @@ impl Stepper<'_> {
     }
 
     /// A contact step of length hh, not yet taken, into `cs.trial`.
+    #[inline(never)] // PROFILE
     fn trial(&self, hh: f64, cs: &mut Scratch) {
         let ground = self.motion.at(self.time() + hh);
         self.free_increment(hh, ground, cs);
@@ -142,15 +142,14 @@ impl Stepper<'_> {
         let out = &mut cs.trial;
         for s in 0..2 {
             let sign = if s == 0 { -1.0 } else { 1.0 };
-            out.dq[s].clear();
-            for k in 0..cs.step[s].len() {
-                let f: f64 = self
-                    .points
-                    .iter()
-                    .zip(&out.forces)
-                    .map(|(p, f)| p.r[s][k] * f)
-                    .sum();
-                out.dq[s].push(cs.step[s][k] + sign * f / cs.k_hat[s][k]);
+            let n = cs.step[s].len();
+            out.dq[s].resize(n, 0.0);
+            for k in 0..n {
+                let mut f = 0.0;
+                for (p, force) in self.points.iter().zip(&out.forces) {
+                    f += p.r[s][k] * force;
+                }
+                out.dq[s][k] = cs.step[s][k] + sign * f / cs.k_hat[s][k];
             }
         }
         out.hh = hh;
@@ -167,21 +166,25 @@ impl Stepper<'_> {
         for s in 0..2 {
             let side = &self.sides[s];
             let sign = if s == 0 { -1.0 } else { 1.0 };
-            cs.k_hat[s].clear();
-            cs.step[s].clear();
-            for k in 0..side.modes() {
+            let n = side.modes();
+            cs.k_hat[s].resize(n, 0.0);
+            cs.step[s].resize(n, 0.0);
+            for k in 0..n {
                 let kh = if full {
                     side.k_hat[k]
                 } else {
                     newmark_k_hat(side.omega[k], side.zeta[k], hh)
                 };
                 let c = 2.0 * side.zeta[k] * side.omega[k];
-                let contact_now: f64 = self.points.iter().map(|p| sign * p.r[s][k] * p.force).sum();
+                let mut contact_now = 0.0;
+                for p in &self.points {
+                    contact_now += sign * p.r[s][k] * p.force;
+                }
                 let load = -side.gamma[k] * ground_change - contact_now
                     + (4.0 / hh + 2.0 * c) * side.v[k]
                     + 2.0 * side.a[k];
-                cs.k_hat[s].push(kh);
-                cs.step[s].push(load / kh);
+                cs.k_hat[s][k] = kh;
+                cs.step[s][k] = load / kh;
             }
         }
     }
@@ -191,32 +194,27 @@ impl Stepper<'_> {
     /// sum_q G_pq F_q.
     fn contact_compliance(&self, hh: f64, cs: &mut Scratch) {
         let np = self.points.len();
-        cs.predicted.clear();
-        cs.elastic.clear();
-        cs.compliance.clear();
+        cs.predicted.resize(np, 0.0);
+        cs.compliance.resize(np, 0.0);
         let next = self.n + 1;
-        for p in &self.points {
-            let (e0, e1) = if self.sears {
-                p.slabs
-                    .iter()
-                    .flatten()
-                    .map(|s| s.predict_at(next))
-                    .fold((0.0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1))
-            } else {
-                (0.0, 0.0)
-            };
-            let pred = |s: usize| -> f64 {
-                self.sides[s]
-                    .q
-                    .iter()
-                    .zip(&cs.step[s])
-                    .zip(&p.r[s])
-                    .map(|((q, dq), r)| r * (q + dq))
-                    .sum()
-            };
-            cs.predicted.push(pred(0) - pred(1) - self.sc.gap_m - e0);
-            cs.elastic.push(e0);
-            cs.compliance.push(e1);
+        for (i, p) in self.points.iter().enumerate() {
+            let (mut e0, mut e1) = (0.0, 0.0);
+            if self.sears {
+                for slab in p.slabs.iter().flatten() {
+                    let (a, b) = slab.predict_at(next);
+                    e0 += a;
+                    e1 += b;
+                }
+            }
+            let mut pred = [0.0; 2];
+            for (s, out) in pred.iter_mut().enumerate() {
+                let (q, step, r) = (&self.sides[s].q, &cs.step[s], &p.r[s]);
+                for k in 0..r.len() {
+                    *out += r[k] * (q[k] + step[k]);
+                }
+            }
+            cs.predicted[i] = pred[0] - pred[1] - self.sc.gap_m - e0;
+            cs.compliance[i] = e1;
         }
         let full = (hh - self.grid.h).abs() <= 1e-12 * hh;
         cs.use_full = full && cs.g_full.is_some();
@@ -227,13 +225,15 @@ impl Stepper<'_> {
         cs.g.resize(np * np, 0.0);
         for (i, p) in self.points.iter().enumerate() {
             for (j, o) in self.points.iter().enumerate() {
-                cs.g[i * np + j] = (0..2)
-                    .map(|s| {
-                        (0..cs.k_hat[s].len())
-                            .map(|k| p.r[s][k] * o.r[s][k] / cs.k_hat[s][k])
-                            .sum::<f64>()
-                    })
-                    .sum();
+                let mut g = 0.0;
+                for s in 0..2 {
+                    let mut part = 0.0;
+                    for k in 0..cs.k_hat[s].len() {
+                        part += p.r[s][k] * o.r[s][k] / cs.k_hat[s][k];
+                    }
+                    g += part;
+                }
+                cs.g[i * np + j] = g;
             }
             // The slabs' instantaneous compliance minus their rigid part can be a hair below
             // zero (the storeys' springs and dampers stiffen the rigid response): clamp.
@@ -304,6 +304,7 @@ impl Stepper<'_> {
     }
 
     /// Takes the trial step: the modes, the slabs, the ledger and the contacts.
+    #[inline(never)] // PROFILE
     fn commit_contact(&mut self, cs: &mut Scratch) {
         let tr = &cs.trial;
         let hh = tr.hh;

@@ -1,8 +1,9 @@
 //! The free stretch: the exact motion between contacts, checked at a few points and walked grid
 //! point by grid point only where a bound cannot rule out an onset or a new peak.
 
-use super::bound::{cubic_bound, cubic_margin, cubic_max, cubic_max_abs, derivative_bounds};
+use super::bound::{cubic_bound, cubic_margin, cubic_max, cubic_max_abs, mode_bounds};
 use super::*;
+use crate::model::building::modal::evaluate;
 
 /// What the rounding of the states at two points can move a cubic's maximum by, relative to the
 /// size of its ends and slopes: far above the states' round-off, far below any gap or peak.
@@ -53,6 +54,7 @@ impl Stepper<'_> {
 
     /// Writes a free stretch of length `len` from `y0` to the ledger and moves the state to
     /// (`q1`, `v1`): the exact integrals of the ground's power and of the damping.
+    #[inline(never)] // PROFILE
     pub(super) fn commit_free(
         &mut self,
         y0: [&[[f64; 4]]; 2],
@@ -74,12 +76,7 @@ impl Stepper<'_> {
                 && j < self.grid.per_free_step
                 && side.part[j].is_none()
             {
-                let l = j as f64 * self.grid.h;
-                side.part[j] = Some(
-                    (0..side.modes())
-                        .map(|k| step_integrals(side.omega[k], side.zeta[k], l))
-                        .collect(),
-                );
+                side.part[j] = Some((0..side.modes()).map(|k| side.integrals_over(k, j)).collect());
             }
             for k in 0..side.modes() {
                 let ints = match j {
@@ -114,6 +111,7 @@ impl Stepper<'_> {
     /// One free stretch from a grid point to the next sample of the record (or the longest free
     /// step). Its parts are checked against the bounds; a part a bound cannot clear is halved
     /// until what is left near an onset or a peak is walked grid point by grid point.
+    #[inline(never)] // PROFILE
     pub(super) fn free_step(&mut self) -> Result<Free, SolveError> {
         self.newmark = false;
         let g = self.grid;
@@ -122,7 +120,7 @@ impl Stepper<'_> {
         self.count_step()?;
         let t0 = self.time();
         let mut w = self.scratch.take().expect("the scratch is home between stages");
-        self.prepare(&mut w, t0);
+        self.prepare(&mut w, t0, len);
         let mut a = 0;
         while a < len {
             let part = Part {
@@ -156,6 +154,7 @@ impl Stepper<'_> {
 
     /// Checks a part at depth `d` of the halving (for what its parent left open): clears it,
     /// halves it, or walks it. Returns the onset, if one was found in it.
+    #[inline(never)] // PROFILE
     fn refine(
         &mut self,
         w: &mut Scratch,
@@ -185,8 +184,12 @@ impl Stepper<'_> {
         Ok(None)
     }
 
-    /// The stretch's starting states and the bounds its checks use.
-    fn prepare(&self, w: &mut Scratch, t0: f64) {
+    /// The stretch's starting states and the bounds its checks use; and, from the bound on each
+    /// mode's size over the whole stretch, what it must be checked for at all (the root of its
+    /// halving): a point whose closing motion cannot reach the gap or its largest value, a signal
+    /// that cannot reach its peak, are left alone for the whole stretch.
+    fn prepare(&mut self, w: &mut Scratch, t0: f64, len: usize) {
+        let span = len as f64 * self.grid.h;
         for s in 0..2 {
             self.initial_into(s, t0, &mut w.y0[s]);
             let side = &self.sides[s];
@@ -196,17 +199,25 @@ impl Stepper<'_> {
             w.acc[s].resize(n, 0.0);
             w.m4[s].clear();
             w.m5[s].clear();
+            w.size[s].clear();
             for k in 0..n {
-                let (m4, m5) = derivative_bounds(side.omega[k], side.zeta[k], &w.y0[s][k]);
+                let y = &w.y0[s][k];
+                let [size, m4, m5] = mode_bounds(side.omega[k], side.zeta[k], y, span);
+                w.size[s].push(size);
                 w.m4[s].push(m4);
                 w.m5[s].push(m5);
-                let y = &w.y0[s][k];
                 w.q[s][k] = y[0];
                 w.v[s][k] = y[1];
             }
         }
         self.accelerations(w, 0);
-        let weighted = |r: &[f64], m: &[f64]| -> f64 { r.iter().zip(m).map(|(r, m)| r.abs() * m).sum() };
+        let weighted =
+            |r: &[f64], m: &[f64]| -> f64 { r.iter().zip(m).map(|(r, m)| r.abs() * m).sum() };
+        let contact = self.sc.contact != ContactModel::None;
+        let root = &mut w.root;
+        root.onset.clear();
+        root.closing.clear();
+        root.peak.clear();
         w.prev.clear();
         w.point_m4.clear();
         w.point_m5.clear();
@@ -218,6 +229,15 @@ impl Stepper<'_> {
                 .push(weighted(&p.r[0], &w.m4[0]) + weighted(&p.r[1], &w.m4[1]));
             w.point_m5
                 .push(weighted(&p.r[0], &w.m5[0]) + weighted(&p.r[1], &w.m5[1]));
+            let size = (weighted(&p.r[0], &w.size[0]) + weighted(&p.r[1], &w.size[1]))
+                * (1.0 + ROUNDING);
+            let elastic = if self.sears {
+                p.elastic_bound_from(self.n)
+            } else {
+                0.0
+            };
+            root.onset.push(contact && size + elastic >= self.sc.gap_m);
+            root.closing.push(size >= p.max_closing - 1e-6 * p.max_closing.abs());
         }
         w.signal_m4.clear();
         w.signal_m5.clear();
@@ -225,8 +245,20 @@ impl Stepper<'_> {
         for (i, sig) in self.signals.iter().enumerate() {
             w.signal_m4.push(sig.bound(&w.m4));
             w.signal_m5.push(sig.bound(&w.m5));
-            let a = self.signal(i, [&w.acc[0], &w.acc[1]], [&w.acc[0], &w.acc[1]]).0;
-            w.signal_acc.push(a);
+            let open = sig.same_as.is_none()
+                && sig.bound(&w.size) * (1.0 + ROUNDING) >= self.peaks.peak(i);
+            root.peak.push(open);
+            if open {
+                // Its last instant is this one (a stretch that left it alone did not keep it).
+                let (u, r) = self.signal(i, [&w.q[0], &w.q[1]], [&w.v[0], &w.v[1]]);
+                self.peaks.pass(i, t0, u, r);
+                self.stale[i] = false;
+                w.signal_acc
+                    .push(self.signal(i, [&w.acc[0], &w.acc[1]], [&w.acc[0], &w.acc[1]]).0);
+            } else {
+                self.stale[i] = true;
+                w.signal_acc.push(0.0);
+            }
         }
     }
 
@@ -251,6 +283,7 @@ impl Stepper<'_> {
     /// value at an end: that is taken at once, as a walk would take it. Returns whether anything
     /// must be looked into, and whether an onset can have no bound (a slab's waves fresh from a
     /// contact).
+    #[inline(never)] // PROFILE
     fn flag(&mut self, w: &mut Scratch, d: usize, part: Part, t0: f64) -> (bool, bool) {
         let (h, l) = (self.grid.h, (part.b - part.a) as f64 * self.grid.h);
         let t = t0 + part.b as f64 * h;
@@ -261,7 +294,7 @@ impl Stepper<'_> {
             w.depths.resize_with(d + 1, Depth::default);
         }
         let (parents, rest) = w.depths.split_at_mut(d);
-        let parent = parents.last();
+        let parent = Some(parents.last().unwrap_or(&w.root));
         let now = &mut rest[0];
         let (mut any, mut unbounded) = (false, false);
         now.onset.clear();
@@ -362,6 +395,7 @@ impl Stepper<'_> {
     /// `d`, as the whole stretch used to be: the onset at the first grid point where the overlap
     /// is positive, the largest closing motion and the peaks on the cubics between grid points.
     /// Returns the onset, if one was found (the slabs then stand at the grid point before it).
+    #[inline(never)] // PROFILE
     fn walk(
         &mut self,
         w: &mut Scratch,
@@ -474,7 +508,7 @@ impl Stepper<'_> {
         let np = self.points.len();
         let t = t0 + part.b as f64 * self.grid.h;
         let (parents, rest) = w.depths.split_at(d);
-        let parent = parents.last();
+        let parent = Some(parents.last().unwrap_or(&w.root));
         let now = &rest[0];
         for i in 0..np {
             let was = parent.is_none_or(|x| x.onset[i] || x.closing[i]);
@@ -493,6 +527,7 @@ impl Stepper<'_> {
 
     /// The largest closing motion of point i over [a, b] after the start of a free stretch from
     /// `y0`, on the exact motion: where its rate falls through zero.
+    #[inline(never)] // PROFILE
     pub(super) fn exact_max_closing(
         &self,
         i: usize,
@@ -506,7 +541,7 @@ impl Stepper<'_> {
             for (side, sign) in [(0, 1.0), (1, -1.0)] {
                 let sd = &self.sides[side];
                 for (k, y) in y0[side].iter().enumerate() {
-                    let (q, v) = propagator(sd.omega[k], sd.zeta[k], s).apply(y);
+                    let (q, v) = evaluate(sd.omega[k], sd.zeta[k], y, s);
                     c.0 += sign * p.r[side][k] * q;
                     c.1 += sign * p.r[side][k] * v;
                 }

@@ -33,7 +33,7 @@ use record::{Peaks, Signal};
 
 use super::elements::Element;
 use super::levels::Level;
-use super::modal::{Modes, Propagator, StepIntegrals, propagator, step_integrals};
+use super::modal::{Modes, Propagator, StepIntegrals, joined, propagator, step_integrals};
 use super::result::{BuildingEnergy, RawContact};
 use super::slab::{SlabMark, SlabWaves};
 use super::{BuildingScenario, ContactModel, SlabReading};
@@ -75,6 +75,9 @@ struct Side {
     full: Vec<StepIntegrals>,
     /// Integrals over j fine steps, per mode, computed when first needed.
     part: Vec<Option<Vec<StepIntegrals>>>,
+    /// Per mode, the integrals and the exact map over 2^b fine steps, b = 0, 1, ...: any number of
+    /// fine steps joins a few of them.
+    doublings: Vec<Vec<(StepIntegrals, [[f64; 4]; 4])>>,
     /// Newmark's effective stiffness over h, per mode.
     k_hat: Vec<f64>,
 }
@@ -111,6 +114,9 @@ impl Side {
                 .map(|k| newmark_k_hat(modes.omega_rad_s[k], modes.damping[k], h))
                 .collect(),
             part: vec![None; grid.per_free_step + 1],
+            doublings: (0..n)
+                .map(|k| doublings(modes.omega_rad_s[k], modes.damping[k], h, grid.per_free_step))
+                .collect(),
             omega: modes.omega_rad_s.clone(),
             zeta: modes.damping.clone(),
             gamma: modes.participation.clone(),
@@ -136,6 +142,34 @@ impl Side {
     /// Floor f's displacement from modal coordinates `q`.
     fn floor(&self, q: &[f64], f: usize) -> f64 {
         (0..q.len()).map(|k| self.shapes[k][f] * q[k]).sum()
+    }
+}
+
+/// The integrals and exact maps over 1, 2, 4, ... fine steps of one mode, as many as `steps`
+/// needs.
+fn doublings(omega: f64, zeta: f64, h: f64, steps: usize) -> Vec<(StepIntegrals, [[f64; 4]; 4])> {
+    let mut out = vec![(step_integrals(omega, zeta, h), full_map(omega, zeta, h))];
+    while (1usize << out.len()) <= steps {
+        let (ints, phi) = out.last().expect("one at least");
+        out.push((joined(ints, phi, ints), mul4(phi, phi)));
+    }
+    out
+}
+
+impl Side {
+    /// Mode k's integrals over j fine steps, joined from its doublings.
+    fn integrals_over(&self, k: usize, j: usize) -> StepIntegrals {
+        let mut acc: Option<(StepIntegrals, [[f64; 4]; 4])> = None;
+        for (b, (ints, phi)) in self.doublings[k].iter().enumerate() {
+            if j & (1 << b) == 0 {
+                continue;
+            }
+            acc = Some(match acc {
+                None => (*ints, *phi),
+                Some((a_ints, a_phi)) => (joined(&a_ints, &a_phi, ints), mul4(phi, &a_phi)),
+            });
+        }
+        acc.map_or_else(StepIntegrals::default, |(ints, _)| ints)
     }
 }
 
@@ -229,6 +263,9 @@ pub(super) struct Stepper<'a> {
     pub record: Record,
     signals: Vec<Signal>,
     peaks: Peaks,
+    /// Signals whose last instant the free stretches have not kept (they could not reach their
+    /// peak there): the next look at them starts afresh.
+    stale: Vec<bool>,
     pub steps: usize,
     pub contact_steps: usize,
     sears: bool,
@@ -250,7 +287,8 @@ struct Scratch {
     v: [Vec<f64>; 2],
     /// Modal accelerations.
     acc: [Vec<f64>; 2],
-    /// Each mode's bounds on its fourth and fifth derivatives over the stretch.
+    /// Each mode's bounds on its size and on its fourth and fifth derivatives over the stretch.
+    size: [Vec<f64>; 2],
     m4: [Vec<f64>; 2],
     m5: [Vec<f64>; 2],
     /// Each point's closing motion, its rate and acceleration at the last point looked at.
@@ -262,7 +300,8 @@ struct Scratch {
     point_m5: Vec<f64>,
     signal_m4: Vec<f64>,
     signal_m5: Vec<f64>,
-    /// What each depth of the halving still looks into.
+    /// What the stretch must be looked into for at all, and each depth of its halving.
+    root: Depth,
     depths: Vec<Depth>,
     /// The live slabs' states before the grid step being walked.
     marks: Vec<[Option<SlabMark>; 2]>,
@@ -322,6 +361,7 @@ impl<'a> Stepper<'a> {
             motion,
             grid,
             peaks: Peaks::new(signals.len()),
+            stale: vec![false; signals.len()],
             record: Record::new(
                 sc.left.storeys,
                 sc.right.storeys,

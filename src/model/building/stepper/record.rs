@@ -188,28 +188,27 @@ impl Stepper<'_> {
     }
 
     /// Every signal's peak brought up to the current state.
+    #[inline(never)] // PROFILE
     pub(super) fn track_peaks_now(&mut self) {
         let t = self.time();
-        let (q, v) = (
-            [
-                std::mem::take(&mut self.sides[0].q),
-                std::mem::take(&mut self.sides[1].q),
-            ],
-            [
-                std::mem::take(&mut self.sides[0].v),
-                std::mem::take(&mut self.sides[1].v),
-            ],
-        );
-        for i in 0..self.signals.len() {
-            if self.signals[i].same_as.is_none() {
-                let (u, r) = self.signal(i, [&q[0], &q[1]], [&v[0], &v[1]]);
+        for (i, sig) in self.signals.iter().enumerate() {
+            if sig.same_as.is_some() {
+                continue;
+            }
+            let side = &self.sides[sig.side];
+            let (mut u, mut r) = (0.0, 0.0);
+            for ((c, q), v) in sig.coef.iter().zip(&side.q).zip(&side.v) {
+                u += c * q;
+                r += c * v;
+            }
+            if self.stale[i] {
+                // Left alone since its last instant, where a bound kept it below its peak.
+                self.peaks.pass(i, t, u, r);
+                self.stale[i] = false;
+            } else {
                 self.peaks.update(i, t, u, r);
             }
         }
-        let [q0, q1] = q;
-        let [v0, v1] = v;
-        (self.sides[0].q, self.sides[1].q) = (q0, q1);
-        (self.sides[0].v, self.sides[1].v) = (v0, v1);
     }
 
     /// Peaks of each floor, each storey's drift ratio and each point.
@@ -246,6 +245,7 @@ impl Stepper<'_> {
     }
 
     /// Records the current state as a sample of the histories.
+    #[inline(never)] // PROFILE
     pub(super) fn record_now(&mut self) {
         if !self.histories {
             return;
