@@ -19,7 +19,8 @@ use pounding::model::building::{
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
-    let usage = "usage: building_loop PRESET CONTACT solve|estimate|none|all REPEATS [KEY=VALUE ...]";
+    let usage =
+        "usage: building_loop PRESET CONTACT solve|estimate|none|all REPEATS [KEY=VALUE ...]";
     let (Some(preset_name), Some(contact), Some(stage), Some(Ok(repeats))) = (
         args.get(1),
         args.get(2).and_then(|c| ContactModel::from_name(c)),

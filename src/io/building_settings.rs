@@ -6,7 +6,9 @@ pub use super::motion::MotionSpec;
 use super::motion::Units;
 use super::registry::{Entry, Registry, Target, number, put, uniform, word};
 use super::settings::SettingValue;
-use crate::model::building::{Building, BuildingScenario, ContactModel, DampingModel, SlabReading};
+use crate::model::building::{
+    Building, BuildingScenario, ContactModel, DampingModel, Recording, SlabReading,
+};
 use crate::model::error::InputError;
 use crate::model::settings::building as setting;
 
@@ -340,6 +342,11 @@ pub static BUILDINGS: Registry<BuildingSetup> = Registry {
             &setting::MAX_STEPS,
             |s, _| number(s.scenario.max_steps as f64),
             |s, t, v| put(&mut s.scenario.max_steps, t.count(v)),
+        ),
+        E::new(
+            &setting::RECORD,
+            |s, _| word(s.scenario.recording.name()),
+            |s, t, v| put(&mut s.scenario.recording, t.choice(v, Recording::from_name)),
         ),
     ],
 };

@@ -153,7 +153,8 @@ impl GpuHistory {
                     *dt_s
                 }
                 History::Steps { .. } | History::Segments { .. } => {
-                    let dt = (w.round_trip_s() / STEP_SAMPLES_PER_ROUND_TRIP).max(w.end_s / per_bar);
+                    let dt =
+                        (w.round_trip_s() / STEP_SAMPLES_PER_ROUND_TRIP).max(w.end_s / per_bar);
                     let n = (w.end_s / dt).ceil() as usize + 2;
                     samples.extend((0..n).map(|k| w.history_at(k as f64 * dt) as f32));
                     dt

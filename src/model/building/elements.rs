@@ -87,7 +87,6 @@ impl Element {
     }
 
     /// Contact force before clipping (a Kelvin-Voigt link's sign says whether it still pushes).
-    #[inline(never)] // PROFILE
     pub fn push(&self, delta: f64, rate: f64, v0: f64) -> f64 {
         let elastic = self.law.force(delta);
         match self.dashpot {

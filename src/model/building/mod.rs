@@ -105,6 +105,38 @@ impl ContactModel {
     }
 }
 
+/// What a run records of its histories.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Recording {
+    /// What a plot needs: the end of every free step, a few samples per contact time scale
+    /// inside contacts, and where a contact opens or closes.
+    #[default]
+    Plot,
+    /// Every step the solver takes (the free steps' ends, and inside contacts each step): a
+    /// contact exported in full.
+    Steps,
+}
+
+impl Recording {
+    /// Both, in the order the front ends list them.
+    pub const ALL: [Recording; 2] = [Recording::Plot, Recording::Steps];
+    /// Their names, in the order of [`Recording::ALL`].
+    pub const NAMES: [&'static str; 2] = crate::model::names_of!(Self::ALL, 2);
+
+    /// The name presets and the command line use.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Recording::Plot => "plot",
+            Recording::Steps => "steps",
+        }
+    }
+
+    /// The one of that name.
+    pub fn from_name(s: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|r| r.name() == s)
+    }
+}
+
 /// Sears reading for buildings: the paper's delayed planes or the slab ends (d -> 0).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum SlabReading {

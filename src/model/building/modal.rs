@@ -341,7 +341,11 @@ const MAX_DECAY: f64 = 1.0;
 
 /// The integrals over a step of length a + b from those over a (whose exact map is `phi_a`) and
 /// those over b: the second part's integrands start from the state at a, y(a) = Phi(a) y0.
-pub fn joined(first: &StepIntegrals, phi_a: &[[f64; 4]; 4], second: &StepIntegrals) -> StepIntegrals {
+pub fn joined(
+    first: &StepIntegrals,
+    phi_a: &[[f64; 4]; 4],
+    second: &StepIntegrals,
+) -> StepIntegrals {
     let int_q = std::array::from_fn(|j| {
         first.int_q[j] + (0..4).map(|k| second.int_q[k] * phi_a[k][j]).sum::<f64>()
     });
@@ -349,7 +353,9 @@ pub fn joined(first: &StepIntegrals, phi_a: &[[f64; 4]; 4], second: &StepIntegra
         std::array::from_fn(|j| (0..4).map(|k| second.w[i][k] * phi_a[k][j]).sum())
     });
     let w = std::array::from_fn(|i| {
-        std::array::from_fn(|j| first.w[i][j] + (0..4).map(|k| phi_a[k][i] * w_phi[k][j]).sum::<f64>())
+        std::array::from_fn(|j| {
+            first.w[i][j] + (0..4).map(|k| phi_a[k][i] * w_phi[k][j]).sum::<f64>()
+        })
     });
     StepIntegrals { int_q, w }
 }
@@ -434,13 +440,20 @@ mod tests {
         let (a, b) = (3.0e-3, 4.5e-3);
         let p = propagator(omega, zeta, a);
         let phi = [p.q, p.v, [0.0, 0.0, 1.0, a], [0.0, 0.0, 0.0, 1.0]];
-        let both = joined(&step_integrals(omega, zeta, a), &phi, &step_integrals(omega, zeta, b));
+        let both = joined(
+            &step_integrals(omega, zeta, a),
+            &phi,
+            &step_integrals(omega, zeta, b),
+        );
         let whole = step_integrals(omega, zeta, a + b);
         for j in 0..4 {
             assert!((both.int_q[j] - whole.int_q[j]).abs() <= 1e-13 * (1.0 + whole.int_q[j].abs()));
             for i in 0..4 {
                 let scale = whole.w[i][i].abs().max(whole.w[j][j].abs()).max(1e-300);
-                assert!((both.w[i][j] - whole.w[i][j]).abs() <= 1e-12 * scale, "{i} {j}");
+                assert!(
+                    (both.w[i][j] - whole.w[i][j]).abs() <= 1e-12 * scale,
+                    "{i} {j}"
+                );
             }
         }
     }

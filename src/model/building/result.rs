@@ -3,8 +3,8 @@
 
 use super::levels::Level;
 use super::modal::Modes;
-use super::{ContactModel, Warning};
 use super::slab::SlabWaves;
+use super::{ContactModel, Warning};
 use crate::model::field::BarWaves;
 use std::sync::OnceLock;
 

@@ -215,6 +215,8 @@ pub struct BuildingScenario {
     pub max_step_s: f64,
     /// The step budget of a run.
     pub max_steps: usize,
+    /// What the run records of its histories.
+    pub recording: super::Recording,
     /// Velocities of the buildings relative to the ground at t = 0 [m/s], every floor alike
     /// (free-vibration and isolated-impact studies); zero for an earthquake.
     pub initial_velocity_m_s: [f64; 2],
@@ -248,6 +250,7 @@ impl BuildingScenario {
             steps_per_scale: None,
             max_step_s: 0.005,
             max_steps: 20_000_000,
+            recording: super::Recording::Plot,
             initial_velocity_m_s: [0.0, 0.0],
         }
     }

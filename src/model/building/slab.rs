@@ -87,11 +87,7 @@ impl Ring {
 
     #[inline]
     fn at(&self, i: isize) -> f64 {
-        if i < 0 {
-            0.0
-        } else {
-            self.masked(i as usize)
-        }
+        if i < 0 { 0.0 } else { self.masked(i as usize) }
     }
 
     /// The sample at index i (at or after 0, within the ring's reach).
@@ -193,6 +189,11 @@ pub struct SlabWaves {
     window: usize,
     /// Material damping 1 / t_d [1/s].
     decay_per_s: f64,
+    /// The step's constants: 1 / (1 - r w) for the recursion's newest weight w, the weight of
+    /// the newest Q in the plane's look-ups, and e1 (what the newest force moves the plane by).
+    gain: f64,
+    top: f64,
+    e1: f64,
     tau_steps: f64,
     a: f64,
     b: f64,
@@ -265,6 +266,10 @@ impl SlabWaves {
         let reach = recur.reach().max(near.reach()).max(far.reach());
         let round_steps = t / h;
         let window = reach + 4;
+        let gain = 1.0 / (1.0 - decay(t) * recur.newest);
+        let top = decay(tau) * near.newest + decay(t - tau) * far.newest;
+        let (inv_z, inv_m) = (1.0 / slab.impedance_n_s_m(mass_kg), 1.0 / mass_kg);
+        let e1 = inv_z * top * 0.5 * h * gain - inv_m * 0.25 * h * h;
         SlabWaves {
             inv_z: 1.0 / slab.impedance_n_s_m(mass_kg),
             inv_m: 1.0 / mass_kg,
@@ -279,6 +284,9 @@ impl SlabWaves {
             round_steps,
             window,
             decay_per_s: 1.0 / decay_time,
+            gain,
+            top,
+            e1,
             tau_steps: tau / h,
             a: 0.0,
             b: 0.0,
@@ -312,7 +320,6 @@ impl SlabWaves {
 
     /// The elastic displacement at the plane after one more step, as e0 + e1 F_{n+1} (while
     /// live).
-    #[inline(never)] // PROFILE
     pub fn predict(&self) -> (f64, f64) {
         debug_assert!(self.is_live());
         self.prediction().0
@@ -329,17 +336,13 @@ impl SlabWaves {
         let (e, h) = (self.step_decay, self.h);
         let a0 = e * self.a + 0.5 * h * e * self.f_prev;
         let b0 = e * self.b + 0.5 * h * (e * self.a + a0);
-        let gain = 1.0 / (1.0 - self.round_decay * self.recur.newest);
         let recur = self.q.known(&self.recur);
-        let q0 = (a0 + self.round_decay * recur) * gain;
-        let q1 = 0.5 * h * gain;
-        let top = self.near_weight * self.near.newest + self.far_weight * self.far.newest;
-        let known = self.near_weight * self.q.known(&self.near)
-            + self.far_weight * self.q.known(&self.far);
-        let e0 = self.inv_z * (known + top * q0) - self.inv_m * b0;
-        let e1 = self.inv_z * top * q1 - self.inv_m * 0.25 * h * h;
-        self.predicted.set(Some((self.q.next, e0, e1, recur)));
-        ((e0, e1), recur)
+        let q0 = (a0 + self.round_decay * recur) * self.gain;
+        let known =
+            self.near_weight * self.q.known(&self.near) + self.far_weight * self.q.known(&self.far);
+        let e0 = self.inv_z * (known + self.top * q0) - self.inv_m * b0;
+        self.predicted.set(Some((self.q.next, e0, self.e1, recur)));
+        ((e0, self.e1), recur)
     }
 
     /// The elastic displacement at grid index `next` (the next step) as e0 + e1 F_next: the
@@ -357,22 +360,17 @@ impl SlabWaves {
 
     /// de/dF over one step: what the newest force moves the plane by (independent of the state).
     fn instant_compliance(&self) -> f64 {
-        let h = self.h;
-        let gain = 1.0 / (1.0 - self.round_decay * self.recur.newest);
-        let top = self.near_weight * self.near.newest + self.far_weight * self.far.newest;
-        self.inv_z * top * 0.5 * h * gain - self.inv_m * 0.25 * h * h
+        self.e1
     }
 
     /// Advances one step with the force F_{n+1} (while live).
-    #[inline(never)] // PROFILE
     pub fn push(&mut self, force: f64) {
         let ((e0, e1), recur) = self.prediction();
         let (e, h) = (self.step_decay, self.h);
         let a1 = e * self.a + 0.5 * h * (e * self.f_prev + force);
         self.b = e * self.b + 0.5 * h * (e * self.a + a1);
         self.a = a1;
-        let gain = 1.0 / (1.0 - self.round_decay * self.recur.newest);
-        let q1 = (a1 + self.round_decay * recur) * gain;
+        let q1 = (a1 + self.round_decay * recur) * self.gain;
         self.q.push(q1);
         self.f_prev = force;
         self.elastic = e0 + e1 * force;
@@ -476,7 +474,6 @@ impl SlabWaves {
     /// the second: from the second on, e(t + T) = r e(t). The grid recursion is stepped on with
     /// zero force from the quiet window (a copy of its samples), the cheapest way to every grid
     /// point of two round trips.
-    #[inline(never)] // PROFILE
     fn tabulate_envelope(&self, q: &Quiet) -> [f64; 2] {
         let steps = self.round_steps.ceil() as usize + 1;
         // Q at indices q.n + 1 - len ..= q.n + 2 steps, in one buffer: the window, then the
@@ -543,7 +540,6 @@ impl SlabWaves {
 
     /// Starts stepping again at grid index `n` (at or after the quiet window's end): the samples
     /// the look-ups need are rebuilt from the closed form of the ringing.
-    #[inline(never)] // PROFILE
     pub fn revive(&mut self, n: usize) {
         let Some(q) = self.quiet.take() else {
             return;
@@ -600,7 +596,8 @@ impl SlabWaves {
                 let s = i as f64 - shift;
                 let base = s.floor() as isize;
                 let v = if base <= last - 2 {
-                    (w[0] * at(base - 1) + w[1] * at(base)) + (w[2] * at(base + 1) + w[3] * at(base + 2))
+                    (w[0] * at(base - 1) + w[1] * at(base))
+                        + (w[2] * at(base + 1) + w[3] * at(base + 2))
                 } else {
                     window_at(&q.q, q.n, s)
                 };

@@ -101,7 +101,8 @@ impl GroundMotion {
             return 0.0;
         }
         let p = t_s / self.dt_s;
-        let i = p.floor() as usize;
+        // p >= 0: truncation is the floor, without a call to one.
+        let i = p as usize;
         if i + 1 >= self.accel_m_s2.len() {
             return if i < self.accel_m_s2.len() && p == i as f64 {
                 self.accel_m_s2[i]

@@ -5,7 +5,7 @@
 #![allow(missing_docs)]
 
 use super::{Kind, Range, Setting, number, number_or};
-use crate::model::building::{ContactModel, DampingModel, SlabReading};
+use crate::model::building::{ContactModel, DampingModel, Recording, SlabReading};
 use crate::model::motion::Units;
 
 pub const CONTACT_MODEL: Setting = Setting {
@@ -366,6 +366,15 @@ pub const MAX_STEPS: Setting = Setting {
     default: "20000000",
 };
 
+pub const RECORD: Setting = Setting {
+    key: "solver.record",
+    label: "recorded samples",
+    unit: "",
+    help: "what the histories keep: what a plot needs (a few samples per contact time scale), or every step the solver takes",
+    kind: Kind::Choice(&Recording::NAMES),
+    default: "plot",
+};
+
 /// The settings of two buildings pounding.
 pub static BUILDING_SETTINGS: &[Setting] = &[
     CONTACT_MODEL,
@@ -404,4 +413,5 @@ pub static BUILDING_SETTINGS: &[Setting] = &[
     STEPS_PER_SCALE,
     MAX_STEP,
     MAX_STEPS,
+    RECORD,
 ];

@@ -33,6 +33,10 @@ pub(super) struct Scratch {
     use_full: bool,
     /// The slabs' instantaneous compliance, per point.
     compliance: Vec<f64>,
+    /// The ground acceleration where the step starts.
+    ground0: f64,
+    /// Each mode's load from the contact forces where the step starts, per side.
+    load_now: [Vec<f64>; 2],
     trial: Trial,
     before: Vec<f64>,
     u_before: Vec<(f64, f64)>,
@@ -46,7 +50,6 @@ impl Stepper<'_> {
     }
 
     /// A contact step of length hh (the last one of a graded start lands on the grid).
-    #[inline(never)] // PROFILE
     pub(super) fn contact_step_of(&mut self, hh: f64) -> Result<(), SolveError> {
         self.count_step()?;
         if !self.newmark {
@@ -68,6 +71,19 @@ impl Stepper<'_> {
             .contact_scratch
             .take()
             .expect("the scratch is home between stages");
+        cs.ground0 = self.motion.at(self.time());
+        for s in 0..2 {
+            let sign = if s == 0 { -1.0 } else { 1.0 };
+            let n = self.sides[s].modes();
+            cs.load_now[s].resize(n, 0.0);
+            for k in 0..n {
+                let mut contact_now = 0.0;
+                for p in &self.points {
+                    contact_now += sign * p.r[s][k] * p.force;
+                }
+                cs.load_now[s][k] = contact_now;
+            }
+        }
         self.trial(hh, &mut cs);
         // A quiet slab (its waves only ringing) starts stepping where its level is pushed.
         if self.sears && self.revive_pushed(&cs.trial.forces) {
@@ -133,7 +149,6 @@ impl Stepper<'_> {
     }
 
     /// A contact step of length hh, not yet taken, into `cs.trial`.
-    #[inline(never)] // PROFILE
     fn trial(&self, hh: f64, cs: &mut Scratch) {
         let ground = self.motion.at(self.time() + hh);
         self.free_increment(hh, ground, cs);
@@ -161,11 +176,11 @@ impl Stepper<'_> {
     /// steps lose nothing to cancellation: each mode's effective stiffness and its increment
     /// over hh without a change of the contact forces (the ground at the step's end given).
     fn free_increment(&self, hh: f64, ground: f64, cs: &mut Scratch) {
-        let ground_change = ground - self.motion.at(self.time());
+        let ground_change = ground - cs.ground0;
         let full = (hh - self.grid.h).abs() <= 1e-12 * hh;
         for s in 0..2 {
             let side = &self.sides[s];
-            let sign = if s == 0 { -1.0 } else { 1.0 };
+
             let n = side.modes();
             cs.k_hat[s].resize(n, 0.0);
             cs.step[s].resize(n, 0.0);
@@ -176,10 +191,7 @@ impl Stepper<'_> {
                     newmark_k_hat(side.omega[k], side.zeta[k], hh)
                 };
                 let c = 2.0 * side.zeta[k] * side.omega[k];
-                let mut contact_now = 0.0;
-                for p in &self.points {
-                    contact_now += sign * p.r[s][k] * p.force;
-                }
+                let contact_now = cs.load_now[s][k];
                 let load = -side.gamma[k] * ground_change - contact_now
                     + (4.0 / hh + 2.0 * c) * side.v[k]
                     + 2.0 * side.a[k];
@@ -304,12 +316,11 @@ impl Stepper<'_> {
     }
 
     /// Takes the trial step: the modes, the slabs, the ledger and the contacts.
-    #[inline(never)] // PROFILE
     fn commit_contact(&mut self, cs: &mut Scratch) {
         let tr = &cs.trial;
         let hh = tr.hh;
         let t0 = self.time();
-        let ground0 = self.motion.at(t0);
+        let ground0 = cs.ground0;
         cs.before.clear();
         cs.before.extend(self.points.iter().map(|p| p.force));
         cs.u_before.clear();

@@ -54,7 +54,6 @@ impl Stepper<'_> {
 
     /// Writes a free stretch of length `len` from `y0` to the ledger and moves the state to
     /// (`q1`, `v1`): the exact integrals of the ground's power and of the damping.
-    #[inline(never)] // PROFILE
     pub(super) fn commit_free(
         &mut self,
         y0: [&[[f64; 4]]; 2],
@@ -76,7 +75,11 @@ impl Stepper<'_> {
                 && j < self.grid.per_free_step
                 && side.part[j].is_none()
             {
-                side.part[j] = Some((0..side.modes()).map(|k| side.integrals_over(k, j)).collect());
+                side.part[j] = Some(
+                    (0..side.modes())
+                        .map(|k| side.integrals_over(k, j))
+                        .collect(),
+                );
             }
             for k in 0..side.modes() {
                 let ints = match j {
@@ -98,7 +101,13 @@ impl Stepper<'_> {
     }
 
     /// Both sides' exact states j fine steps after the start of the stretch from `y0`.
-    fn states_at(&self, y0: &[Vec<[f64; 4]>; 2], j: usize, q: &mut [Vec<f64>; 2], v: &mut [Vec<f64>; 2]) {
+    fn states_at(
+        &self,
+        y0: &[Vec<[f64; 4]>; 2],
+        j: usize,
+        q: &mut [Vec<f64>; 2],
+        v: &mut [Vec<f64>; 2],
+    ) {
         for s in 0..2 {
             for (k, p) in self.sides[s].sub[j - 1].iter().enumerate() {
                 let (qk, vk) = p.apply(&y0[s][k]);
@@ -111,7 +120,6 @@ impl Stepper<'_> {
     /// One free stretch from a grid point to the next sample of the record (or the longest free
     /// step). Its parts are checked against the bounds; a part a bound cannot clear is halved
     /// until what is left near an onset or a peak is walked grid point by grid point.
-    #[inline(never)] // PROFILE
     pub(super) fn free_step(&mut self) -> Result<Free, SolveError> {
         self.newmark = false;
         let g = self.grid;
@@ -119,7 +127,10 @@ impl Stepper<'_> {
         let len = (g.per_free_step - self.n % g.per_free_step).min(g.total - self.n);
         self.count_step()?;
         let t0 = self.time();
-        let mut w = self.scratch.take().expect("the scratch is home between stages");
+        let mut w = self
+            .scratch
+            .take()
+            .expect("the scratch is home between stages");
         self.prepare(&mut w, t0, len);
         let mut a = 0;
         while a < len {
@@ -154,7 +165,6 @@ impl Stepper<'_> {
 
     /// Checks a part at depth `d` of the halving (for what its parent left open): clears it,
     /// halves it, or walks it. Returns the onset, if one was found in it.
-    #[inline(never)] // PROFILE
     fn refine(
         &mut self,
         w: &mut Scratch,
@@ -223,21 +233,24 @@ impl Stepper<'_> {
         w.point_m5.clear();
         for p in &self.points {
             let (c, cv) = self.point_state(p, [&w.q[0], &w.q[1]], [&w.v[0], &w.v[1]]);
-            let ca = self.point_state(p, [&w.acc[0], &w.acc[1]], [&w.acc[0], &w.acc[1]]).0;
+            let ca = self
+                .point_state(p, [&w.acc[0], &w.acc[1]], [&w.acc[0], &w.acc[1]])
+                .0;
             w.prev.push([c, cv, ca]);
             w.point_m4
                 .push(weighted(&p.r[0], &w.m4[0]) + weighted(&p.r[1], &w.m4[1]));
             w.point_m5
                 .push(weighted(&p.r[0], &w.m5[0]) + weighted(&p.r[1], &w.m5[1]));
-            let size = (weighted(&p.r[0], &w.size[0]) + weighted(&p.r[1], &w.size[1]))
-                * (1.0 + ROUNDING);
+            let size =
+                (weighted(&p.r[0], &w.size[0]) + weighted(&p.r[1], &w.size[1])) * (1.0 + ROUNDING);
             let elastic = if self.sears {
                 p.elastic_bound_from(self.n)
             } else {
                 0.0
             };
             root.onset.push(contact && size + elastic >= self.sc.gap_m);
-            root.closing.push(size >= p.max_closing - 1e-6 * p.max_closing.abs());
+            root.closing
+                .push(size >= p.max_closing - 1e-6 * p.max_closing.abs());
         }
         w.signal_m4.clear();
         w.signal_m5.clear();
@@ -253,8 +266,10 @@ impl Stepper<'_> {
                 let (u, r) = self.signal(i, [&w.q[0], &w.q[1]], [&w.v[0], &w.v[1]]);
                 self.peaks.pass(i, t0, u, r);
                 self.stale[i] = false;
-                w.signal_acc
-                    .push(self.signal(i, [&w.acc[0], &w.acc[1]], [&w.acc[0], &w.acc[1]]).0);
+                w.signal_acc.push(
+                    self.signal(i, [&w.acc[0], &w.acc[1]], [&w.acc[0], &w.acc[1]])
+                        .0,
+                );
             } else {
                 self.stale[i] = true;
                 w.signal_acc.push(0.0);
@@ -283,7 +298,6 @@ impl Stepper<'_> {
     /// value at an end: that is taken at once, as a walk would take it. Returns whether anything
     /// must be looked into, and whether an onset can have no bound (a slab's waves fresh from a
     /// contact).
-    #[inline(never)] // PROFILE
     fn flag(&mut self, w: &mut Scratch, d: usize, part: Part, t0: f64) -> (bool, bool) {
         let (h, l) = (self.grid.h, (part.b - part.a) as f64 * self.grid.h);
         let t = t0 + part.b as f64 * h;
@@ -301,7 +315,11 @@ impl Stepper<'_> {
         now.closing.clear();
         now.peak.clear();
         now.values.clear();
-        let (q, v, acc) = ([&w.q[0][..], &w.q[1]], [&w.v[0][..], &w.v[1]], [&w.acc[0][..], &w.acc[1]]);
+        let (q, v, acc) = (
+            [&w.q[0][..], &w.q[1]],
+            [&w.v[0][..], &w.v[1]],
+            [&w.acc[0][..], &w.acc[1]],
+        );
         for i in 0..self.points.len() {
             let (open_onset, open_closing) =
                 parent.map_or((true, true), |x| (x.onset[i], x.closing[i]));
@@ -395,7 +413,6 @@ impl Stepper<'_> {
     /// `d`, as the whole stretch used to be: the onset at the first grid point where the overlap
     /// is positive, the largest closing motion and the peaks on the cubics between grid points.
     /// Returns the onset, if one was found (the slabs then stand at the grid point before it).
-    #[inline(never)] // PROFILE
     fn walk(
         &mut self,
         w: &mut Scratch,
@@ -426,7 +443,11 @@ impl Stepper<'_> {
                     }));
                 }
             }
-            let (q, v, acc) = ([&w.q[0][..], &w.q[1]], [&w.v[0][..], &w.v[1]], [&w.acc[0][..], &w.acc[1]]);
+            let (q, v, acc) = (
+                [&w.q[0][..], &w.q[1]],
+                [&w.v[0][..], &w.v[1]],
+                [&w.acc[0][..], &w.acc[1]],
+            );
             let mut onset = None;
             for i in 0..self.points.len() {
                 if !(open.onset[i] || open.closing[i]) {
@@ -527,7 +548,6 @@ impl Stepper<'_> {
 
     /// The largest closing motion of point i over [a, b] after the start of a free stretch from
     /// `y0`, on the exact motion: where its rate falls through zero.
-    #[inline(never)] // PROFILE
     pub(super) fn exact_max_closing(
         &self,
         i: usize,
@@ -617,7 +637,8 @@ impl Stepper<'_> {
 
     pub(super) fn advance(&mut self, len: f64) {
         let t = self.offset + len;
-        let whole = (t / self.grid.h + 1e-9).floor();
+        // t >= 0: truncation is the floor, without a call to one.
+        let whole = ((t / self.grid.h + 1e-9) as usize) as f64;
         self.n += whole as usize;
         self.offset = t - whole * self.grid.h;
         if self.offset < 1e-9 * self.grid.h {

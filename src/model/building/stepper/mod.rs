@@ -115,7 +115,14 @@ impl Side {
                 .collect(),
             part: vec![None; grid.per_free_step + 1],
             doublings: (0..n)
-                .map(|k| doublings(modes.omega_rad_s[k], modes.damping[k], h, grid.per_free_step))
+                .map(|k| {
+                    doublings(
+                        modes.omega_rad_s[k],
+                        modes.damping[k],
+                        h,
+                        grid.per_free_step,
+                    )
+                })
                 .collect(),
             omega: modes.omega_rad_s.clone(),
             zeta: modes.damping.clone(),
@@ -400,7 +407,8 @@ impl<'a> Stepper<'a> {
     /// interval that starts at or before t.
     fn ground(&self, t: f64) -> (f64, f64) {
         let dt = self.motion.dt_s;
-        let i = ((t / dt) + 1e-9).floor();
+        // t >= 0: truncation is the floor.
+        let i = (((t / dt) + 1e-9) as usize) as f64;
         let t0 = i * dt;
         let slope = (self.motion.at(t0 + dt) - self.motion.at(t0)) / dt;
         (self.motion.at(t), slope)
@@ -539,7 +547,13 @@ impl<'a> Stepper<'a> {
 
 /// A contact point at `level`: its element, its projections onto both buildings' modes and, for
 /// the Sears contact, its slabs.
-fn new_point(sc: &BuildingScenario, sides: &[Side; 2], level: &Level, h: f64, sears: bool) -> Point {
+fn new_point(
+    sc: &BuildingScenario,
+    sides: &[Side; 2],
+    level: &Level,
+    h: f64,
+    sears: bool,
+) -> Point {
     let attach = [level.left, level.right];
     let r: [Vec<f64>; 2] = std::array::from_fn(|s| {
         let w = attach[s].weights();

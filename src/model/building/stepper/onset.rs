@@ -6,7 +6,6 @@ impl Stepper<'_> {
     /// A contact starts at `level` inside the j-th fine step of the free stretch that began at
     /// the current time: move there exactly (the slabs already stand at the grid point before
     /// it), then into contact.
-    #[inline(never)] // PROFILE
     pub(super) fn onset(&mut self, j: usize, level: usize) -> Result<(), SolveError> {
         let g = self.grid;
         let t0 = self.time();
@@ -42,7 +41,6 @@ impl Stepper<'_> {
     }
 
     /// A contact starts at `level` within the next `len` of time from now.
-    #[inline(never)] // PROFILE
     pub(super) fn onset_in_partial(&mut self, level: usize, len: f64) -> Result<(), SolveError> {
         if self.sears {
             // The slabs' waves are known on the grid only: the contact starts from this grid

@@ -188,7 +188,6 @@ impl Stepper<'_> {
     }
 
     /// Every signal's peak brought up to the current state.
-    #[inline(never)] // PROFILE
     pub(super) fn track_peaks_now(&mut self) {
         let t = self.time();
         for (i, sig) in self.signals.iter().enumerate() {
@@ -245,7 +244,6 @@ impl Stepper<'_> {
     }
 
     /// Records the current state as a sample of the histories.
-    #[inline(never)] // PROFILE
     pub(super) fn record_now(&mut self) {
         if !self.histories {
             return;
@@ -257,15 +255,14 @@ impl Stepper<'_> {
         let rec = &mut self.record;
         rec.time_s.push(t);
         rec.ground.push(ground);
-        for s in 0..2 {
-            let side = &self.sides[s];
+        for (s, (side, roof_a)) in self.sides.iter().zip(roof_a).enumerate() {
             for f in 0..side.heights.len() {
                 rec.floors[s][f].push(side.floor(&side.q, f));
                 rec.floor_v[s][f].push(side.floor(&side.v, f));
             }
             let roof = side.heights.len() - 1;
             rec.roof_v[s].push(side.floor(&side.v, roof));
-            rec.roof_a[s].push(roof_a[s] + ground);
+            rec.roof_a[s].push(roof_a + ground);
         }
         let mut total = 0.0;
         for (l, p) in self.points.iter().enumerate() {
@@ -278,7 +275,10 @@ impl Stepper<'_> {
     /// Inside contacts: records the state where a contact opened or closed in the last step, or
     /// where the last sample is `contact_sample_s` old.
     pub(super) fn record_in_contact(&mut self, opened_or_closed: bool) {
-        if opened_or_closed || self.time() >= self.record.last_time() + self.record.contact_sample_s
+        let every_step = self.sc.recording == crate::model::building::Recording::Steps;
+        if opened_or_closed
+            || every_step
+            || self.time() >= self.record.last_time() + self.record.contact_sample_s
         {
             self.record_now();
         }
