@@ -348,3 +348,51 @@ fn an_isolated_impact_counts_the_initial_energy_and_raises_no_warning() {
         );
     }
 }
+
+#[test]
+fn a_streaming_run_hands_out_its_solution_so_far_and_ends_where_a_plain_run_does() {
+    // Each partial result is the run up to the instant it reached: its histories end there, its
+    // contacts and impacts are those begun by then, and the last result is the plain run's.
+    let m = pounding::io::motion::built_in("elcentro-1940")
+        .unwrap()
+        .truncated(8.0);
+    let sc = BuildingScenario::paper();
+    let plain = run(&sc, &m);
+    let mut partials = vec![];
+    let streamed = pounding::model::building::solve_streaming(
+        &sc,
+        &m,
+        pounding::model::control::Control::never(),
+        std::time::Duration::ZERO,
+        &mut |r| partials.push(r),
+    )
+    .unwrap();
+    assert!(partials.len() >= 3, "{} partial results", partials.len());
+    let mut reached = 0.0;
+    for p in &partials {
+        assert!(p.solved_to_s > reached && p.solved_to_s < 8.0);
+        reached = p.solved_to_s;
+        assert!(p.time_s.last().unwrap() <= &(p.solved_to_s + 1e-12));
+        assert!(p.contacts.iter().all(|c| c.start_s <= p.solved_to_s));
+        // What it has so far is what the whole run has up to there.
+        let before: Vec<_> = plain
+            .contacts
+            .iter()
+            .filter(|c| c.end_s <= p.solved_to_s)
+            .collect();
+        let closed: Vec<_> = p
+            .contacts
+            .iter()
+            .filter(|c| c.end_s < p.solved_to_s)
+            .collect();
+        assert_eq!(before.len(), closed.len());
+        for (a, b) in before.iter().zip(&closed) {
+            assert_eq!(a.start_s, b.start_s);
+            assert_eq!(a.peak_force_n, b.peak_force_n);
+        }
+    }
+    assert_eq!(streamed.solved_to_s, plain.solved_to_s);
+    assert_eq!(streamed.max_pounding_force_n, plain.max_pounding_force_n);
+    assert_eq!(streamed.impacts, plain.impacts);
+    assert_eq!(streamed.time_s, plain.time_s);
+}

@@ -29,7 +29,9 @@ pub use result::{
     group_impacts,
 };
 pub use scenario::{Building, BuildingScenario, SLAB_YOUNGS_MODULUS_PA, Slab};
-pub use solve::{solve, solve_summary, solve_summary_with, solve_with};
+pub use solve::{
+    PUBLISH_EVERY, solve, solve_streaming, solve_summary, solve_summary_with, solve_with,
+};
 pub use warning::Warning;
 
 /// The contact element between the buildings.

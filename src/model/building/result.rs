@@ -189,6 +189,9 @@ pub struct BuildingResult {
     pub energy: BuildingEnergy,
     /// What the run cost.
     pub stats: BuildingStats,
+    /// How far the run has solved [s]: the record's end once it has finished, less while a
+    /// streaming solve hands out what it has so far.
+    pub solved_to_s: f64,
     /// What the reader must know besides the numbers.
     pub warnings: Vec<Warning>,
 }

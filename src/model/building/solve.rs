@@ -2,7 +2,11 @@
 
 use super::elements::Element;
 use super::levels::Level;
-use super::result::{BuildingResult, BuildingStats, ImpactEvent, SlabRecord, group_impacts};
+use super::modal::Modes;
+use super::result::{
+    BuildingEnergy, BuildingResult, BuildingStats, ImpactEvent, RawContact, SlabRecord,
+    group_impacts,
+};
 use super::stepper::{Grid, Record, Stepper};
 use super::{BuildingScenario, ContactModel, SlabReading, Warning};
 use crate::model::contact::ContactLaw;
@@ -171,12 +175,49 @@ pub fn solve_summary_with(
     run(sc, motion, control, false)
 }
 
+/// [`solve_with`], handing `publish` what the run has solved so far, at most once per `every`
+/// of wall time (its histories to the instant solved, marked by
+/// [`BuildingResult::solved_to_s`]), so a window can draw a long run while it solves. It is
+/// called where the run looks at its control (every few thousand steps); `every` zero calls it
+/// at each.
+pub fn solve_streaming(
+    sc: &BuildingScenario,
+    motion: &GroundMotion,
+    control: &Control,
+    every: std::time::Duration,
+    publish: &mut dyn FnMut(BuildingResult),
+) -> Result<BuildingResult, SolveError> {
+    run_publishing(sc, motion, control, true, Some((every, publish)))
+}
+
+/// How much wall time the window lets pass between two partial results of a long run.
+pub const PUBLISH_EVERY: std::time::Duration = std::time::Duration::from_millis(40);
+
 /// A run, with its histories and waves when `histories`.
 fn run(
     sc: &BuildingScenario,
     motion: &GroundMotion,
     control: &Control,
     histories: bool,
+) -> Result<BuildingResult, SolveError> {
+    run_publishing(sc, motion, control, histories, None)
+}
+
+/// What every run shares: the levels, the modes, the grid, the warnings known before it starts.
+struct Setup {
+    levels: Vec<Level>,
+    modes: [Modes; 2],
+    grid: Grid,
+    warnings: Vec<Warning>,
+    start: Instant,
+}
+
+fn run_publishing(
+    sc: &BuildingScenario,
+    motion: &GroundMotion,
+    control: &Control,
+    histories: bool,
+    publish: Option<(std::time::Duration, &mut dyn FnMut(BuildingResult))>,
 ) -> Result<BuildingResult, SolveError> {
     sc.validate()?;
     let start = Instant::now();
@@ -188,9 +229,47 @@ fn run(
     }
     let mut warnings: Vec<Warning> = grid_warning.into_iter().collect();
     warnings.extend(paper_reading_warnings(sc, &levels));
-    let mut stepper = Stepper::new(sc, motion, grid, &levels, modes.clone(), histories);
-    stepper.run(control)?;
+    let setup = Setup {
+        levels,
+        modes,
+        grid,
+        warnings,
+        start,
+    };
+    let mut stepper = Stepper::new(
+        sc,
+        motion,
+        grid,
+        &setup.levels,
+        setup.modes.clone(),
+        histories,
+    );
+    match publish {
+        None => stepper.run(control)?,
+        Some((every, publish)) => {
+            let (mut last, mut reached) = (Instant::now(), 0.0);
+            let mut sink = |s: &Stepper| {
+                if s.time_s() > reached && last.elapsed() >= every {
+                    publish(partial(s, sc, &setup));
+                    (last, reached) = (Instant::now(), s.time_s());
+                }
+            };
+            stepper.run_watched(control, &mut sink)?
+        }
+    }
+    Ok(finished(stepper, sc, setup, histories))
+}
+
+/// The result of a run that reached its end.
+fn finished(
+    mut stepper: Stepper,
+    sc: &BuildingScenario,
+    mut setup: Setup,
+    histories: bool,
+) -> BuildingResult {
+    let grid = setup.grid;
     let end_s = grid.total as f64 * grid.h;
+    let mut warnings = std::mem::take(&mut setup.warnings);
     let (energy, still) = stepper.finish(end_s);
     if still {
         warnings.push(Warning::InContactAtEnd { end_s });
@@ -210,22 +289,62 @@ fn run(
         },
         end_s,
     );
-    let h = std::mem::replace(&mut stepper.record, Record::new(0, 0, 0, 0.0));
+    let record = std::mem::replace(&mut stepper.record, Record::new(0, 0, 0, 0.0));
+    let contacts = std::mem::take(&mut stepper.contacts);
+    let mut r = assemble(&stepper, sc, &setup, record, contacts, energy, slabs, end_s);
+    if sc.contact == ContactModel::Stereo {
+        r.warnings.extend(stereo_chatter(&r.impacts));
+    }
+    r.warnings.splice(0..0, warnings);
+    r
+}
+
+/// What a run has solved so far: its histories to now, the contacts so far (an open one up to
+/// now), the peaks so far, the energy so far.
+fn partial(stepper: &Stepper, sc: &BuildingScenario, setup: &Setup) -> BuildingResult {
+    let now = stepper.time_s();
+    let mut contacts = stepper.contacts.clone();
+    for c in contacts.iter_mut().filter(|c| c.end_s < c.start_s) {
+        c.end_s = now;
+    }
+    let mut r = assemble(
+        stepper,
+        sc,
+        setup,
+        stepper.record.clone(),
+        contacts,
+        stepper.energy_so_far(),
+        SlabRecord::default(),
+        now,
+    );
+    r.warnings = setup.warnings.clone();
+    r
+}
+
+/// A result from the stepper's state and what was taken from it.
+#[allow(clippy::too_many_arguments)]
+fn assemble(
+    stepper: &Stepper,
+    sc: &BuildingScenario,
+    setup: &Setup,
+    h: Record,
+    contacts: Vec<RawContact>,
+    energy: BuildingEnergy,
+    slabs: SlabRecord,
+    solved_to_s: f64,
+) -> BuildingResult {
     let roofs = [
         h.floors[0].last().cloned().unwrap_or_default(),
         h.floors[1].last().cloned().unwrap_or_default(),
     ];
     let max_by_level = stepper.max_forces();
-    let contacts = std::mem::take(&mut stepper.contacts);
     let impacts = group_impacts(&contacts, sc.merge_gap_s);
-    if sc.contact == ContactModel::Stereo {
-        warnings.extend(stereo_chatter(&impacts));
-    }
     let (peak_floor, peak_drift, peak_points) = stepper.peaks();
-    Ok(BuildingResult {
+    let grid = setup.grid;
+    BuildingResult {
         contact: sc.contact,
-        levels,
-        modes,
+        levels: setup.levels.clone(),
+        modes: setup.modes.clone(),
         time_s: h.time_s,
         ground_m_s2: h.ground,
         displacement_m: roofs,
@@ -255,10 +374,11 @@ fn run(
             fine_step_s: grid.h,
             coarse_step_s: grid.per_free_step as f64 * grid.h,
             steps_per_scale: sc.steps_per_scale(),
-            wall_time_s: start.elapsed().as_secs_f64(),
+            wall_time_s: setup.start.elapsed().as_secs_f64(),
         },
-        warnings,
-    })
+        solved_to_s,
+        warnings: vec![],
+    }
 }
 
 /// The validity number of the paper reading at each level (docs/model.md), a tau = k sum(tau_i /

@@ -428,6 +428,39 @@ impl<'a> Stepper<'a> {
 
     /// Runs to the end of the record, telling `control` how far it got.
     pub fn run(&mut self, control: &Control) -> Result<(), SolveError> {
+        self.run_watched(control, &mut |_| {})
+    }
+
+    /// The time reached [s].
+    pub fn time_s(&self) -> f64 {
+        self.time()
+    }
+
+    /// The energy ledger so far (the contacts' stored energy counted where they are open).
+    pub fn energy_so_far(&self) -> BuildingEnergy {
+        let stored: f64 = self
+            .points
+            .iter()
+            .filter(|p| p.force > 0.0)
+            .map(|p| p.element.stored_energy(p.delta))
+            .sum();
+        let l = self.ledger;
+        BuildingEnergy {
+            initial_j: l.initial_j,
+            input_j: l.input_j,
+            building_damping_j: l.damping_j,
+            contact_j: -l.contact_work_j - stored + l.exchanged_j,
+            final_j: self.sides[0].energy() + self.sides[1].energy(),
+            stored_contact_j: stored,
+        }
+    }
+
+    /// [`Stepper::run`], showing `watch` the run at every look at the control.
+    pub fn run_watched(
+        &mut self,
+        control: &Control,
+        watch: &mut dyn FnMut(&Stepper),
+    ) -> Result<(), SolveError> {
         let end = self.grid.total;
         let mut looked_at = 0;
         let mut looked_steps = 0;
@@ -438,6 +471,7 @@ impl<'a> Stepper<'a> {
                 control.report(self.n as f64 / end.max(1) as f64)?;
                 self.check_bounded()?;
                 self.check_memory()?;
+                watch(self);
                 looked_at = self.n + CHECK_EVERY * self.grid.per_free_step;
                 looked_steps = self.steps + CHECK_EVERY;
             }

@@ -125,6 +125,7 @@ impl Peaks {
 /// The histories, one column per quantity, sampled where a plot needs them: at the end of every
 /// free stretch, and inside contacts every `contact_sample_s`, where a contact opens or closes,
 /// and at the end.
+#[derive(Clone)]
 pub(in crate::model::building) struct Record {
     pub time_s: Vec<f64>,
     pub ground: Vec<f64>,
