@@ -139,6 +139,8 @@ struct Quiet {
     /// The largest |e| over the first round trip after `n` and over the second (from which
     /// the ringing repeats, attenuated), once asked for.
     envelope: std::cell::OnceCell<[f64; 2]>,
+    /// Whether it has never been struck (nothing rings).
+    silent: bool,
 }
 
 /// Cubic Lagrange interpolation in a window whose last sample has index `last`, at the fractional
@@ -297,6 +299,7 @@ impl SlabWaves {
             predicted: std::cell::Cell::new(None),
             quiet: Some(Quiet {
                 q: vec![0.0; window],
+                silent: true,
                 ..Quiet::default()
             }),
             spare: Quiet::default(),
@@ -359,7 +362,7 @@ impl SlabWaves {
     }
 
     /// de/dF over one step: what the newest force moves the plane by (independent of the state).
-    fn instant_compliance(&self) -> f64 {
+    pub fn instant_compliance(&self) -> f64 {
         self.e1
     }
 
@@ -457,7 +460,7 @@ impl SlabWaves {
         let Some(q) = &self.quiet else {
             return f64::INFINITY;
         };
-        if q.a == 0.0 && q.b == 0.0 && q.q.iter().all(|&x| x == 0.0) {
+        if q.silent {
             return 0.0;
         }
         let [early, late] = *q.envelope.get_or_init(|| self.tabulate_envelope(q));
@@ -535,6 +538,7 @@ impl SlabWaves {
         q.b = self.b;
         q.envelope = std::cell::OnceCell::new();
         self.q.newest(self.window, &mut q.q);
+        q.silent = q.a == 0.0 && q.b == 0.0 && q.q.iter().all(|&x| x == 0.0);
         self.quiet = Some(q);
     }
 

@@ -33,6 +33,13 @@ pub(super) struct Scratch {
     use_full: bool,
     /// The slabs' instantaneous compliance, per point.
     compliance: Vec<f64>,
+    /// Per point: out of reach this step (its slabs' ringing not read), the bound on that
+    /// ringing, and whether it was found within reach after all (then read exactly).
+    far: Vec<bool>,
+    far_bound: Vec<f64>,
+    near_forced: Vec<bool>,
+    /// Per point: its overlap at the step's start is a bound, not read exactly.
+    bounded: Vec<bool>,
     /// The ground acceleration where the step starts.
     ground0: f64,
     /// Each mode's load from the contact forces where the step starts, per side.
@@ -59,19 +66,35 @@ impl Stepper<'_> {
         // A level out of contact follows the motion: its overlap and rate are the kinematics
         // now, not what they were when it last let go.
         let n = self.n;
-        for i in 0..self.points.len() {
-            if self.points[i].force <= 0.0 {
-                let (c, w) = self.point_now(i);
-                let p = &mut self.points[i];
-                p.delta = c - self.sc.gap_m - p.elastic_at(n);
-                p.rate = w;
-            }
-        }
         let mut cs = self
             .contact_scratch
             .take()
             .expect("the scratch is home between stages");
+        cs.bounded.clear();
+        cs.bounded.resize(self.points.len(), false);
+        for i in 0..self.points.len() {
+            if self.points[i].force <= 0.0 {
+                let (c, w) = self.point_now(i);
+                let p = &mut self.points[i];
+                // A level whose quiet slabs' ringing cannot close the gap needs no exact reading
+                // of it: its overlap is only used once its contact opens (and read then).
+                let bound = if self.sears {
+                    p.elastic_bound_from(n)
+                } else {
+                    0.0
+                };
+                p.delta = if c - self.sc.gap_m + bound < 0.0 {
+                    cs.bounded[i] = true;
+                    c - self.sc.gap_m - bound
+                } else {
+                    c - self.sc.gap_m - p.elastic_at(n)
+                };
+                p.rate = w;
+            }
+        }
         cs.ground0 = self.motion.at(self.time());
+        cs.near_forced.clear();
+        cs.near_forced.resize(self.points.len(), false);
         for s in 0..2 {
             let sign = if s == 0 { -1.0 } else { 1.0 };
             let n = self.sides[s].modes();
@@ -85,6 +108,11 @@ impl Stepper<'_> {
             }
         }
         self.trial(hh, &mut cs);
+        // A level left out of reach may have been reached after all (the other levels' forces
+        // can pull it closer): then it is read exactly and the step made again.
+        if self.sears && self.reach_back(&mut cs) {
+            self.trial(hh, &mut cs);
+        }
         // A quiet slab (its waves only ringing) starts stepping where its level is pushed.
         if self.sears && self.revive_pushed(&cs.trial.forces) {
             self.trial(hh, &mut cs);
@@ -109,9 +137,43 @@ impl Stepper<'_> {
             cs.trial.forces[i] = 0.0;
             cs.trial.released = Some(i);
         }
+        // A contact opening at a level read by its bound at the start: its overlap there, exactly,
+        // places the opening inside the step.
+        for i in 0..self.points.len() {
+            if cs.bounded[i] && cs.trial.forces[i] > 0.0 {
+                let c = self.point_now(i).0;
+                let p = &mut self.points[i];
+                p.delta = c - self.sc.gap_m - p.elastic_at(n);
+            }
+        }
         self.commit_contact(&mut cs);
         self.contact_scratch = Some(cs);
         Ok(())
+    }
+
+    /// Whether a level the trial left out of reach could have been reached: its overlap with
+    /// the trial's forces, its ringing at its largest, is not below zero. Such a level is read
+    /// exactly from now on in this step.
+    fn reach_back(&self, cs: &mut Scratch) -> bool {
+        let np = self.points.len();
+        let mut any = false;
+        for i in 0..np {
+            if !cs.far[i] {
+                continue;
+            }
+            let g = if cs.use_full {
+                cs.g_full.as_ref().expect("made")
+            } else {
+                &cs.g
+            };
+            let others: f64 = (0..np).map(|j| g[i * np + j] * cs.trial.forces[j]).sum();
+            if cs.predicted[i] + cs.far_bound[i] - others >= 0.0 {
+                cs.far[i] = false;
+                cs.near_forced[i] = true;
+                any = true;
+            }
+        }
+        any
     }
 
     /// Revives the quiet slabs of every level the trial pushes; whether there were any (the
@@ -208,16 +270,11 @@ impl Stepper<'_> {
         let np = self.points.len();
         cs.predicted.resize(np, 0.0);
         cs.compliance.resize(np, 0.0);
+        cs.far.resize(np, false);
+        cs.far_bound.resize(np, 0.0);
+        cs.near_forced.resize(np, false);
         let next = self.n + 1;
         for (i, p) in self.points.iter().enumerate() {
-            let (mut e0, mut e1) = (0.0, 0.0);
-            if self.sears {
-                for slab in p.slabs.iter().flatten() {
-                    let (a, b) = slab.predict_at(next);
-                    e0 += a;
-                    e1 += b;
-                }
-            }
             let mut pred = [0.0; 2];
             for (s, out) in pred.iter_mut().enumerate() {
                 let (q, step, r) = (&self.sides[s].q, &cs.step[s], &p.r[s]);
@@ -225,7 +282,33 @@ impl Stepper<'_> {
                     *out += r[k] * (q[k] + step[k]);
                 }
             }
-            cs.predicted[i] = pred[0] - pred[1] - self.sc.gap_m - e0;
+            let closing = pred[0] - pred[1] - self.sc.gap_m;
+            let (mut e0, mut e1) = (0.0, 0.0);
+            cs.far[i] = false;
+            if self.sears {
+                // A level without force whose slabs only ring, and whose ringing at its largest
+                // cannot close the gap, is out of reach: its ringing is not read (the trial is
+                // checked against it afterwards).
+                let bound = if p.force <= 0.0 && !cs.near_forced[i] {
+                    p.elastic_bound_from(next)
+                } else {
+                    f64::INFINITY
+                };
+                if closing + bound < 0.0 {
+                    cs.far[i] = true;
+                    cs.far_bound[i] = bound;
+                    for slab in p.slabs.iter().flatten() {
+                        e1 += slab.instant_compliance();
+                    }
+                } else {
+                    for slab in p.slabs.iter().flatten() {
+                        let (a, b) = slab.predict_at(next);
+                        e0 += a;
+                        e1 += b;
+                    }
+                }
+            }
+            cs.predicted[i] = closing - e0;
             cs.compliance[i] = e1;
         }
         let full = (hh - self.grid.h).abs() <= 1e-12 * hh;
@@ -328,6 +411,8 @@ impl Stepper<'_> {
             let u = self.point_now_of(p);
             cs.u_before.push(u);
         }
+        let speeds: [f64; 2] =
+            std::array::from_fn(|s| self.sides[s].v.iter().map(|x| x.abs()).sum());
         for s in 0..2 {
             let side = &mut self.sides[s];
             for k in 0..side.modes() {
@@ -365,7 +450,10 @@ impl Stepper<'_> {
             // The contact's work on the buildings: -(F0 + F1)/2 times the closing displacement.
             self.ledger.contact_work_j -= 0.5 * (f0 + f1) * (u_after.0 - cs.u_before[i].0);
             let delta0 = p.delta;
-            p.delta = if self.sears {
+            p.delta = if self.sears && cs.far[i] {
+                // Out of reach: a lower bound on the overlap (no force is read from it).
+                u_after.0 - self.sc.gap_m - cs.far_bound[i]
+            } else if self.sears {
                 u_after.0 - self.sc.gap_m - p.elastic_at(n1)
             } else {
                 tr.deltas[i]
@@ -427,7 +515,7 @@ impl Stepper<'_> {
             }
         }
         // Accelerations stay Newmark's inside contacts; leaving one, the free steps need none.
-        self.track_peaks_now();
+        self.track_peaks_in_contact(&cs.trial.dq, speeds, hh);
         self.record_in_contact(opened_or_closed);
     }
 

@@ -200,6 +200,9 @@ impl Stepper<'_> {
     /// that cannot reach its peak, are left alone for the whole stretch.
     fn prepare(&mut self, w: &mut Scratch, t0: f64, len: usize) {
         let span = len as f64 * self.grid.h;
+        // The free stretch moves every signal: what a contact step had shown of its headroom
+        // holds no more.
+        self.headroom.fill(f64::NEG_INFINITY);
         for s in 0..2 {
             self.initial_into(s, t0, &mut w.y0[s]);
             let side = &self.sides[s];

@@ -273,6 +273,8 @@ pub(super) struct Stepper<'a> {
     /// Signals whose last instant the free stretches have not kept (they could not reach their
     /// peak there): the next look at them starts afresh.
     stale: Vec<bool>,
+    /// Inside contacts: how far below its peak each signal has been shown to stay.
+    headroom: Vec<f64>,
     pub steps: usize,
     pub contact_steps: usize,
     sears: bool,
@@ -369,6 +371,7 @@ impl<'a> Stepper<'a> {
             grid,
             peaks: Peaks::new(signals.len()),
             stale: vec![false; signals.len()],
+            headroom: vec![f64::NEG_INFINITY; signals.len()],
             record: Record::new(
                 sc.left.storeys,
                 sc.right.storeys,

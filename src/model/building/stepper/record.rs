@@ -14,6 +14,9 @@ pub(super) struct Signal {
     /// An earlier signal it is identical to (a contact point on a floor is that floor): its peak
     /// is that one's, and it is not tracked itself.
     pub(super) same_as: Option<usize>,
+    /// Its largest coefficient: a step that moves its side's modes by dq moves it by at most
+    /// this times the sum of |dq|.
+    largest: f64,
 }
 
 impl Signal {
@@ -27,6 +30,7 @@ impl Signal {
                     side: s,
                     coef: (0..side.modes()).map(|k| side.shapes[k][f]).collect(),
                     same_as: None,
+                    largest: 0.0,
                 });
             }
         }
@@ -39,6 +43,7 @@ impl Signal {
                         .map(|k| (side.shapes[k][f] - below(k)) / side.heights[f])
                         .collect(),
                     same_as: None,
+                    largest: 0.0,
                 });
             }
         }
@@ -48,8 +53,12 @@ impl Signal {
                     side: s,
                     coef: p.r[s].clone(),
                     same_as: None,
+                    largest: 0.0,
                 });
             }
+        }
+        for sig in out.iter_mut() {
+            sig.largest = sig.coef.iter().fold(0.0, |m: f64, c| m.max(c.abs()));
         }
         for i in 0..out.len() {
             out[i].same_as = (0..i).find(|&j| {
@@ -208,6 +217,45 @@ impl Stepper<'_> {
             } else {
                 self.peaks.update(i, t, u, r);
             }
+            self.headroom[i] = self.peaks.peak(i) - u.abs();
+        }
+    }
+
+    /// Every signal's peak brought up to the end of a contact step that moved each side's modes
+    /// by `dq`, from velocities whose sums of sizes were `speeds` before it: a signal that the
+    /// step's bound (its largest coefficient times the sum of |dq|, and the cubic's bulge
+    /// between the step's ends) cannot bring to its peak is not looked at, its headroom only
+    /// shrinking by that bound; the rest as [`Stepper::track_peaks_now`].
+    pub(super) fn track_peaks_in_contact(&mut self, dq: &[Vec<f64>; 2], speeds: [f64; 2], hh: f64) {
+        let t = self.time();
+        let moved: [f64; 2] = std::array::from_fn(|s| dq[s].iter().map(|x| x.abs()).sum());
+        let speed_after: [f64; 2] =
+            std::array::from_fn(|s| self.sides[s].v.iter().map(|x| x.abs()).sum());
+        for (i, sig) in self.signals.iter().enumerate() {
+            if sig.same_as.is_some() {
+                continue;
+            }
+            let s = sig.side;
+            let bound = sig.largest * (moved[s] + 4.0 / 27.0 * hh * (speeds[s] + speed_after[s]));
+            let room = self.headroom[i] - bound;
+            if room > 1e-9 * self.peaks.peak(i) {
+                self.headroom[i] = room;
+                self.stale[i] = true;
+                continue;
+            }
+            let side = &self.sides[s];
+            let (mut u, mut r) = (0.0, 0.0);
+            for ((c, q), v) in sig.coef.iter().zip(&side.q).zip(&side.v) {
+                u += c * q;
+                r += c * v;
+            }
+            if self.stale[i] {
+                self.peaks.pass(i, t, u, r);
+                self.stale[i] = false;
+            } else {
+                self.peaks.update(i, t, u, r);
+            }
+            self.headroom[i] = self.peaks.peak(i) - u.abs();
         }
     }
 
