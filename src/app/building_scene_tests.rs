@@ -5,11 +5,14 @@
 //! racing the thread.
 
 use super::*;
+use crate::app::building_job::Stage;
+use crate::app::building_view::BuildingDrawing;
+use crate::app::worker::Landed;
 use crate::model::building::{BuildingResult, solve_streaming};
 use crate::model::control::Control;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 fn paper_buildings() -> BuildingSetup {
     crate::io::preset::load_for("paper-buildings", "buildings").expect("a shipped preset")
