@@ -169,9 +169,10 @@ impl BuildingScene {
     /// When the later stages of the newest request landed, from its change (the change to
     /// result being the time to its run).
     pub fn later_stages(&self) -> String {
-        let at = |t: Option<Duration>| {
-            t.map_or("pending".into(), |t| crate::app::ms(t.as_secs_f64(), 1))
-        };
+        // A request done without a stage (cancelled, failed) will not deliver it.
+        let missing = if self.busy() { "pending" } else { "not solved" };
+        let at =
+            |t: Option<Duration>| t.map_or(missing.into(), |t| crate::app::ms(t.as_secs_f64(), 1));
         format!(
             "Change to result: from the change to its run on screen. After the change, the run without pounding landed in {}, the error estimate in {}",
             at(self.times.baseline),
