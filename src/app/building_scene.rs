@@ -4,7 +4,8 @@
 //! impact, and the gap that avoids pounding against the code rules. The state and the solves
 //! live here; the panel in `building_params`, the drawing in `building_view`.
 
-use super::building_view::{self, BuildingDrawing};
+use super::building_job::{Baseline, Output, run_job};
+use super::building_view;
 use super::export::{Exporter, ShownPlot};
 use super::params::Fields;
 use super::playback::Playback;
@@ -13,57 +14,16 @@ use super::visibility::Visibility;
 use super::worker::SolveSlot;
 use super::xt_view::{XtDiagram, XtOptions, XtSource};
 use crate::io::building_settings::BuildingSetup;
-use crate::model::building::gaps::{GapAssessment, assess};
-use crate::model::building::{
-    BuildingErrorEstimate, BuildingResult, BuildingScenario, ContactModel, estimate_error_with,
-    solve_with,
-};
-use crate::model::control::Control;
-use crate::model::error::SolveError;
 use crate::model::field::BarWaves;
-use crate::model::motion::{G, GroundMotion};
+use crate::model::motion::G;
 use crate::render::bars::GpuHistory;
 use eframe::egui::{self, Color32};
 use egui_plot::{Legend, Line, Plot, PlotBounds, VLine};
 use std::sync::Arc;
 
-/// A landed solve: the drawing (setup, record, run), the run without contact, the estimate.
-struct Solved {
-    drawing: BuildingDrawing,
-    baseline: BuildingResult,
-    gaps: GapAssessment,
-    estimate: Option<BuildingErrorEstimate>,
-}
-
-type Output = Result<
-    (
-        GroundMotion,
-        BuildingResult,
-        BuildingResult,
-        Option<BuildingErrorEstimate>,
-    ),
-    JobError,
->;
-
-/// Why a building job gave no result, typed across the thread: the scene words it.
-#[derive(Debug, thiserror::Error)]
-pub(super) enum JobError {
-    #[error("ground motion: {0}")]
-    Motion(#[from] crate::io::motion::MotionError),
-    #[error("cancelled: the last result is kept")]
-    Cancelled,
-    #[error(transparent)]
-    Solve(SolveError),
-}
-
-impl From<SolveError> for JobError {
-    fn from(e: SolveError) -> Self {
-        match e {
-            SolveError::Cancelled => JobError::Cancelled,
-            e => JobError::Solve(e),
-        }
-    }
-}
+#[path = "building_stages.rs"]
+mod stages;
+use stages::{Later, Solved, StageTimes};
 
 /// The slabs an x-t diagram shows: the run (its history id) and level they belong to, their
 /// waves, and those on the GPU.
@@ -74,6 +34,9 @@ pub struct BuildingScene {
     fields: Fields,
     pub(super) slot: SolveSlot<BuildingSetup, Output>,
     solved: Option<Solved>,
+    /// The last whole run while a newer one streams in: it comes back if that one stops short.
+    kept: Option<Solved>,
+    times: StageTimes,
     pub playback: Playback,
     exaggeration: f64,
     zoom: Option<(f64, f64)>,
@@ -95,27 +58,6 @@ pub struct BuildingScene {
     pub visibility: Visibility,
 }
 
-fn run_job(setup: BuildingSetup, control: &Control) -> Output {
-    let motion = crate::io::motion::load(&setup.motion)?;
-    // The estimate's run takes about twice the main one, the run without contact a tenth.
-    control.stage(0, 3);
-    let result = solve_with(&setup.scenario, &motion, control)?;
-    let baseline = solve_with(
-        &BuildingScenario {
-            contact: ContactModel::None,
-            ..setup.scenario.clone()
-        },
-        &motion,
-        control,
-    )?;
-    control.stage(1, 3);
-    let estimate = estimate_error_with(&setup.scenario, &motion, &result, control);
-    if matches!(estimate, Err(SolveError::Cancelled)) {
-        return Err(JobError::Cancelled);
-    }
-    Ok((motion, result, baseline, estimate.ok()))
-}
-
 impl BuildingScene {
     pub fn new(ctx: &egui::Context, setup: BuildingSetup) -> Self {
         let waker = ctx.clone();
@@ -123,13 +65,16 @@ impl BuildingScene {
             visibility: Visibility::default(),
             setup,
             fields: Fields::default(),
-            slot: SolveSlot::new(run_job, move || waker.request_repaint()),
+            slot: SolveSlot::staged(run_job, move || waker.request_repaint()),
             solved: None,
+            kept: None,
+            times: StageTimes::default(),
             playback: Playback {
                 t: 0.0,
                 playing: true,
                 speed: 1.0,
                 t_max: 8.0,
+                ready_s: None,
             },
             exaggeration: 20.0,
             zoom: None,
@@ -148,6 +93,10 @@ impl BuildingScene {
 
     pub fn request(&mut self) {
         self.slot.request(self.setup.clone());
+        self.times = StageTimes::default();
+        if let Some(s) = &mut self.solved {
+            s.current = false;
+        }
     }
 
     pub fn busy(&self) -> bool {
@@ -163,32 +112,6 @@ impl BuildingScene {
         self.slot.cancel();
     }
 
-    pub fn poll(&mut self) {
-        // A panic's message stays as the error, and the last result on screen.
-        let Some(outcome) = self.slot.poll() else {
-            return;
-        };
-        match outcome {
-            Ok((motion, result, baseline, estimate)) => {
-                self.playback.t_max = motion.duration_s();
-                self.playback.t = self.playback.t.min(self.playback.t_max);
-                if self.level.is_some_and(|l| l >= result.levels.len()) {
-                    self.level = None;
-                }
-                // A new run has its own impacts: the diagram goes back to the strongest.
-                self.selected = None;
-                self.solved = Some(Solved {
-                    gaps: assess(&baseline),
-                    drawing: BuildingDrawing::new(self.setup.clone(), motion, result),
-                    baseline,
-                    estimate,
-                });
-            }
-            // The last result stays; the error says why the new one failed.
-            Err(e) => self.slot.error = Some(e.to_string()),
-        }
-    }
-
     /// A dropped file becomes the ground motion.
     pub fn take_dropped(&mut self, ctx: &egui::Context) {
         let dropped: Vec<_> = ctx.input(|i| {
@@ -202,20 +125,6 @@ impl BuildingScene {
         if let Some(path) = dropped.first() {
             self.load_motion(path.display().to_string());
         }
-    }
-
-    /// What a lesson's expressions read: the run, the run without contact and the gaps; `None`
-    /// while a solve is under way.
-    pub fn lesson_context(&self) -> Option<crate::lesson::Context> {
-        if self.busy() {
-            return None;
-        }
-        let s = self.solved.as_ref()?;
-        Some(crate::lesson::Context::buildings(
-            &s.drawing.setup,
-            &s.drawing.result,
-            Some(&s.baseline),
-        ))
     }
 
     /// Which settings a lesson step leaves open.
@@ -279,29 +188,17 @@ impl BuildingScene {
             self.sway_ui(ui);
         }
         let Some(s) = &self.solved else { return };
-        let d = &s.drawing;
         if show.shows("readouts") {
-            let r = &d.result;
-            ui.label(format!(
-            "{} impacts ({} contacts), max force {:.4e} N, peak roof displacement left {:.2} mm (without pounding {:.2}), right {:.2} mm ({:.2}); solve {}",
-            r.impacts.len(),
-            r.contacts.len(),
-            r.max_pounding_force_n,
-            r.peak_displacement_m[0] * 1e3,
-            s.baseline.peak_displacement_m[0] * 1e3,
-            r.peak_displacement_m[1] * 1e3,
-            s.baseline.peak_displacement_m[1] * 1e3,
-            super::ms(self.slot.solve_time.as_secs_f64(), 1)
-        ));
-            if let Some(e) = &s.estimate {
-                ui.label(format!(
-                "error bound (against a twice finer run): max force {:.1e}, peak displacement {:.1e}, impact times {:.1e} (relative), impact count {:+}",
-                e.max_force, e.peak_displacement, e.impact_time, e.impact_count_change
-            )).on_hover_text("Twice the difference from the same run with every discretisation parameter halved: a bound on the error wherever the steps converge at order 1 or more");
-            }
+            self.readouts_ui(ui);
         }
         if show.shows("gaps") {
-            gap_ui(ui, &s.gaps, d.setup.scenario.gap_m, d.result.levels.len());
+            let d = &s.drawing;
+            gap_ui(
+                ui,
+                &s.baseline,
+                d.setup.scenario.gap_m,
+                d.result.levels.len(),
+            );
         }
         self.plots_ui(ui, exporter);
         if show.shows("xt") {
@@ -309,6 +206,62 @@ impl BuildingScene {
         }
         for w in &self.solved.as_ref().expect("shown").drawing.result.warnings {
             ui.colored_label(Color32::from_rgb(220, 140, 40), format!("warning: {w}"));
+        }
+    }
+
+    /// The run's impacts, force and peaks beside those without pounding, and its error bound;
+    /// a run still solving says how far it has got.
+    fn readouts_ui(&self, ui: &mut egui::Ui) {
+        let Some(s) = &self.solved else { return };
+        let r = &s.drawing.result;
+        let without = |side: usize| {
+            s.baseline.ready().map_or(s.baseline.absent().into(), |b| {
+                format!("{:.2}", b.result.peak_displacement_m[side] * 1e3)
+            })
+        };
+        let (so_far, solve) = if s.whole {
+            (
+                String::new(),
+                format!(
+                    "; solve {}",
+                    super::ms(self.slot.solve_time.as_secs_f64(), 1)
+                ),
+            )
+        } else {
+            (
+                format!(
+                    "solving: {:.1} s of {:.1} s; so far ",
+                    r.solved_to_s, self.playback.t_max
+                ),
+                String::new(),
+            )
+        };
+        ui.label(format!(
+            "{so_far}{} impacts ({} contacts), max force {:.4e} N, peak roof displacement left {:.2} mm (without pounding {}), right {:.2} mm ({}){solve}",
+            r.impacts.len(),
+            r.contacts.len(),
+            r.max_pounding_force_n,
+            r.peak_displacement_m[0] * 1e3,
+            without(0),
+            r.peak_displacement_m[1] * 1e3,
+            without(1),
+        ));
+        match &s.estimate {
+            Later::Ready(Some(e)) => {
+                ui.label(format!(
+                    "error bound (against a twice finer run): max force {:.1e}, peak displacement {:.1e}, impact times {:.1e} (relative), impact count {:+}",
+                    e.max_force, e.peak_displacement, e.impact_time, e.impact_count_change
+                )).on_hover_text("Twice the difference from the same run with every discretisation parameter halved: a bound on the error wherever the steps converge at order 1 or more");
+            }
+            // Where the finer run failed, the run stands without a bound, as it always has.
+            Later::Ready(None) => {}
+            later => {
+                ui.label(format!(
+                    "error bound (against a twice finer run): {}",
+                    later.absent()
+                ))
+                .on_hover_text("The twice finer run follows the run and the run without pounding");
+            }
         }
     }
 
@@ -329,7 +282,7 @@ impl BuildingScene {
             ),
             egui::Sense::hover(),
         );
-        building_view::draw(ui, rect, d, self.playback.t, self.exaggeration);
+        building_view::draw(ui, rect, d, self.playback.shown_t(), self.exaggeration);
         self.view_rect = Some(rect);
         ui.horizontal(|ui| {
             let label = ui
@@ -346,6 +299,10 @@ impl BuildingScene {
     /// until one is picked), over that impact and a little either side.
     fn slabs_xt_ui(&mut self, ui: &mut egui::Ui) {
         let Some(s) = &self.solved else { return };
+        if !s.whole {
+            ui.label("the slabs' space-time diagram: once the run is solved");
+            return;
+        }
         let r = &s.drawing.result;
         let strongest = (0..r.impacts.len()).max_by(|&a, &b| {
             r.impacts[a]
@@ -399,7 +356,7 @@ impl BuildingScene {
             ui,
             super::slots::BUILDING_XT,
             260.0,
-            self.playback.t,
+            self.playback.shown_t(),
             &self.xt,
         );
         if let Some(t) = clicked {
@@ -412,8 +369,19 @@ impl BuildingScene {
     fn displacements_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
         let Some(s) = &self.solved else { return };
         let r = &s.drawing.result;
-        let t = self.playback.t;
+        let t = self.playback.shown_t();
         let h = 170.0;
+        // Until the run without pounding lands its lines are named for why, and hold only the
+        // point every run starts from (at rest): the plot lists no line without a point.
+        let (base, note) = match s.baseline.ready() {
+            Some(b) => (Some(&b.result), String::new()),
+            None => (None, format!(" ({})", s.baseline.absent())),
+        };
+        let without = |side: usize| {
+            base.map_or(vec![[0.0, 0.0]], |b| {
+                decimate(&b.time_s, &b.displacement_m[side], 1e3)
+            })
+        };
         let disp_lines = vec![
             (
                 "left".to_string(),
@@ -423,14 +391,8 @@ impl BuildingScene {
                 "right".to_string(),
                 decimate(&r.time_s, &r.displacement_m[1], 1e3),
             ),
-            (
-                "left, no pounding".to_string(),
-                decimate(&s.baseline.time_s, &s.baseline.displacement_m[0], 1e3),
-            ),
-            (
-                "right, no pounding".to_string(),
-                decimate(&s.baseline.time_s, &s.baseline.displacement_m[1], 1e3),
-            ),
+            (format!("left, no pounding{note}"), without(0)),
+            (format!("right, no pounding{note}"), without(1)),
         ];
         let width = super::lecture::line_width(ui);
         let disp_plot = Plot::new("b-disp")
@@ -546,7 +508,7 @@ impl BuildingScene {
     }
 
     fn plots_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
-        let t = self.playback.t;
+        let t = self.playback.shown_t();
         let h = 170.0;
         let show = self.visibility.clone();
         if show.shows("displacements") {
@@ -628,10 +590,14 @@ impl BuildingScene {
 }
 
 /// The gap that avoids pounding for this record, against the code rules.
-fn gap_ui(ui: &mut egui::Ui, g: &GapAssessment, gap_m: f64, levels: usize) {
+fn gap_ui(ui: &mut egui::Ui, baseline: &Later<Box<Baseline>>, gap_m: f64, levels: usize) {
     ui.horizontal_wrapped(|ui| {
         ui.strong("gap that avoids pounding:")
             .on_hover_text("From the run without contact: the largest closing motion at any level over the record. ABS and SRSS combine the two buildings' peak displacements at each level, as design codes do");
+        let Some(g) = baseline.ready().map(|b| &b.gaps) else {
+            ui.label(baseline.absent());
+            return;
+        };
         if g.min_gap_m > 0.0 {
             ui.label(format!(
                 "{:.2} mm{} (now {:.2} mm: {}); ABS {:.2} mm ({:.2}x), SRSS {:.2} mm ({:.2}x)",
@@ -662,7 +628,8 @@ impl BuildingScene {
     pub(super) fn animation_source(
         &self,
     ) -> Option<Box<dyn FnOnce() -> super::export_animation::AnimationSource + '_>> {
-        let d = &self.solved.as_ref()?.drawing;
+        // A run still solving would animate beyond what it has solved.
+        let d = &self.solved.as_ref().filter(|s| s.whole)?.drawing;
         Some(Box::new(move || {
             super::export_animation::AnimationSource::Buildings {
                 setup: Box::new(d.setup.clone()),
@@ -672,3 +639,7 @@ impl BuildingScene {
         }))
     }
 }
+
+#[cfg(test)]
+#[path = "building_scene_tests.rs"]
+mod tests;

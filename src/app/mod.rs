@@ -4,6 +4,7 @@
 mod background;
 mod bar_scene;
 mod bar_view;
+mod building_job;
 mod building_params;
 mod building_scene;
 pub(crate) mod building_view;

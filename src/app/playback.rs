@@ -10,6 +10,9 @@ pub struct Playback {
     pub speed: f64,
     /// End of the scrubber [s].
     pub t_max: f64,
+    /// How far the result shown is solved [s], while its run is still solving: playing and
+    /// stepping wait there, and the view draws no later (`None`: a finished run).
+    pub ready_s: Option<f64>,
 }
 
 impl Default for Playback {
@@ -19,24 +22,46 @@ impl Default for Playback {
             playing: true,
             speed: 1e-4,
             t_max: 1e-3,
+            ready_s: None,
         }
     }
 }
 
 impl Playback {
-    /// Advances by a frame of `real_dt` seconds; loops at the end.
+    /// Advances by a frame of `real_dt` seconds; loops at the end, or waits at the edge of a run
+    /// still solving.
     pub fn advance(&mut self, real_dt: f64) {
-        if self.playing {
-            self.t += real_dt * self.speed;
-            if self.t > self.t_max {
-                self.t = 0.0;
+        if !self.playing {
+            return;
+        }
+        match self.ready_s {
+            // Looping back would replay the start while the rest solves: hold for more instead.
+            Some(edge) => {
+                if self.t < edge {
+                    self.t = (self.t + real_dt * self.speed).min(edge);
+                }
+            }
+            None => {
+                self.t += real_dt * self.speed;
+                if self.t > self.t_max {
+                    self.t = 0.0;
+                }
             }
         }
     }
 
     pub fn step(&mut self) {
         self.playing = false;
-        self.t = (self.t + self.t_max / 500.0).min(self.t_max);
+        let end = self.ready_s.map_or(self.t_max, |e| e.min(self.t_max));
+        if self.t < end {
+            self.t = (self.t + self.t_max / 500.0).min(end);
+        }
+    }
+
+    /// The time the view and the plots' cursors show: the animation time, or the edge of a run
+    /// still solving where the time set (by a launch, a click or the scrubber) lies beyond it.
+    pub fn shown_t(&self) -> f64 {
+        self.ready_s.map_or(self.t, |e| self.t.min(e))
     }
 
     /// Play/pause, step, speed and scrubber; returns whether the user asked for a restart.
@@ -86,5 +111,45 @@ impl Playback {
             .labelled_by(label);
         });
         restart
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn playing_or_stepping_a_run_still_solving_never_passes_how_far_it_is_solved() {
+        let mut p = Playback {
+            t: 0.0,
+            playing: true,
+            speed: 1.0,
+            t_max: 8.0,
+            ready_s: Some(1.25),
+        };
+        for _ in 0..100 {
+            p.advance(0.1);
+            assert!(p.t <= 1.25, "played to {}", p.t);
+        }
+        // It waits at the edge rather than looping to the start.
+        assert_eq!(p.t, 1.25);
+        p.step();
+        assert_eq!(p.t, 1.25);
+        // More solved: it plays on from where it waited.
+        p.ready_s = Some(2.0);
+        p.playing = true;
+        p.advance(0.1);
+        assert!((p.t - 1.35).abs() < 1e-12, "{}", p.t);
+        // A time set beyond the edge stays set, and is shown at the edge until solved.
+        p.t = 3.0;
+        assert_eq!(p.shown_t(), 2.0);
+        p.advance(0.1);
+        assert_eq!(p.t, 3.0);
+        // The finished run: the time set is shown, and playing loops at the end.
+        p.ready_s = None;
+        assert_eq!(p.shown_t(), 3.0);
+        p.t = 7.95;
+        p.advance(0.1);
+        assert_eq!(p.t, 0.0);
     }
 }

@@ -20,6 +20,15 @@ pub trait Scene {
     fn cancel(&mut self);
     /// The last solve's own time, and the time from the change to its result.
     fn timings(&self) -> (Duration, Duration);
+    /// What the status bar says while a solve is under way.
+    fn solving_note(&self) -> String {
+        "solving...".into()
+    }
+    /// What the change-to-result time leaves out (a scene whose solve lands in stages), for
+    /// its tooltip.
+    fn later_stages(&self) -> Option<String> {
+        None
+    }
     /// The animated view's rectangle last frame.
     fn view_rect(&self) -> Option<egui::Rect>;
     /// The plots on screen last frame, by export name.
@@ -81,6 +90,12 @@ impl Scene for BuildingScene {
     }
     fn timings(&self) -> (Duration, Duration) {
         self.slot.timings()
+    }
+    fn solving_note(&self) -> String {
+        BuildingScene::solving_note(self)
+    }
+    fn later_stages(&self) -> Option<String> {
+        Some(BuildingScene::later_stages(self))
     }
     fn view_rect(&self) -> Option<egui::Rect> {
         self.view_rect

@@ -17,14 +17,20 @@ impl PoundingApp {
         egui::Panel::bottom("status").show(ui, |ui| {
             ui.horizontal(|ui| {
                 let (solve, latency) = self.shown().timings();
-                let busy = self.shown().busy();
-                ui.label(format!(
-                    "UI {} | solve {} | change to result {}{}",
+                let solving = if self.shown().busy() {
+                    format!(" | {}", self.shown().solving_note())
+                } else {
+                    String::new()
+                };
+                let timings = ui.label(format!(
+                    "UI {} | solve {} | change to result {}{solving}",
                     ms(self.ui_ms * 1e-3, 2),
                     ms(solve.as_secs_f64(), 3),
                     ms(latency.as_secs_f64(), 1),
-                    if busy { " | solving..." } else { "" }
                 ));
+                if let Some(later) = self.shown().later_stages() {
+                    timings.on_hover_text(later);
+                }
                 if let Some(done) = self.shown().progress() {
                     ui.add(
                         egui::ProgressBar::new(done as f32)

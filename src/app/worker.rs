@@ -3,19 +3,26 @@
 //! whose loops look at it every few thousand steps, so the thread always moves on to the newest
 //! inputs at once and a dragged slider never queues up solves. A panic in a solve is caught and
 //! reported as that request's outcome; the thread lives on.
+//!
+//! A job may hand the UI outputs before its last through its [`Stages`] (a run solved so far, a
+//! first result before the checks that refine it): the UI takes them in the order sent, and a
+//! newer request drops whatever of the older one's is still on its way.
 
 use crate::model::control::Control;
+use std::collections::VecDeque;
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::sync::Arc;
 use std::sync::mpsc::{Receiver, Sender, channel};
 use std::time::{Duration, Instant};
 
-/// A finished job: the request's number, its output (or the message of the panic that ended
-/// it) and how long the solve took.
+/// One output of a job: the request's number, the output (or the message of the panic that
+/// ended the job), how long the job had run, and whether it is the job's last.
 pub struct Done<O> {
     pub id: u64,
     pub output: Result<O, String>,
     pub elapsed: Duration,
+    /// The job returned (or panicked) with this: its request is done.
+    pub last: bool,
 }
 
 type Request<I> = (u64, I, Arc<Control>);
@@ -29,12 +36,40 @@ pub fn internal_error(panic: &str) -> String {
     format!("the solver stopped on an internal error ({panic}); the last result is kept")
 }
 
+/// A job's line to the UI for the outputs it has before its last, so a scene can show a long
+/// job's first answers while the rest is worked out.
+pub struct Stages<'a, O> {
+    id: u64,
+    start: Instant,
+    outbox: &'a Sender<Done<O>>,
+    wake: &'a dyn Fn(),
+}
+
+impl<O> Stages<'_, O> {
+    /// Hands `output` to the UI (and wakes it): it lands after those sent before it and before
+    /// the job's last.
+    pub fn send(&self, output: O) {
+        let done = Done {
+            id: self.id,
+            output: Ok(output),
+            elapsed: self.start.elapsed(),
+            last: false,
+        };
+        // A send only fails once the UI is gone, and then nobody is waiting for it.
+        if self.outbox.send(done).is_ok() {
+            (self.wake)();
+        }
+    }
+}
+
 pub struct Worker<I, O> {
     to_worker: Sender<Request<I>>,
     from_worker: Receiver<Done<O>>,
     next_id: u64,
     /// The newest request: its number, when it was made and its control.
     pending: Option<(u64, Instant, Arc<Control>)>,
+    /// The newest request's outputs received and not yet polled, in the order sent.
+    landed: VecDeque<Done<O>>,
 }
 
 /// The text of a caught panic.
@@ -49,9 +84,19 @@ pub fn panic_message(payload: &(dyn std::any::Any + Send)) -> String {
 }
 
 impl<I: Send + 'static, O: Send + 'static> Worker<I, O> {
-    /// Starts the thread; `wake` is called after each job (to request a repaint).
+    /// Starts the thread for a job of one output; `wake` is called after each job (to request a
+    /// repaint).
     pub fn new(
         job: impl Fn(I, &Control) -> O + Send + 'static,
+        wake: impl Fn() + Send + 'static,
+    ) -> Self {
+        Self::staged(move |input, control, _| job(input, control), wake)
+    }
+
+    /// Starts the thread for a job that may hand out outputs before its last; `wake` is called
+    /// after each output.
+    pub fn staged(
+        job: impl Fn(I, &Control, &Stages<O>) -> O + Send + 'static,
         wake: impl Fn() + Send + 'static,
     ) -> Self {
         let (to_worker, inbox) = channel::<Request<I>>();
@@ -66,12 +111,19 @@ impl<I: Send + 'static, O: Send + 'static> Worker<I, O> {
                     }
                     let (id, input, control) = request;
                     let start = Instant::now();
-                    let output = catch_unwind(AssertUnwindSafe(|| job(input, &control)))
+                    let stages = Stages {
+                        id,
+                        start,
+                        outbox: &outbox,
+                        wake: &wake,
+                    };
+                    let output = catch_unwind(AssertUnwindSafe(|| job(input, &control, &stages)))
                         .map_err(|p| panic_message(p.as_ref()));
                     let done = Done {
                         id,
                         output,
                         elapsed: start.elapsed(),
+                        last: true,
                     };
                     if outbox.send(done).is_err() {
                         break;
@@ -85,12 +137,15 @@ impl<I: Send + 'static, O: Send + 'static> Worker<I, O> {
             from_worker,
             next_id: 0,
             pending: None,
+            landed: VecDeque::new(),
         }
     }
 
-    /// Posts new inputs; the solve under way, if any, is cancelled.
+    /// Posts new inputs; the solve under way, if any, is cancelled and what it has not yet
+    /// delivered is dropped.
     pub fn request(&mut self, input: I) {
         self.cancel();
+        self.landed.clear();
         self.next_id += 1;
         let control = Arc::new(Control::new());
         self.pending = Some((self.next_id, Instant::now(), control.clone()));
@@ -105,18 +160,23 @@ impl<I: Send + 'static, O: Send + 'static> Worker<I, O> {
         }
     }
 
-    /// The newest request's outcome, if it arrived, with the time from its request to now.
-    /// Outcomes of older (cancelled) requests are dropped.
+    /// The newest request's next output, in the order its job gave them, with the time from
+    /// its request to now; after its last, the request is done. Outputs of older (cancelled)
+    /// requests are dropped.
     pub fn poll(&mut self) -> Option<(Done<O>, Duration)> {
-        let mut newest = None;
+        let newest = self.pending.as_ref().map(|p| p.0);
         while let Ok(done) = self.from_worker.try_recv() {
-            if self.pending.as_ref().is_some_and(|p| p.0 == done.id) {
-                newest = Some(done);
+            if newest == Some(done.id) {
+                self.landed.push_back(done);
             }
         }
-        let done = newest?;
-        let (_, at, _) = self.pending.take()?;
-        Some((done, at.elapsed()))
+        let done = self.landed.pop_front()?;
+        let (_, at, _) = self.pending.as_ref()?;
+        let since = at.elapsed();
+        if done.last {
+            self.pending = None;
+        }
+        Some((done, since))
     }
 
     pub fn busy(&self) -> bool {
@@ -129,6 +189,17 @@ impl<I: Send + 'static, O: Send + 'static> Worker<I, O> {
         let (_, at, control) = self.pending.as_ref()?;
         (at.elapsed() >= after).then(|| control.fraction())
     }
+}
+
+/// One output of a scene's newest request as the scene takes it.
+pub struct Landed<O> {
+    pub output: O,
+    /// The job's last output: the request is done.
+    pub last: bool,
+    /// From the job's start to this output.
+    pub job_time: Duration,
+    /// From the change that asked for it to the frame that took it.
+    pub since_request: Duration,
 }
 
 /// A scene's solve core: its worker, the timings of its last landed solve, and the error the
@@ -146,13 +217,26 @@ pub struct SolveSlot<I, O> {
 }
 
 impl<I: Send + 'static, O: Send + 'static> SolveSlot<I, O> {
-    /// Starts the solver thread; `wake` is called after each job.
+    /// Starts the solver thread for a job of one output; `wake` is called after each job.
     pub fn new(
         job: impl Fn(I, &Control) -> O + Send + 'static,
         wake: impl Fn() + Send + 'static,
     ) -> Self {
+        Self::of(Worker::new(job, wake))
+    }
+
+    /// Starts the solver thread for a job that hands out outputs before its last (taken with
+    /// [`SolveSlot::poll_stage`]); `wake` is called after each output.
+    pub fn staged(
+        job: impl Fn(I, &Control, &Stages<O>) -> O + Send + 'static,
+        wake: impl Fn() + Send + 'static,
+    ) -> Self {
+        Self::of(Worker::staged(job, wake))
+    }
+
+    fn of(worker: Worker<I, O>) -> Self {
         SolveSlot {
-            worker: Worker::new(job, wake),
+            worker,
             solve_time: Duration::ZERO,
             latency: Duration::ZERO,
             error: None,
@@ -189,7 +273,25 @@ impl<I: Send + 'static, O: Send + 'static> SolveSlot<I, O> {
         let (done, latency) = self.worker.poll()?;
         self.solve_time = done.elapsed;
         self.latency = latency;
-        match done.output {
+        self.take(done.output)
+    }
+
+    /// The newest request's next output, in the order its job gave them, the error cleared;
+    /// the scene records which of them its timings measure. A job that panicked gives `None`
+    /// and leaves the panic's message as the error (and the request done).
+    pub fn poll_stage(&mut self) -> Option<Landed<O>> {
+        let (done, since_request) = self.worker.poll()?;
+        let (last, job_time) = (done.last, done.elapsed);
+        self.take(done.output).map(|output| Landed {
+            output,
+            last,
+            job_time,
+            since_request,
+        })
+    }
+
+    fn take(&mut self, output: Result<O, String>) -> Option<O> {
+        match output {
             Ok(out) => {
                 self.error = None;
                 Some(out)
@@ -288,6 +390,92 @@ mod tests {
         assert_eq!(slot.error, None);
         let (solve, latency) = slot.timings();
         assert!(latency >= solve, "the latency includes the solve");
+    }
+
+    /// Every output of the newest request, in the order taken, with whether it was the last,
+    /// until the request is done; the error the slot is left with.
+    fn drain<O: Send + 'static>(slot: &mut SolveSlot<u64, O>) -> Vec<(O, bool)> {
+        let start = Instant::now();
+        let mut taken = vec![];
+        while slot.busy() {
+            if let Some(l) = slot.poll_stage() {
+                taken.push((l.output, l.last));
+            } else {
+                assert!(start.elapsed() < Duration::from_secs(60), "no outcome");
+                std::thread::sleep(Duration::from_millis(1));
+            }
+        }
+        taken
+    }
+
+    #[test]
+    fn a_staged_jobs_outputs_land_in_the_order_sent_and_its_last_ends_the_request() {
+        let mut slot = SolveSlot::staged(
+            |n: u64, _: &Control, stages: &Stages<u64>| {
+                for k in 1..n {
+                    stages.send(k);
+                }
+                n
+            },
+            || {},
+        );
+        slot.request(5);
+        let taken = drain(&mut slot);
+        assert_eq!(
+            taken,
+            [(1, false), (2, false), (3, false), (4, false), (5, true)]
+        );
+        assert_eq!(slot.error, None);
+    }
+
+    #[test]
+    fn a_newer_request_drops_what_the_older_one_had_not_delivered() {
+        let (sent, all_sent) = channel::<u64>();
+        // Request 1 hands out two stages, says so, and holds until cancelled, then tries one more
+        // stage and its last; request 2 runs straight through.
+        let mut slot = SolveSlot::staged(
+            move |n: u64, control: &Control, stages: &Stages<u64>| {
+                stages.send(10 * n + 1);
+                stages.send(10 * n + 2);
+                sent.send(n).expect("the test listens");
+                if n == 1 {
+                    while !control.cancelled() {
+                        std::thread::yield_now();
+                    }
+                    stages.send(10 * n + 3);
+                }
+                10 * n + 9
+            },
+            || {},
+        );
+        slot.request(1);
+        // Request 1's two stages are on their way: the first taken, the second received with
+        // it and left waiting.
+        let said = all_sent.recv_timeout(Duration::from_secs(60));
+        assert_eq!(said, Ok(1));
+        let first = slot.poll_stage().map(|l| (l.output, l.last));
+        assert_eq!(first, Some((11, false)));
+        slot.request(2);
+        assert_eq!(drain(&mut slot), [(21, false), (22, false), (29, true)]);
+    }
+
+    #[test]
+    fn a_panic_after_a_stage_is_the_requests_error_and_the_next_request_stages_again() {
+        let mut slot = SolveSlot::staged(
+            |n: u64, _: &Control, stages: &Stages<u64>| {
+                stages.send(n);
+                assert!(n != 13, "unlucky input");
+                n * 2
+            },
+            || {},
+        );
+        slot.request(13);
+        assert_eq!(drain(&mut slot), [(13, false)]);
+        let error = slot.error.clone().expect("the panic is the error");
+        assert!(error.contains("unlucky input"), "{error}");
+        slot.request(4);
+        assert_eq!(drain(&mut slot), [(4, false), (8, true)]);
+        assert_eq!(slot.error, None);
     }
 
     #[test]

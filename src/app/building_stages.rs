@@ -1,0 +1,196 @@
+//! The Building pounding scene's side of its staged solve: the stages taken as they land (the
+//! run so far, the run, the run without contact, the estimate), what is shown while the later
+//! ones are on their way, and what a lesson may read. A child of the scene, so it keeps the
+//! scene's state private.
+
+use super::BuildingScene;
+use crate::app::building_job::{Baseline, Output, Stage};
+use crate::app::building_view::BuildingDrawing;
+use crate::app::worker::Landed;
+use crate::model::building::BuildingErrorEstimate;
+use std::time::Duration;
+
+/// A stage that comes after the run: on its way, landed, or not coming (its request ended
+/// without it; the error line says why).
+pub(super) enum Later<T> {
+    Pending,
+    Ready(T),
+    Missing,
+}
+
+impl<T> Later<T> {
+    pub(super) fn ready(&self) -> Option<&T> {
+        match self {
+            Later::Ready(t) => Some(t),
+            _ => None,
+        }
+    }
+
+    /// What a readout shows in place of the stage's value.
+    pub(super) fn absent(&self) -> &'static str {
+        match self {
+            Later::Missing => "not solved",
+            _ => "pending",
+        }
+    }
+}
+
+/// What is on screen: one request's run (whole, or as far as it has solved) and its later
+/// stages as they land. A stage joins only the run of its own request, so nothing shown mixes
+/// two requests.
+pub(super) struct Solved {
+    pub(super) drawing: Box<BuildingDrawing>,
+    /// Whether the run is whole (else it is the part solved so far).
+    pub(super) whole: bool,
+    pub(super) baseline: Later<Box<Baseline>>,
+    pub(super) estimate: Later<Option<BuildingErrorEstimate>>,
+    /// Whether it is the newest request's (false once a newer one is made).
+    pub(super) current: bool,
+}
+
+/// When the newest request's later stages landed, from its change.
+#[derive(Default)]
+pub(super) struct StageTimes {
+    baseline: Option<Duration>,
+    estimate: Option<Duration>,
+}
+
+impl BuildingScene {
+    /// Takes the stages that landed, in order.
+    pub fn poll(&mut self) {
+        // A panic's message stays as the error, and the last result on screen.
+        while let Some(landed) = self.slot.poll_stage() {
+            self.land(landed);
+        }
+        if !self.busy() {
+            self.ended();
+        }
+    }
+
+    /// Playback waits at the edge of a run still solving.
+    fn hold_playback(&mut self) {
+        self.playback.ready_s = self
+            .solved
+            .as_ref()
+            .filter(|s| !s.whole)
+            .map(|s| s.drawing.result.solved_to_s);
+    }
+
+    /// One stage of the newest request.
+    pub(super) fn land(&mut self, landed: Landed<Output>) {
+        match landed.output {
+            Ok(Stage::Partial(drawing)) => self.show_run(drawing, false),
+            Ok(Stage::Run(drawing)) => {
+                // Change to result is the time to the first whole run: the checks that follow
+                // it are timed apart.
+                self.slot.solve_time = landed.job_time;
+                self.slot.latency = landed.since_request;
+                self.show_run(drawing, true);
+            }
+            Ok(Stage::Baseline(b)) => {
+                self.times.baseline = Some(landed.since_request);
+                if let Some(s) = self.solved.as_mut().filter(|s| s.current && s.whole) {
+                    s.baseline = Later::Ready(b);
+                }
+            }
+            Ok(Stage::Estimate(e)) => {
+                self.times.estimate = Some(landed.since_request);
+                if let Some(s) = self.solved.as_mut().filter(|s| s.current && s.whole) {
+                    s.estimate = Later::Ready(e);
+                }
+            }
+            // The last result stays; the error says why the new one failed.
+            Err(e) => self.slot.error = Some(e.to_string()),
+        }
+    }
+
+    /// Shows the newest request's run, whole or so far; its later stages are on their way.
+    fn show_run(&mut self, drawing: Box<BuildingDrawing>, whole: bool) {
+        if !self.solved.as_ref().is_some_and(|s| s.current) {
+            // A new run has its own impacts: the diagram goes back to the strongest.
+            self.selected = None;
+        }
+        self.playback.t_max = drawing.motion.duration_s();
+        self.playback.t = self.playback.t.min(self.playback.t_max);
+        if self.level.is_some_and(|l| l >= drawing.result.levels.len()) {
+            self.level = None;
+        }
+        let before = self.solved.replace(Solved {
+            drawing,
+            whole,
+            baseline: Later::Pending,
+            estimate: Later::Pending,
+            current: true,
+        });
+        if whole {
+            self.kept = None;
+        } else if let Some(b) = before.filter(|b| b.whole) {
+            self.kept = Some(b);
+        }
+        self.hold_playback();
+    }
+
+    /// The newest request is done: a run it left unfinished gives way to the last whole one,
+    /// and a stage it never delivered is not coming.
+    pub(super) fn ended(&mut self) {
+        if self.solved.as_ref().is_some_and(|s| !s.whole) {
+            self.solved = self.kept.take();
+            self.hold_playback();
+        }
+        if let Some(s) = &mut self.solved {
+            if matches!(s.baseline, Later::Pending) {
+                s.baseline = Later::Missing;
+            }
+            if matches!(s.estimate, Later::Pending) {
+                s.estimate = Later::Missing;
+            }
+        }
+    }
+
+    /// What the status bar says while the newest request solves: how far its run has got, or
+    /// which checks of its run on screen are still to come.
+    pub fn solving_note(&self) -> String {
+        let Some(s) = self.solved.as_ref().filter(|s| s.current) else {
+            return "solving...".into();
+        };
+        if !s.whole {
+            return format!(
+                "solving: {:.1} s of {:.1} s",
+                s.drawing.result.solved_to_s, self.playback.t_max
+            );
+        }
+        match (&s.baseline, &s.estimate) {
+            (Later::Pending, _) => "run shown; no-pounding run and error estimate pending".into(),
+            (_, Later::Pending) => "run shown; error estimate pending".into(),
+            _ => "solving...".into(),
+        }
+    }
+
+    /// When the later stages of the newest request landed, from its change (the change to
+    /// result being the time to its run).
+    pub fn later_stages(&self) -> String {
+        // A request done without a stage (cancelled, failed) will not deliver it.
+        let missing = if self.busy() { "pending" } else { "not solved" };
+        let at =
+            |t: Option<Duration>| t.map_or(missing.into(), |t| crate::app::ms(t.as_secs_f64(), 1));
+        format!(
+            "Change to result: from the change to its run on screen. After the change, the run without pounding landed in {}, the error estimate in {}",
+            at(self.times.baseline),
+            at(self.times.estimate)
+        )
+    }
+
+    /// What a lesson's expressions read: the run and the run without contact, both whole and
+    /// the newest request's; `None` until they are.
+    pub fn lesson_context(&self) -> Option<crate::lesson::Context> {
+        let s = self.solved.as_ref().filter(|s| s.whole)?;
+        if self.busy() && !s.current {
+            return None;
+        }
+        Some(crate::lesson::Context::buildings(
+            &s.drawing.setup,
+            &s.drawing.result,
+            Some(&s.baseline.ready()?.result),
+        ))
+    }
+}
