@@ -158,6 +158,10 @@ impl Building {
             self.damping,
         )
     }
+    /// The square of the fundamental circular frequency [rad^2/s^2], without the other modes.
+    pub fn fundamental_omega_squared(&self) -> f64 {
+        super::modal::fundamental_omega_squared(&self.masses(), &self.stiffnesses())
+    }
     /// The fundamental period [s].
     pub fn period_s(&self) -> f64 {
         self.modes().periods_s()[0]
@@ -262,7 +266,7 @@ impl BuildingScenario {
 
     /// The building with the higher fundamental frequency: 0 left, 1 right.
     fn stiffer(&self) -> usize {
-        if self.left.modes().omega_rad_s[0] >= self.right.modes().omega_rad_s[0] {
+        if self.left.fundamental_omega_squared() >= self.right.fundamental_omega_squared() {
             0
         } else {
             1

@@ -38,13 +38,21 @@ pub(super) struct Scratch {
     far: Vec<bool>,
     far_bound: Vec<f64>,
     near_forced: Vec<bool>,
-    /// Per point: its overlap at the step's start is a bound, not read exactly.
-    bounded: Vec<bool>,
     /// The ground acceleration where the step starts.
     ground0: f64,
     /// Each mode's load from the contact forces where the step starts, per side.
     load_now: [Vec<f64>; 2],
+    /// Per point: shown out of reach since the contact phase began without reading it (its
+    /// closing is not evaluated, it takes no part in the step), and the proven lower bound on
+    /// its gap less its closing and its slabs' ringing; that bound after the trial.
+    asleep: Vec<bool>,
+    margin: Vec<f64>,
+    margin_next: Vec<f64>,
+    /// The points the step reads: in contact or within reach, in ascending order.
+    awake: Vec<usize>,
     trial: Trial,
+    /// Each side's modal displacements and velocities where the step started.
+    modal_before: [[Vec<f64>; 2]; 2],
     before: Vec<f64>,
     u_before: Vec<(f64, f64)>,
 }
@@ -59,32 +67,38 @@ impl Stepper<'_> {
     /// A contact step of length hh (the last one of a graded start lands on the grid).
     pub(super) fn contact_step_of(&mut self, hh: f64) -> Result<(), SolveError> {
         self.count_step()?;
-        if !self.newmark {
-            self.equilibrium_accelerations();
-            self.newmark = true;
-        }
-        // A level out of contact follows the motion: its overlap and rate are the kinematics
-        // now, not what they were when it last let go.
-        let n = self.n;
+        let np = self.points.len();
         let mut cs = self
             .contact_scratch
             .take()
             .expect("the scratch is home between stages");
-        cs.bounded.clear();
-        cs.bounded.resize(self.points.len(), false);
-        for i in 0..self.points.len() {
-            if self.points[i].force <= 0.0 {
+        if !self.newmark {
+            self.equilibrium_accelerations();
+            self.newmark = true;
+            // The free stretch before moved every level: none is known to be out of reach.
+            cs.asleep.clear();
+            cs.asleep.resize(np, false);
+            cs.margin.resize(np, 0.0);
+            cs.margin_next.resize(np, 0.0);
+        }
+        // A level out of contact follows the motion: its overlap and rate are the kinematics
+        // now, not what they were when it last let go.
+        let n = self.n;
+        for i in 0..np {
+            if self.points[i].force <= 0.0 && !cs.asleep[i] {
                 let (c, w) = self.point_now(i);
                 let p = &mut self.points[i];
                 // A level whose quiet slabs' ringing cannot close the gap needs no exact reading
-                // of it: its overlap is only used once its contact opens (and read then).
+                // of it: it sleeps, and is only read again once the steps' motion could have
+                // used up its margin.
                 let bound = if self.sears {
                     p.elastic_bound_from(n)
                 } else {
                     0.0
                 };
                 p.delta = if c - self.sc.gap_m + bound < 0.0 {
-                    cs.bounded[i] = true;
+                    cs.asleep[i] = true;
+                    cs.margin[i] = self.sc.gap_m - c - bound;
                     c - self.sc.gap_m - bound
                 } else {
                     c - self.sc.gap_m - p.elastic_at(n)
@@ -92,6 +106,8 @@ impl Stepper<'_> {
                 p.rate = w;
             }
         }
+        cs.awake.clear();
+        cs.awake.extend((0..np).filter(|&i| !cs.asleep[i]));
         cs.ground0 = self.motion.at(self.time());
         cs.near_forced.clear();
         cs.near_forced.resize(self.points.len(), false);
@@ -99,26 +115,43 @@ impl Stepper<'_> {
             let sign = if s == 0 { -1.0 } else { 1.0 };
             let n = self.sides[s].modes();
             cs.load_now[s].resize(n, 0.0);
-            for k in 0..n {
-                let mut contact_now = 0.0;
-                for p in &self.points {
-                    contact_now += sign * p.r[s][k] * p.force;
+            // Point by point, each mode's sum in the points' order.
+            cs.load_now[s].fill(0.0);
+            for p in self.points.iter().filter(|p| p.force != 0.0) {
+                for (load, r) in cs.load_now[s].iter_mut().zip(&p.r[s]) {
+                    *load += sign * r * p.force;
                 }
-                cs.load_now[s][k] = contact_now;
             }
         }
-        self.trial(hh, &mut cs);
+        // A sleeping level the step could have brought within reach wakes, and the step is made
+        // again with it.
+        loop {
+            self.try_step(hh, &mut cs);
+            if !self.wake_reached(&mut cs) {
+                break;
+            }
+        }
+        self.commit_contact(&mut cs);
+
+        self.contact_scratch = Some(cs);
+        Ok(())
+    }
+
+    /// The step of length hh into `cs.trial`, made again where a level turns out within reach or
+    /// a slab starts stepping, and ended early where a Kelvin-Voigt link lets go.
+    fn try_step(&mut self, hh: f64, cs: &mut Scratch) {
+        self.trial(hh, cs);
         // A level left out of reach may have been reached after all (the other levels' forces
         // can pull it closer): then it is read exactly and the step made again.
-        if self.sears && self.reach_back(&mut cs) {
-            self.trial(hh, &mut cs);
+        if self.sears && self.reach_back(cs) {
+            self.trial(hh, cs);
         }
         // A quiet slab (its waves only ringing) starts stepping where its level is pushed.
         if self.sears && self.revive_pushed(&cs.trial.forces) {
-            self.trial(hh, &mut cs);
+            self.trial(hh, cs);
         }
         // A Kelvin-Voigt link lets go where k delta + c delta' reaches zero, inside the step.
-        let released = (0..self.points.len()).find(|&i| {
+        let released = cs.awake.iter().copied().find(|&i| {
             self.sc.contact == ContactModel::Kelvin
                 && self.points[i].force > 0.0
                 && cs.trial.forces[i] <= 0.0
@@ -130,25 +163,68 @@ impl Stepper<'_> {
                 let p = &self.points[i];
                 p.element.push(cs.trial.deltas[i], cs.trial.rates[i], p.v0)
             };
-            let x = bracket(|x| push(x, &mut cs), 0.0, 1.0, 1e-12)
+            let x = bracket(|x| push(x, cs), 0.0, 1.0, 1e-12)
                 .second_side
                 .max(1e-9);
-            self.trial(x * hh, &mut cs);
+            self.trial(x * hh, cs);
             cs.trial.forces[i] = 0.0;
             cs.trial.released = Some(i);
         }
-        // A contact opening at a level read by its bound at the start: its overlap there, exactly,
-        // places the opening inside the step.
-        for i in 0..self.points.len() {
-            if cs.bounded[i] && cs.trial.forces[i] > 0.0 {
-                let c = self.point_now(i).0;
-                let p = &mut self.points[i];
-                p.delta = c - self.sc.gap_m - p.elastic_at(n);
-            }
+    }
+
+    /// Each sleeping level's margin after the trial: less the most the trial's modal increments
+    /// can move it, or, where that leaves none, read exactly at the trial's end. A level whose
+    /// exact reading finds it within reach wakes (read exactly where the step starts); whether
+    /// any did, and the step must be made again.
+    fn wake_reached(&mut self, cs: &mut Scratch) -> bool {
+        if cs.awake.len() == self.points.len() {
+            return false;
         }
-        self.commit_contact(&mut cs);
-        self.contact_scratch = Some(cs);
-        Ok(())
+        let moved: [f64; 2] =
+            std::array::from_fn(|s| cs.trial.dq[s].iter().map(|x| x * x).sum::<f64>().sqrt());
+        let (n, gap) = (self.n, self.sc.gap_m);
+        let mut any = false;
+        for i in 0..self.points.len() {
+            if !cs.asleep[i] {
+                continue;
+            }
+            let p = &self.points[i];
+            // A hair over the Cauchy-Schwarz bound covers the round-off of both sums.
+            let reach = (p.norm[0] * moved[0] + p.norm[1] * moved[1]) * (1.0 + 1e-9);
+            let left = cs.margin[i] - reach;
+            if left > 0.0 {
+                cs.margin_next[i] = left;
+                continue;
+            }
+
+            let end: [f64; 2] = std::array::from_fn(|s| {
+                let (q, dq) = (&self.sides[s].q, &cs.trial.dq[s]);
+                (0..q.len()).map(|k| p.r[s][k] * (q[k] + dq[k])).sum()
+            });
+            let bound = if self.sears {
+                p.elastic_bound_from(n + 1)
+            } else {
+                0.0
+            };
+            let exact = gap - (end[0] - end[1]) - bound;
+            if exact > 0.0 {
+                cs.margin_next[i] = exact;
+                continue;
+            }
+
+            let (c, w) = self.point_now(i);
+            let p = &mut self.points[i];
+            p.delta = c - gap - p.elastic_at(n);
+            p.rate = w;
+            cs.asleep[i] = false;
+            any = true;
+        }
+        if any {
+            cs.awake.clear();
+            cs.awake
+                .extend((0..self.points.len()).filter(|&i| !cs.asleep[i]));
+        }
+        any
     }
 
     /// Whether a level the trial left out of reach could have been reached: its overlap with
@@ -157,7 +233,7 @@ impl Stepper<'_> {
     fn reach_back(&self, cs: &mut Scratch) -> bool {
         let np = self.points.len();
         let mut any = false;
-        for i in 0..np {
+        for &i in &cs.awake {
             if !cs.far[i] {
                 continue;
             }
@@ -166,7 +242,11 @@ impl Stepper<'_> {
             } else {
                 &cs.g
             };
-            let others: f64 = (0..np).map(|j| g[i * np + j] * cs.trial.forces[j]).sum();
+            let others: f64 = cs
+                .awake
+                .iter()
+                .map(|&j| g[i * np + j] * cs.trial.forces[j])
+                .sum();
             if cs.predicted[i] + cs.far_bound[i] - others >= 0.0 {
                 cs.far[i] = false;
                 cs.near_forced[i] = true;
@@ -201,7 +281,12 @@ impl Stepper<'_> {
         for s in 0..2 {
             let sign = if s == 0 { -1.0 } else { 1.0 };
             for k in 0..self.sides[s].modes() {
-                let contact: f64 = self.points.iter().map(|p| sign * p.r[s][k] * p.force).sum();
+                let contact: f64 = self
+                    .points
+                    .iter()
+                    .filter(|p| p.force != 0.0)
+                    .map(|p| sign * p.r[s][k] * p.force)
+                    .sum();
                 let side = &mut self.sides[s];
                 side.a[k] = -side.gamma[k] * ground + contact
                     - 2.0 * side.zeta[k] * side.omega[k] * side.v[k]
@@ -223,8 +308,10 @@ impl Stepper<'_> {
             out.dq[s].resize(n, 0.0);
             for k in 0..n {
                 let mut f = 0.0;
-                for (p, force) in self.points.iter().zip(&out.forces) {
-                    f += p.r[s][k] * force;
+                for &i in &cs.awake {
+                    if out.forces[i] != 0.0 {
+                        f += self.points[i].r[s][k] * out.forces[i];
+                    }
                 }
                 out.dq[s][k] = cs.step[s][k] + sign * f / cs.k_hat[s][k];
             }
@@ -274,7 +361,8 @@ impl Stepper<'_> {
         cs.far_bound.resize(np, 0.0);
         cs.near_forced.resize(np, false);
         let next = self.n + 1;
-        for (i, p) in self.points.iter().enumerate() {
+        for &i in &cs.awake {
+            let p = &self.points[i];
             let mut pred = [0.0; 2];
             for (s, out) in pred.iter_mut().enumerate() {
                 let (q, step, r) = (&self.sides[s].q, &cs.step[s], &p.r[s]);
@@ -318,8 +406,25 @@ impl Stepper<'_> {
         }
         cs.g.clear();
         cs.g.resize(np * np, 0.0);
-        for (i, p) in self.points.iter().enumerate() {
-            for (j, o) in self.points.iter().enumerate() {
+        // The whole-step G is kept for every later step, so it is made for every point; another
+        // step's only for the points it reads.
+        let rows: Vec<usize> = if full {
+            for i in (0..np).filter(|&i| cs.asleep[i]) {
+                cs.compliance[i] = self.points[i]
+                    .slabs
+                    .iter()
+                    .flatten()
+                    .map(|s| s.instant_compliance())
+                    .sum();
+            }
+            (0..np).collect()
+        } else {
+            cs.awake.clone()
+        };
+        for &i in &rows {
+            let p = &self.points[i];
+            for &j in &rows {
+                let o = &self.points[j];
                 let mut g = 0.0;
                 for s in 0..2 {
                     let mut part = 0.0;
@@ -361,11 +466,13 @@ impl Stepper<'_> {
         for _sweep in 0..200 {
             let mut change = 0.0f64;
             let mut scale = 0.0f64;
-            for i in 0..np {
+            for &i in &cs.awake {
                 let p = &self.points[i];
-                let others: f64 = (0..np)
-                    .filter(|&j| j != i)
-                    .map(|j| g[i * np + j] * out.forces[j])
+                let others: f64 = cs
+                    .awake
+                    .iter()
+                    .filter(|&&j| j != i)
+                    .map(|&j| g[i * np + j] * out.forces[j])
                     .sum();
                 let rhs = cs.predicted[i] - others;
                 // A damped link that let go with the floors still overlapping takes hold again
@@ -392,7 +499,7 @@ impl Stepper<'_> {
                 out.deltas[i] = d;
                 out.rates[i] = rate;
             }
-            if np == 1 || change <= 1e-13 * scale {
+            if cs.awake.len() <= 1 || change <= 1e-13 * scale {
                 break;
             }
         }
@@ -407,12 +514,16 @@ impl Stepper<'_> {
         cs.before.clear();
         cs.before.extend(self.points.iter().map(|p| p.force));
         cs.u_before.clear();
-        for p in &self.points {
-            let u = self.point_now_of(p);
-            cs.u_before.push(u);
+        cs.u_before.resize(self.points.len(), (0.0, 0.0));
+        for &i in &cs.awake {
+            cs.u_before[i] = self.point_now_of(&self.points[i]);
         }
-        let speeds: [f64; 2] =
-            std::array::from_fn(|s| self.sides[s].v.iter().map(|x| x.abs()).sum());
+        for s in 0..2 {
+            let side = &self.sides[s];
+            let [q, v] = &mut cs.modal_before[s];
+            q.clone_from(&side.q);
+            v.clone_from(&side.v);
+        }
         for s in 0..2 {
             let side = &mut self.sides[s];
             for k in 0..side.modes() {
@@ -442,8 +553,14 @@ impl Stepper<'_> {
                 }
             }
         }
-        let mut opened_or_closed = false;
+        // A sleeping level keeps sleeping with what the trial left of its margin.
         for i in 0..self.points.len() {
+            if cs.asleep[i] {
+                cs.margin[i] = cs.margin_next[i];
+            }
+        }
+        let mut opened_or_closed = false;
+        for &i in &cs.awake {
             let u_after = self.point_now(i);
             let p = &mut self.points[i];
             let (f0, f1) = (cs.before[i], tr.forces[i]);
@@ -515,7 +632,7 @@ impl Stepper<'_> {
             }
         }
         // Accelerations stay Newmark's inside contacts; leaving one, the free steps need none.
-        self.track_peaks_in_contact(&cs.trial.dq, speeds, hh);
+        self.track_peaks_in_contact(&cs.trial.dq, &cs.modal_before, hh);
         self.record_in_contact(opened_or_closed);
     }
 

@@ -64,6 +64,9 @@ struct Side {
     gamma: Vec<f64>,
     /// `shapes[k][f]`: mode k at floor f.
     shapes: Vec<Vec<f64>>,
+    /// `by_floor[f][k]`: the same, floor by floor, so a floor's sum over the modes reads
+    /// consecutive memory.
+    by_floor: Vec<Vec<f64>>,
     heights: Vec<f64>,
     q: Vec<f64>,
     v: Vec<f64>,
@@ -128,6 +131,9 @@ impl Side {
             zeta: modes.damping.clone(),
             gamma: modes.participation.clone(),
             shapes: modes.shapes.clone(),
+            by_floor: (0..heights.len())
+                .map(|f| (0..n).map(|k| modes.shapes[k][f]).collect())
+                .collect(),
             heights,
             q: vec![0.0; n],
             v: modes.participation.iter().map(|g| g * v0).collect(),
@@ -148,7 +154,7 @@ impl Side {
 
     /// Floor f's displacement from modal coordinates `q`.
     fn floor(&self, q: &[f64], f: usize) -> f64 {
-        (0..q.len()).map(|k| self.shapes[k][f] * q[k]).sum()
+        dotv(&self.by_floor[f], q)
     }
 }
 
@@ -212,6 +218,9 @@ struct Point {
     element: Element,
     /// `r[side][k]`: the point's displacement per unit of mode k.
     r: [Vec<f64>; 2],
+    /// The Euclidean size of `r[side]`: a change dq of a side's modes moves the point by at
+    /// most this times the size of dq (Cauchy-Schwarz).
+    norm: [f64; 2],
     slabs: [Option<SlabWaves>; 2],
     force: f64,
     delta: f64,
@@ -275,6 +284,11 @@ pub(super) struct Stepper<'a> {
     stale: Vec<bool>,
     /// Inside contacts: how far below its peak each signal has been shown to stay.
     headroom: Vec<f64>,
+    /// Inside contacts: each signal's rate's proven distance from zero since it was last read,
+    /// whether it is left unread as monotone since, and whether any is.
+    sign_room: Vec<f64>,
+    deferred: Vec<bool>,
+    any_deferred: bool,
     pub steps: usize,
     pub contact_steps: usize,
     sears: bool,
@@ -372,6 +386,9 @@ impl<'a> Stepper<'a> {
             peaks: Peaks::new(signals.len()),
             stale: vec![false; signals.len()],
             headroom: vec![f64::NEG_INFINITY; signals.len()],
+            sign_room: vec![0.0; signals.len()],
+            deferred: vec![false; signals.len()],
+            any_deferred: false,
             record: Record::new(
                 sc.left.storeys,
                 sc.right.storeys,
@@ -482,6 +499,7 @@ impl<'a> Stepper<'a> {
                 self.contact_step()?;
                 continue;
             }
+            self.flush_deferred();
             if self.offset > 0.0 {
                 // Back onto the grid after an event inside a step.
                 let rest = self.grid.h - self.offset;
@@ -532,6 +550,7 @@ impl<'a> Stepper<'a> {
 
     /// The contact elements' energy at the end, and the buildings'.
     pub fn finish(&mut self, end_s: f64) -> (BuildingEnergy, bool) {
+        self.flush_deferred();
         let stored: f64 = self
             .points
             .iter()
@@ -626,6 +645,7 @@ fn new_point(
     };
     Point {
         element,
+        norm: std::array::from_fn(|s| r[s].iter().map(|x| x * x).sum::<f64>().sqrt()),
         r,
         slabs: [slab(0), slab(1)],
         force: 0.0,

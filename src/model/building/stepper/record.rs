@@ -17,6 +17,9 @@ pub(super) struct Signal {
     /// Its largest coefficient: a step that moves its side's modes by dq moves it by at most
     /// this times the sum of |dq|.
     largest: f64,
+    /// The Euclidean size of its coefficients: that step moves it by at most this times the
+    /// size of dq, too (the tighter of the two is used).
+    norm: f64,
 }
 
 impl Signal {
@@ -31,6 +34,7 @@ impl Signal {
                     coef: (0..side.modes()).map(|k| side.shapes[k][f]).collect(),
                     same_as: None,
                     largest: 0.0,
+                    norm: 0.0,
                 });
             }
         }
@@ -44,6 +48,7 @@ impl Signal {
                         .collect(),
                     same_as: None,
                     largest: 0.0,
+                    norm: 0.0,
                 });
             }
         }
@@ -54,11 +59,13 @@ impl Signal {
                     coef: p.r[s].clone(),
                     same_as: None,
                     largest: 0.0,
+                    norm: 0.0,
                 });
             }
         }
         for sig in out.iter_mut() {
             sig.largest = sig.coef.iter().fold(0.0, |m: f64, c| m.max(c.abs()));
+            sig.norm = sig.coef.iter().map(|c| c * c).sum::<f64>().sqrt();
         }
         for i in 0..out.len() {
             out[i].same_as = (0..i).find(|&j| {
@@ -76,6 +83,14 @@ impl Signal {
             .map(|(c, m)| c.abs() * m)
             .sum()
     }
+}
+
+/// The sum of |x| and the Euclidean size of x.
+fn sizes(x: &[f64]) -> [f64; 2] {
+    let [l1, l2] = x
+        .iter()
+        .fold([0.0, 0.0], |[l1, l2], v| [l1 + v.abs(), l2 + v * v]);
+    [l1, l2.sqrt()]
 }
 
 /// The largest |value| of signals known with their rates at a sequence of instants: between
@@ -215,33 +230,81 @@ impl Stepper<'_> {
                 self.peaks.pass(i, t, u, r);
                 self.stale[i] = false;
             } else {
+                // Read now after steps it was shown monotone over, too: its peak is at an end.
                 self.peaks.update(i, t, u, r);
             }
+            self.deferred[i] = false;
+            self.sign_room[i] = r.abs();
             self.headroom[i] = self.peaks.peak(i) - u.abs();
         }
     }
 
-    /// Every signal's peak brought up to the end of a contact step that moved each side's modes
-    /// by `dq`, from velocities whose sums of sizes were `speeds` before it: a signal that the
-    /// step's bound (its largest coefficient times the sum of |dq|, and the cubic's bulge
-    /// between the step's ends) cannot bring to its peak is not looked at, its headroom only
-    /// shrinking by that bound; the rest as [`Stepper::track_peaks_now`].
-    pub(super) fn track_peaks_in_contact(&mut self, dq: &[Vec<f64>; 2], speeds: [f64; 2], hh: f64) {
+    /// Every signal's peak brought up to the end of a contact step from `before` (each side's
+    /// modal displacements and velocities where it started) that moved each side's modes by
+    /// `dq`. A signal is read only where neither of two proofs holds, each checked at the cost
+    /// of a few operations:
+    /// - **below its peak**: the step's bound (its coefficients against the size of dq, and the
+    ///   cubic's bulge between the step's ends) cannot bring it there; its headroom shrinks by
+    ///   that bound;
+    /// - **monotone**: its rate cannot have changed sign since it was last read (the changes of
+    ///   the modal velocities bound the rate's). A Newmark step moves it by h/2 (r0 + r1), so it
+    ///   has moved one way only, and its largest size since is at one end: the peak is brought
+    ///   up when the proof ends, reading it at the step before (from `before`) and now, as
+    ///   reading it at every step would have.
+    pub(super) fn track_peaks_in_contact(
+        &mut self,
+        dq: &[Vec<f64>; 2],
+        before: &[[Vec<f64>; 2]; 2],
+        hh: f64,
+    ) {
         let t = self.time();
-        let moved: [f64; 2] = std::array::from_fn(|s| dq[s].iter().map(|x| x.abs()).sum());
-        let speed_after: [f64; 2] =
-            std::array::from_fn(|s| self.sides[s].v.iter().map(|x| x.abs()).sum());
+        let moved: [[f64; 2]; 2] = std::array::from_fn(|s| sizes(&dq[s]));
+        let speeds: [[f64; 2]; 2] = std::array::from_fn(|s| sizes(&before[s][1]));
+        let speed_after: [[f64; 2]; 2] = std::array::from_fn(|s| sizes(&self.sides[s].v));
+        let kicked: [[f64; 2]; 2] = std::array::from_fn(|s| {
+            let (v0, v1) = (&before[s][1], &self.sides[s].v);
+            let [l1, l2] = v0.iter().zip(v1).fold([0.0, 0.0], |[l1, l2], (a, b)| {
+                let d = b - a;
+                [l1 + d.abs(), l2 + d * d]
+            });
+            [l1, l2.sqrt()]
+        });
         for (i, sig) in self.signals.iter().enumerate() {
             if sig.same_as.is_some() {
                 continue;
             }
             let s = sig.side;
-            let bound = sig.largest * (moved[s] + 4.0 / 27.0 * hh * (speeds[s] + speed_after[s]));
-            let room = self.headroom[i] - bound;
-            if room > 1e-9 * self.peaks.peak(i) {
-                self.headroom[i] = room;
-                self.stale[i] = true;
-                continue;
+            let peak = self.peaks.peak(i);
+            // |sum c dq| is at most max|c| sum|dq| and |c| |dq|: the tighter of the two, for
+            // the step's displacement and for the rates at both ends.
+            let most = |[l1, l2]: [f64; 2]| (sig.largest * l1).min(sig.norm * l2);
+            if !self.deferred[i] {
+                let step = most(moved[s]);
+                let (rate0, rate1) = (most(speeds[s]), most(speed_after[s]));
+                let room = self.headroom[i] - step - 4.0 / 27.0 * hh * (rate0 + rate1);
+                if room > 1e-9 * peak {
+                    self.headroom[i] = room;
+                    self.stale[i] = true;
+                    continue;
+                }
+            }
+            if !self.stale[i] {
+                let keeps = self.sign_room[i] - most(kicked[s]);
+                if keeps > 1e-9 * self.sign_room[i].abs().max(f64::MIN_POSITIVE) {
+                    self.sign_room[i] = keeps;
+                    self.deferred[i] = true;
+                    self.any_deferred = true;
+                    continue;
+                }
+            }
+            if self.deferred[i] {
+                let (u0, r0) = self.signal(
+                    i,
+                    [&before[0][0], &before[1][0]],
+                    [&before[0][1], &before[1][1]],
+                );
+                self.peaks.update(i, t - hh, u0, r0);
+                self.deferred[i] = false;
             }
             let side = &self.sides[s];
             let (mut u, mut r) = (0.0, 0.0);
@@ -249,6 +312,7 @@ impl Stepper<'_> {
                 u += c * q;
                 r += c * v;
             }
+            self.sign_room[i] = r.abs();
             if self.stale[i] {
                 self.peaks.pass(i, t, u, r);
                 self.stale[i] = false;
@@ -259,11 +323,49 @@ impl Stepper<'_> {
         }
     }
 
+    /// Signal i's peak up to now: a signal shown monotone since it was last read has it at one
+    /// end.
+    fn peak_so_far(&self, i: usize) -> f64 {
+        let peak = self.peaks.peak(i);
+        if !self.deferred[i] {
+            return peak;
+        }
+        let side = &self.sides[self.signals[i].side];
+        let u = dotv(&self.signals[i].coef, &side.q);
+        peak.max(u.abs())
+    }
+
+    /// Brings the peaks of the signals left monotone up to now, before anything but a contact
+    /// step moves them.
+    pub(super) fn flush_deferred(&mut self) {
+        if !self.any_deferred {
+            return;
+        }
+        let t = self.time();
+        for i in 0..self.signals.len() {
+            if self.deferred[i] {
+                let (u, r) = self.signal(
+                    i,
+                    [&self.sides[0].q, &self.sides[1].q],
+                    [&self.sides[0].v, &self.sides[1].v],
+                );
+                self.peaks.update(i, t, u, r);
+                self.deferred[i] = false;
+                self.sign_room[i] = r.abs();
+                self.headroom[i] = self.peaks.peak(i) - u.abs();
+            }
+        }
+        self.any_deferred = false;
+    }
+
     /// Peaks of each floor, each storey's drift ratio and each point.
     pub fn peaks(&self) -> PeakSummary {
         let n = [self.sides[0].heights.len(), self.sides[1].heights.len()];
         let p: Vec<f64> = (0..self.signals.len())
-            .map(|i| self.peaks.peak(self.signals[i].same_as.unwrap_or(i)))
+            .map(|i| {
+                let i = self.signals[i].same_as.unwrap_or(i);
+                self.peak_so_far(i)
+            })
             .collect();
         let floors = [p[..n[0]].to_vec(), p[n[0]..n[0] + n[1]].to_vec()];
         let d0 = n[0] + n[1];
