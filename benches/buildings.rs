@@ -58,6 +58,48 @@ fn three_against_five(c: &mut Criterion) {
     g.finish();
 }
 
+/// What one `pounding buildings` makes: the run with its histories, its error estimate and the
+/// run without contact (the report's figures aside), for the paper's pair with Sears and with
+/// the linear spring, and the 3- against 5-storey pair with Sears.
+fn whole_run(c: &mut Criterion) {
+    let motion = record();
+    let mdof = preset::load_for::<BuildingSetup>("mdof-3-5", "buildings")
+        .expect("shipped")
+        .scenario;
+    let mut g = c.benchmark_group("whole_run");
+    g.sample_size(10);
+    for (name, base, model) in [
+        (
+            "paper_sears",
+            BuildingScenario::paper(),
+            ContactModel::Sears,
+        ),
+        (
+            "paper_linear",
+            BuildingScenario::paper(),
+            ContactModel::Linear,
+        ),
+        ("mdof_3_5_sears", mdof, ContactModel::Sears),
+    ] {
+        let sc = BuildingScenario {
+            contact: model,
+            ..base
+        };
+        let none = BuildingScenario {
+            contact: ContactModel::None,
+            ..sc.clone()
+        };
+        g.bench_function(name, |b| {
+            b.iter(|| {
+                let r = solve(black_box(&sc), black_box(&motion)).expect("solves");
+                let e = estimate_error(&sc, &motion, &r).expect("estimates");
+                (r, e, solve(&none, &motion).expect("solves"))
+            })
+        });
+    }
+    g.finish();
+}
+
 /// `pounding gaps` over 20 records (El Centro and 19 synthetic ones), the 3- against 5-storey
 /// pair, in parallel: from the records loaded to every record's gaps.
 fn gaps_20_records(c: &mut Criterion) {
