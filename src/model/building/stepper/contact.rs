@@ -543,8 +543,6 @@ impl Stepper<'_> {
             }
         }
         self.advance(hh);
-        let t1 = self.time();
-        let n1 = self.n;
         for (i, p) in self.points.iter_mut().enumerate() {
             let f1 = tr.forces[i];
             for slab in p.slabs.iter_mut().flatten() {
@@ -559,6 +557,27 @@ impl Stepper<'_> {
                 cs.margin[i] = cs.margin_next[i];
             }
         }
+        let opened_or_closed = self.account_contacts(cs, t0);
+        self.contact_steps += 1;
+        if self.sears {
+            for p in self.points.iter_mut().filter(|p| p.force <= 0.0) {
+                for slab in p.slabs.iter_mut().flatten() {
+                    slab.settle();
+                }
+            }
+        }
+        // Accelerations stay Newmark's inside contacts; leaving one, the free steps need none.
+        self.track_peaks_in_contact(&cs.trial.dq, &cs.modal_before, hh);
+        self.record_in_contact(opened_or_closed);
+    }
+
+    /// Each level's contact after the step just taken from `t0`: the work of its force, its
+    /// overlap, and its contact opened, carried on or closed (with where inside the step);
+    /// whether any opened or closed.
+    fn account_contacts(&mut self, cs: &Scratch, t0: f64) -> bool {
+        let tr = &cs.trial;
+        let hh = tr.hh;
+        let (t1, n1) = (self.time(), self.n);
         let mut opened_or_closed = false;
         for &i in &cs.awake {
             let u_after = self.point_now(i);
@@ -623,17 +642,7 @@ impl Stepper<'_> {
                 }
             }
         }
-        self.contact_steps += 1;
-        if self.sears {
-            for p in self.points.iter_mut().filter(|p| p.force <= 0.0) {
-                for slab in p.slabs.iter_mut().flatten() {
-                    slab.settle();
-                }
-            }
-        }
-        // Accelerations stay Newmark's inside contacts; leaving one, the free steps need none.
-        self.track_peaks_in_contact(&cs.trial.dq, &cs.modal_before, hh);
-        self.record_in_contact(opened_or_closed);
+        opened_or_closed
     }
 
     pub(super) fn point_now_of(&self, p: &Point) -> (f64, f64) {
