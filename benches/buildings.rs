@@ -19,6 +19,13 @@ fn record() -> GroundMotion {
         .truncated(8.0)
 }
 
+/// The three- against five-storey pair as shipped.
+fn mdof_3_5() -> BuildingScenario {
+    preset::load_for::<BuildingSetup>("mdof-3-5", "buildings")
+        .expect("shipped")
+        .scenario
+}
+
 fn el_centro_8s(c: &mut Criterion) {
     let motion = record();
     let mut g = c.benchmark_group("buildings_8s");
@@ -37,9 +44,7 @@ fn el_centro_8s(c: &mut Criterion) {
 /// Three storeys against five (the mdof-3-5 preset): three floor-to-floor levels.
 fn three_against_five(c: &mut Criterion) {
     let motion = record();
-    let base = preset::load_for::<BuildingSetup>("mdof-3-5", "buildings")
-        .expect("shipped")
-        .scenario;
+    let base = mdof_3_5();
     let mut g = c.benchmark_group("mdof_3_5_8s");
     g.sample_size(10);
     for model in [
@@ -63,9 +68,6 @@ fn three_against_five(c: &mut Criterion) {
 /// the linear spring, and the 3- against 5-storey pair with Sears.
 fn whole_run(c: &mut Criterion) {
     let motion = record();
-    let mdof = preset::load_for::<BuildingSetup>("mdof-3-5", "buildings")
-        .expect("shipped")
-        .scenario;
     let mut g = c.benchmark_group("whole_run");
     g.sample_size(10);
     for (name, base, model) in [
@@ -79,7 +81,7 @@ fn whole_run(c: &mut Criterion) {
             BuildingScenario::paper(),
             ContactModel::Linear,
         ),
-        ("mdof_3_5_sears", mdof, ContactModel::Sears),
+        ("mdof_3_5_sears", mdof_3_5(), ContactModel::Sears),
     ] {
         let sc = BuildingScenario {
             contact: model,
@@ -103,9 +105,7 @@ fn whole_run(c: &mut Criterion) {
 /// `pounding gaps` over 20 records (El Centro and 19 synthetic ones), the 3- against 5-storey
 /// pair, in parallel: from the records loaded to every record's gaps.
 fn gaps_20_records(c: &mut Criterion) {
-    let base = preset::load_for::<BuildingSetup>("mdof-3-5", "buildings")
-        .expect("shipped")
-        .scenario;
+    let base = mdof_3_5();
     let mut motions = vec![record()];
     motions.extend((1..20).map(|seed| {
         SyntheticSpec {

@@ -146,6 +146,25 @@ fn the_run_is_shown_with_its_checks_pending_and_each_check_once_it_lands() {
     assert!(later.next().is_none());
 }
 
+/// Lands the part of `setup`'s run streamed at about `fraction` of its record as a stage before
+/// the last; returns the instant it was solved to.
+fn land_part(h: &mut Harness<'static, BuildingScene>, setup: BuildingSetup, fraction: f64) -> f64 {
+    let motion = crate::io::motion::load(&setup.motion).expect("the built-in record");
+    let partial = run_so_far(&setup, fraction);
+    let edge = partial.solved_to_s;
+    let drawing = BuildingDrawing::new(setup, motion, partial);
+    land(
+        h,
+        Landed {
+            output: Ok(Stage::Partial(Box::new(drawing))),
+            last: false,
+            job_time: Duration::ZERO,
+            since_request: Duration::ZERO,
+        },
+    );
+    edge
+}
+
 /// The run `sc` streams, cut where it had solved about `fraction` of its record.
 fn run_so_far(setup: &BuildingSetup, fraction: f64) -> BuildingResult {
     let motion = crate::io::motion::load(&setup.motion).expect("the built-in record");
@@ -167,24 +186,11 @@ fn run_so_far(setup: &BuildingSetup, fraction: f64) -> BuildingResult {
 
 #[test]
 fn a_run_still_solving_never_plays_or_draws_past_how_far_it_has_solved() {
-    let setup = paper_buildings();
-    let partial = run_so_far(&setup, 0.2);
-    let edge = partial.solved_to_s;
-    let motion = crate::io::motion::load(&setup.motion).expect("the built-in record");
     let mut h = harness(quiet_scene());
     // A launch time beyond what is solved stays set, and is drawn at the edge.
     h.state_mut().playback.t = 7.5;
+    let edge = land_part(&mut h, paper_buildings(), 0.2);
     assert!(edge < 7.5, "{edge}");
-    let drawing = BuildingDrawing::new(setup.clone(), motion, partial);
-    land(
-        &mut h,
-        Landed {
-            output: Ok(Stage::Partial(Box::new(drawing))),
-            last: false,
-            job_time: Duration::ZERO,
-            since_request: Duration::ZERO,
-        },
-    );
     assert!(shows(&h, &format!("solving: {edge:.1} s of 8.0 s; so far")));
     assert!(shows(&h, "once the run is solved"));
     let scene = h.state_mut();
@@ -222,18 +228,7 @@ fn a_newer_requests_run_never_shows_an_older_ones_checks_and_gives_way_if_it_sto
     h.run_steps(2);
     assert!(!shows(&h, "pending"));
     // ...and a run of the newer one comes without them.
-    let motion = crate::io::motion::load(&setup.motion).expect("the built-in record");
-    let partial = run_so_far(&setup, 0.5);
-    let drawing = BuildingDrawing::new(setup, motion, partial);
-    land(
-        &mut h,
-        Landed {
-            output: Ok(Stage::Partial(Box::new(drawing))),
-            last: false,
-            job_time: Duration::ZERO,
-            since_request: Duration::ZERO,
-        },
-    );
+    land_part(&mut h, setup, 0.5);
     assert!(shows(&h, "(without pounding pending)"));
     assert!(shows(
         &h,

@@ -445,18 +445,7 @@ fn doubled(omega: f64, zeta: f64, s: f64, halvings: i32) -> StepIntegrals {
     let mut phi: [[f64; 4]; 4] =
         std::array::from_fn(|i| std::array::from_fn(|j| e[i][j] * d[j] / d[i]));
     for _ in 0..halvings {
-        let int_q = std::array::from_fn(|j| {
-            ints.int_q[j] + (0..4).map(|k| ints.int_q[k] * phi[k][j]).sum::<f64>()
-        });
-        let w_phi: [[f64; 4]; 4] = std::array::from_fn(|i| {
-            std::array::from_fn(|j| (0..4).map(|k| ints.w[i][k] * phi[k][j]).sum())
-        });
-        let w = std::array::from_fn(|i| {
-            std::array::from_fn(|j| {
-                ints.w[i][j] + (0..4).map(|k| phi[k][i] * w_phi[k][j]).sum::<f64>()
-            })
-        });
-        ints = StepIntegrals { int_q, w };
+        ints = joined(&ints, &phi, &ints);
         phi = matmul(&phi, &phi);
     }
     ints

@@ -175,15 +175,18 @@ mod tests {
             .fold(0.0, f64::max)
     }
 
+    /// Modes from light damping through critical to heavy: (omega [rad/s], zeta).
+    const DAMPINGS: [(f64, f64); 5] = [
+        (18.0, 0.05),
+        (3.0, 0.0),
+        (40.0, 0.6),
+        (10.0, 1.0),
+        (7.0, 3.0),
+    ];
+
     #[test]
     fn the_fourth_derivative_bound_holds_for_light_critical_and_heavy_damping() {
-        for (omega, zeta) in [
-            (18.0, 0.05),
-            (3.0, 0.0),
-            (40.0, 0.6),
-            (10.0, 1.0),
-            (7.0, 3.0),
-        ] {
+        for (omega, zeta) in DAMPINGS {
             for y in [
                 [0.01, 0.0, 0.0, 0.0],
                 [0.0, 0.3, 0.0, 0.0],
@@ -212,13 +215,7 @@ mod tests {
 
     #[test]
     fn the_value_bound_holds_over_the_stretch() {
-        for (omega, zeta) in [
-            (18.0, 0.05),
-            (3.0, 0.0),
-            (40.0, 0.6),
-            (10.0, 1.0),
-            (7.0, 3.0),
-        ] {
+        for (omega, zeta) in DAMPINGS {
             for y in [
                 [0.01, 0.0, 0.0, 0.0],
                 [0.004, -0.2, 2.0, -15.0],

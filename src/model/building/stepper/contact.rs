@@ -72,8 +72,9 @@ impl Stepper<'_> {
             .contact_scratch
             .take()
             .expect("the scratch is home between stages");
+        self.contact_loads(&mut cs);
         if !self.newmark {
-            self.equilibrium_accelerations();
+            self.equilibrium_accelerations(&cs.load_now);
             self.newmark = true;
             // The free stretch before moved every level: none is known to be out of reach.
             cs.asleep.clear();
@@ -89,21 +90,16 @@ impl Stepper<'_> {
                 let (c, w) = self.point_now(i);
                 let p = &mut self.points[i];
                 // A level whose quiet slabs' ringing cannot close the gap needs no exact reading
-                // of it: it sleeps, and is only read again once the steps' motion could have
-                // used up its margin.
-                let bound = if self.sears {
-                    p.elastic_bound_from(n)
-                } else {
-                    0.0
-                };
-                p.delta = if c - self.sc.gap_m + bound < 0.0 {
+                // of it: it sleeps (its overlap unread until it wakes), and is only read again
+                // once the steps' motion could have used up its margin.
+                let bound = p.elastic_bound_from(n);
+                if c - self.sc.gap_m + bound < 0.0 {
                     cs.asleep[i] = true;
                     cs.margin[i] = self.sc.gap_m - c - bound;
-                    c - self.sc.gap_m - bound
                 } else {
-                    c - self.sc.gap_m - p.elastic_at(n)
-                };
-                p.rate = w;
+                    p.delta = c - self.sc.gap_m - p.elastic_at(n);
+                    p.rate = w;
+                }
             }
         }
         cs.awake.clear();
@@ -111,18 +107,6 @@ impl Stepper<'_> {
         cs.ground0 = self.motion.at(self.time());
         cs.near_forced.clear();
         cs.near_forced.resize(self.points.len(), false);
-        for s in 0..2 {
-            let sign = if s == 0 { -1.0 } else { 1.0 };
-            let n = self.sides[s].modes();
-            cs.load_now[s].resize(n, 0.0);
-            // Point by point, each mode's sum in the points' order.
-            cs.load_now[s].fill(0.0);
-            for p in self.points.iter().filter(|p| p.force != 0.0) {
-                for (load, r) in cs.load_now[s].iter_mut().zip(&p.r[s]) {
-                    *load += sign * r * p.force;
-                }
-            }
-        }
         // A sleeping level the step could have brought within reach wakes, and the step is made
         // again with it.
         loop {
@@ -197,16 +181,7 @@ impl Stepper<'_> {
                 continue;
             }
 
-            let end: [f64; 2] = std::array::from_fn(|s| {
-                let (q, dq) = (&self.sides[s].q, &cs.trial.dq[s]);
-                (0..q.len()).map(|k| p.r[s][k] * (q[k] + dq[k])).sum()
-            });
-            let bound = if self.sears {
-                p.elastic_bound_from(n + 1)
-            } else {
-                0.0
-            };
-            let exact = gap - (end[0] - end[1]) - bound;
+            let exact = gap - self.closing_after(p, &cs.trial.dq) - p.elastic_bound_from(n + 1);
             if exact > 0.0 {
                 cs.margin_next[i] = exact;
                 continue;
@@ -274,25 +249,46 @@ impl Stepper<'_> {
         any
     }
 
-    /// Newmark's step needs accelerations that satisfy the equations of motion where it starts:
-    /// q'' = g - 2 zeta w q' - w^2 q with the ground's and the contact forces at this instant.
-    pub(super) fn equilibrium_accelerations(&mut self) {
-        let ground = self.motion.at(self.time());
+    /// Each mode's load from the contact forces where the step starts, per side, into
+    /// `cs.load_now`: point by point, each mode's sum in the points' order.
+    fn contact_loads(&self, cs: &mut Scratch) {
         for s in 0..2 {
             let sign = if s == 0 { -1.0 } else { 1.0 };
-            for k in 0..self.sides[s].modes() {
-                let contact: f64 = self
-                    .points
-                    .iter()
-                    .filter(|p| p.force != 0.0)
-                    .map(|p| sign * p.r[s][k] * p.force)
-                    .sum();
-                let side = &mut self.sides[s];
+            let load = &mut cs.load_now[s];
+            load.clear();
+            load.resize(self.sides[s].modes(), 0.0);
+            for p in self.points.iter().filter(|p| p.force != 0.0) {
+                for (l, r) in load.iter_mut().zip(&p.r[s]) {
+                    *l += sign * r * p.force;
+                }
+            }
+        }
+    }
+
+    /// Newmark's step needs accelerations that satisfy the equations of motion where it starts:
+    /// q'' = g - 2 zeta w q' - w^2 q with the ground's and the contact forces (`load`, per side
+    /// and mode) at this instant.
+    fn equilibrium_accelerations(&mut self, load: &[Vec<f64>; 2]) {
+        let ground = self.motion.at(self.time());
+        for (side, load) in self.sides.iter_mut().zip(load) {
+            for (k, contact) in load.iter().enumerate() {
                 side.a[k] = -side.gamma[k] * ground + contact
                     - 2.0 * side.zeta[k] * side.omega[k] * side.v[k]
                     - side.omega[k].powi(2) * side.q[k];
             }
         }
+    }
+
+    /// A point's closing (left less right) with each side's modes at q plus `inc`.
+    fn closing_after(&self, p: &Point, inc: &[Vec<f64>; 2]) -> f64 {
+        let mut moved = [0.0; 2];
+        for (s, out) in moved.iter_mut().enumerate() {
+            let (q, inc, r) = (&self.sides[s].q, &inc[s], &p.r[s]);
+            for k in 0..r.len() {
+                *out += r[k] * (q[k] + inc[k]);
+            }
+        }
+        moved[0] - moved[1]
     }
 
     /// A contact step of length hh, not yet taken, into `cs.trial`.
@@ -363,14 +359,7 @@ impl Stepper<'_> {
         let next = self.n + 1;
         for &i in &cs.awake {
             let p = &self.points[i];
-            let mut pred = [0.0; 2];
-            for (s, out) in pred.iter_mut().enumerate() {
-                let (q, step, r) = (&self.sides[s].q, &cs.step[s], &p.r[s]);
-                for k in 0..r.len() {
-                    *out += r[k] * (q[k] + step[k]);
-                }
-            }
-            let closing = pred[0] - pred[1] - self.sc.gap_m;
+            let closing = self.closing_after(p, &cs.step) - self.sc.gap_m;
             let (mut e0, mut e1) = (0.0, 0.0);
             cs.far[i] = false;
             if self.sears {
@@ -385,9 +374,7 @@ impl Stepper<'_> {
                 if closing + bound < 0.0 {
                     cs.far[i] = true;
                     cs.far_bound[i] = bound;
-                    for slab in p.slabs.iter().flatten() {
-                        e1 += slab.instant_compliance();
-                    }
+                    e1 = p.instant_compliance();
                 } else {
                     for slab in p.slabs.iter().flatten() {
                         let (a, b) = slab.predict_at(next);
@@ -408,22 +395,19 @@ impl Stepper<'_> {
         cs.g.resize(np * np, 0.0);
         // The whole-step G is kept for every later step, so it is made for every point; another
         // step's only for the points it reads.
-        let rows: Vec<usize> = if full {
+        let every: Vec<usize>;
+        let rows: &[usize] = if full {
             for i in (0..np).filter(|&i| cs.asleep[i]) {
-                cs.compliance[i] = self.points[i]
-                    .slabs
-                    .iter()
-                    .flatten()
-                    .map(|s| s.instant_compliance())
-                    .sum();
+                cs.compliance[i] = self.points[i].instant_compliance();
             }
-            (0..np).collect()
+            every = (0..np).collect();
+            &every
         } else {
-            cs.awake.clone()
+            &cs.awake
         };
-        for &i in &rows {
+        for &i in rows {
             let p = &self.points[i];
-            for &j in &rows {
+            for &j in rows {
                 let o = &self.points[j];
                 let mut g = 0.0;
                 for s in 0..2 {

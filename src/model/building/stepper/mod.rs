@@ -242,6 +242,15 @@ impl Point {
         self.slabs.iter().flatten().map(|s| s.elastic_at(n)).sum()
     }
 
+    /// What the newest force moves the slabs' planes by over one step (zero without slabs).
+    fn instant_compliance(&self) -> f64 {
+        self.slabs
+            .iter()
+            .flatten()
+            .map(|s| s.instant_compliance())
+            .sum()
+    }
+
     /// A bound on the slabs' elastic displacement from grid index `n` on.
     fn elastic_bound_from(&self, n: usize) -> f64 {
         self.slabs
@@ -551,12 +560,7 @@ impl<'a> Stepper<'a> {
     /// The contact elements' energy at the end, and the buildings'.
     pub fn finish(&mut self, end_s: f64) -> (BuildingEnergy, bool) {
         self.flush_deferred();
-        let stored: f64 = self
-            .points
-            .iter()
-            .filter(|p| p.force > 0.0)
-            .map(|p| p.element.stored_energy(p.delta))
-            .sum();
+        let energy = self.energy_so_far();
         let still = self.points.iter().any(|p| p.force > 0.0);
         for p in self.points.iter_mut() {
             if let Some(c) = p.open.take() {
@@ -566,19 +570,7 @@ impl<'a> Stepper<'a> {
         if self.record.last_time() < end_s {
             self.record_now();
         }
-        let final_j = self.sides[0].energy() + self.sides[1].energy();
-        let l = self.ledger;
-        (
-            BuildingEnergy {
-                initial_j: l.initial_j,
-                input_j: l.input_j,
-                building_damping_j: l.damping_j,
-                contact_j: -l.contact_work_j - stored + l.exchanged_j,
-                final_j,
-                stored_contact_j: stored,
-            },
-            still,
-        )
+        (energy, still)
     }
 
     pub fn max_closing(&self) -> Vec<f64> {

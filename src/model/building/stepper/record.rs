@@ -86,10 +86,8 @@ impl Signal {
 }
 
 /// The sum of |x| and the Euclidean size of x.
-fn sizes(x: &[f64]) -> [f64; 2] {
-    let [l1, l2] = x
-        .iter()
-        .fold([0.0, 0.0], |[l1, l2], v| [l1 + v.abs(), l2 + v * v]);
+fn sizes(x: impl Iterator<Item = f64>) -> [f64; 2] {
+    let [l1, l2] = x.fold([0.0, 0.0], |[l1, l2], v| [l1 + v.abs(), l2 + v * v]);
     [l1, l2.sqrt()]
 }
 
@@ -215,28 +213,32 @@ impl Stepper<'_> {
     /// Every signal's peak brought up to the current state.
     pub(super) fn track_peaks_now(&mut self) {
         let t = self.time();
-        for (i, sig) in self.signals.iter().enumerate() {
-            if sig.same_as.is_some() {
-                continue;
+        for i in 0..self.signals.len() {
+            if self.signals[i].same_as.is_none() {
+                self.read_signal(i, t);
             }
-            let side = &self.sides[sig.side];
-            let (mut u, mut r) = (0.0, 0.0);
-            for ((c, q), v) in sig.coef.iter().zip(&side.q).zip(&side.v) {
-                u += c * q;
-                r += c * v;
-            }
-            if self.stale[i] {
-                // Left alone since its last instant, where a bound kept it below its peak.
-                self.peaks.pass(i, t, u, r);
-                self.stale[i] = false;
-            } else {
-                // Read now after steps it was shown monotone over, too: its peak is at an end.
-                self.peaks.update(i, t, u, r);
-            }
-            self.deferred[i] = false;
-            self.sign_room[i] = r.abs();
-            self.headroom[i] = self.peaks.peak(i) - u.abs();
         }
+    }
+
+    /// Reads signal i in the current state, at t: its peak brought up, and what the contact
+    /// steps' proofs start from (its headroom below the peak, its rate's distance from zero).
+    fn read_signal(&mut self, i: usize, t: f64) {
+        let (u, r) = self.signal(
+            i,
+            [&self.sides[0].q, &self.sides[1].q],
+            [&self.sides[0].v, &self.sides[1].v],
+        );
+        if self.stale[i] {
+            // Left alone since its last instant, where a bound kept it below its peak.
+            self.peaks.pass(i, t, u, r);
+            self.stale[i] = false;
+        } else {
+            // Read now after steps it was shown monotone over, too: its peak is at an end.
+            self.peaks.update(i, t, u, r);
+        }
+        self.deferred[i] = false;
+        self.sign_room[i] = r.abs();
+        self.headroom[i] = self.peaks.peak(i) - u.abs();
     }
 
     /// Every signal's peak brought up to the end of a contact step from `before` (each side's
@@ -258,26 +260,24 @@ impl Stepper<'_> {
         hh: f64,
     ) {
         let t = self.time();
-        let moved: [[f64; 2]; 2] = std::array::from_fn(|s| sizes(&dq[s]));
-        let speeds: [[f64; 2]; 2] = std::array::from_fn(|s| sizes(&before[s][1]));
-        let speed_after: [[f64; 2]; 2] = std::array::from_fn(|s| sizes(&self.sides[s].v));
+        let moved: [[f64; 2]; 2] = std::array::from_fn(|s| sizes(dq[s].iter().copied()));
+        let speeds: [[f64; 2]; 2] = std::array::from_fn(|s| sizes(before[s][1].iter().copied()));
+        let speed_after: [[f64; 2]; 2] =
+            std::array::from_fn(|s| sizes(self.sides[s].v.iter().copied()));
         let kicked: [[f64; 2]; 2] = std::array::from_fn(|s| {
             let (v0, v1) = (&before[s][1], &self.sides[s].v);
-            let [l1, l2] = v0.iter().zip(v1).fold([0.0, 0.0], |[l1, l2], (a, b)| {
-                let d = b - a;
-                [l1 + d.abs(), l2 + d * d]
-            });
-            [l1, l2.sqrt()]
+            sizes(v0.iter().zip(v1).map(|(a, b)| b - a))
         });
-        for (i, sig) in self.signals.iter().enumerate() {
+        for i in 0..self.signals.len() {
+            let sig = &self.signals[i];
             if sig.same_as.is_some() {
                 continue;
             }
-            let s = sig.side;
+            let (s, largest, norm) = (sig.side, sig.largest, sig.norm);
             let peak = self.peaks.peak(i);
             // |sum c dq| is at most max|c| sum|dq| and |c| |dq|: the tighter of the two, for
             // the step's displacement and for the rates at both ends.
-            let most = |[l1, l2]: [f64; 2]| (sig.largest * l1).min(sig.norm * l2);
+            let most = |[l1, l2]: [f64; 2]| (largest * l1).min(norm * l2);
             if !self.deferred[i] {
                 let step = most(moved[s]);
                 let (rate0, rate1) = (most(speeds[s]), most(speed_after[s]));
@@ -304,22 +304,8 @@ impl Stepper<'_> {
                     [&before[0][1], &before[1][1]],
                 );
                 self.peaks.update(i, t - hh, u0, r0);
-                self.deferred[i] = false;
             }
-            let side = &self.sides[s];
-            let (mut u, mut r) = (0.0, 0.0);
-            for ((c, q), v) in sig.coef.iter().zip(&side.q).zip(&side.v) {
-                u += c * q;
-                r += c * v;
-            }
-            self.sign_room[i] = r.abs();
-            if self.stale[i] {
-                self.peaks.pass(i, t, u, r);
-                self.stale[i] = false;
-            } else {
-                self.peaks.update(i, t, u, r);
-            }
-            self.headroom[i] = self.peaks.peak(i) - u.abs();
+            self.read_signal(i, t);
         }
     }
 
@@ -344,15 +330,8 @@ impl Stepper<'_> {
         let t = self.time();
         for i in 0..self.signals.len() {
             if self.deferred[i] {
-                let (u, r) = self.signal(
-                    i,
-                    [&self.sides[0].q, &self.sides[1].q],
-                    [&self.sides[0].v, &self.sides[1].v],
-                );
-                self.peaks.update(i, t, u, r);
-                self.deferred[i] = false;
-                self.sign_room[i] = r.abs();
-                self.headroom[i] = self.peaks.peak(i) - u.abs();
+                // Never stale while deferred: read from its last instant.
+                self.read_signal(i, t);
             }
         }
         self.any_deferred = false;
