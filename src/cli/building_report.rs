@@ -99,10 +99,26 @@ pub struct BuildingReport {
     pub peak_drift_ratios_right: Vec<f64>,
     pub peak_drift_ratios_left_no_pounding: Vec<f64>,
     pub peak_drift_ratios_right_no_pounding: Vec<f64>,
+    /// Per storey, lowest first: peak drift over the yield drift F_y / k.
+    pub ductility_demands_left: Vec<f64>,
+    pub ductility_demands_right: Vec<f64>,
+    pub ductility_demands_left_no_pounding: Vec<f64>,
+    pub ductility_demands_right_no_pounding: Vec<f64>,
+    /// Per storey: the drift at the end of the run (after `motion.settle_s`).
+    pub residual_drifts_left_m: Vec<f64>,
+    pub residual_drifts_right_m: Vec<f64>,
+    pub residual_drifts_left_no_pounding_m: Vec<f64>,
+    pub residual_drifts_right_no_pounding_m: Vec<f64>,
+    /// Per storey: the energy its spring dissipated (zero for elastic storeys).
+    pub hysteretic_energy_left_j: Vec<f64>,
+    pub hysteretic_energy_right_j: Vec<f64>,
+    pub hysteretic_energy_left_no_pounding_j: Vec<f64>,
+    pub hysteretic_energy_right_no_pounding_j: Vec<f64>,
     pub energy_initial_j: f64,
     pub energy_input_j: f64,
     pub energy_building_damping_j: f64,
     pub energy_to_contact_j: f64,
+    pub energy_hysteretic_j: f64,
     pub energy_balance_error: f64,
     pub steps: usize,
     pub contact_steps: usize,
@@ -228,10 +244,23 @@ impl BuildingReport {
             peak_drift_ratios_right: r.peak_drift_ratio[1].clone(),
             peak_drift_ratios_left_no_pounding: baseline.peak_drift_ratio[0].clone(),
             peak_drift_ratios_right_no_pounding: baseline.peak_drift_ratio[1].clone(),
+            ductility_demands_left: r.ductility_demand[0].clone(),
+            ductility_demands_right: r.ductility_demand[1].clone(),
+            ductility_demands_left_no_pounding: baseline.ductility_demand[0].clone(),
+            ductility_demands_right_no_pounding: baseline.ductility_demand[1].clone(),
+            residual_drifts_left_m: r.residual_drift_m[0].clone(),
+            residual_drifts_right_m: r.residual_drift_m[1].clone(),
+            residual_drifts_left_no_pounding_m: baseline.residual_drift_m[0].clone(),
+            residual_drifts_right_no_pounding_m: baseline.residual_drift_m[1].clone(),
+            hysteretic_energy_left_j: r.hysteretic_energy_j[0].clone(),
+            hysteretic_energy_right_j: r.hysteretic_energy_j[1].clone(),
+            hysteretic_energy_left_no_pounding_j: baseline.hysteretic_energy_j[0].clone(),
+            hysteretic_energy_right_no_pounding_j: baseline.hysteretic_energy_j[1].clone(),
             energy_initial_j: r.energy.initial_j,
             energy_input_j: r.energy.input_j,
             energy_building_damping_j: r.energy.building_damping_j,
             energy_to_contact_j: r.energy.contact_j,
+            energy_hysteretic_j: r.energy.hysteretic_j,
             energy_balance_error: r.energy.balance_error(),
             steps: r.stats.steps,
             contact_steps: r.stats.contact_steps,
@@ -284,6 +313,25 @@ fn building_line(name: &str, b: &Building, r: &BuildingResult, side: usize) -> S
         slab.youngs_modulus_pa,
         slab.wave_speed_m_s(b.mass(roof)),
         1e3 * slab.round_trip_s(b.mass(roof))
+    ) + &storey_law(b)
+}
+
+/// The storeys' law where they yield (nothing for elastic storeys).
+fn storey_law(b: &Building) -> String {
+    if !b.yields() {
+        return String::new();
+    }
+    let fy: Vec<f64> = (0..b.storeys).map(|j| b.yield_force(j)).collect();
+    let n = if b.hysteresis == pounding::model::hysteresis::Hysteresis::BoucWen {
+        format!(", n = {}", b.bouc_wen_n)
+    } else {
+        String::new()
+    };
+    format!(
+        ", {} storeys F_y = {} N, b = {}{n}",
+        b.hysteresis.name(),
+        values(&fy, 1.0, 0),
+        b.hardening
     )
 }
 
@@ -436,7 +484,27 @@ fn results(o: &mut String, sc: &BuildingScenario, r: &BuildingResult, baseline: 
             );
         }
     }
+    for (side, b) in [&sc.left, &sc.right].into_iter().enumerate() {
+        if b.yields() {
+            let _ = writeln!(
+                o,
+                "  {} storeys        ductility demand {} (without pounding {}); residual drift {} mm (without {}); hysteretic energy {} J (without {})",
+                ["left ", "right"][side],
+                values(&r.ductility_demand[side], 1.0, 3),
+                values(&baseline.ductility_demand[side], 1.0, 3),
+                values(&r.residual_drift_m[side], 1e3, 3),
+                values(&baseline.residual_drift_m[side], 1e3, 3),
+                values(&r.hysteretic_energy_j[side], 1.0, 1),
+                values(&baseline.hysteretic_energy_j[side], 1.0, 1),
+            );
+        }
+    }
     let e = &r.energy;
+    let yielding = if e.hysteretic_j > 0.0 {
+        format!(" + storeys' yielding {:.4e}", e.hysteretic_j)
+    } else {
+        String::new()
+    };
     let initial = if e.initial_j > 0.0 {
         format!("initial {:.4e} J + ", e.initial_j)
     } else {
@@ -444,7 +512,7 @@ fn results(o: &mut String, sc: &BuildingScenario, r: &BuildingResult, baseline: 
     };
     let _ = writeln!(
         o,
-        "  energy              {initial}input {:.4e} J = building damping {:.4e} + to the contact {:.4e} + left in the buildings {:.4e}; balance error {:+.2e}",
+        "  energy              {initial}input {:.4e} J = building damping {:.4e}{yielding} + to the contact {:.4e} + left in the buildings {:.4e}; balance error {:+.2e}",
         e.input_j,
         e.building_damping_j,
         e.contact_j,

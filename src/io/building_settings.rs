@@ -10,6 +10,7 @@ use crate::model::building::{
     Building, BuildingScenario, ContactModel, DampingModel, Recording, SlabReading,
 };
 use crate::model::error::InputError;
+use crate::model::hysteresis::Hysteresis;
 use crate::model::settings::building as setting;
 
 /// The `motion.file` value that asks for the seeded synthetic record.
@@ -214,6 +215,36 @@ pub static BUILDINGS: Registry<BuildingSetup> = Registry {
             set_rayleigh_modes,
         ),
         E::new(
+            &setting::HYSTERESIS,
+            |s, i| word(s.building(i).hysteresis.name()),
+            |s, t, v| {
+                put(
+                    &mut s.building_mut(t.owner).hysteresis,
+                    t.choice(v, Hysteresis::from_name),
+                )
+            },
+        ),
+        E::new(
+            &setting::YIELD_FORCES,
+            |s, i| s.building(i).yield_forces_n.as_deref().and_then(list),
+            |s, t, v| {
+                put(
+                    &mut s.building_mut(t.owner).yield_forces_n,
+                    t.numbers(v).map(Some),
+                )
+            },
+        ),
+        E::new(
+            &setting::HARDENING,
+            |s, i| number(s.building(i).hardening),
+            |s, t, v| put(&mut s.building_mut(t.owner).hardening, t.number(v)),
+        ),
+        E::new(
+            &setting::BOUC_WEN_N,
+            |s, i| number(s.building(i).bouc_wen_n),
+            |s, t, v| put(&mut s.building_mut(t.owner).bouc_wen_n, t.number(v)),
+        ),
+        E::new(
             &setting::VELOCITY,
             |s, i| number(s.scenario.initial_velocity_m_s[i]),
             |s, t, v| put(&mut s.scenario.initial_velocity_m_s[t.owner], t.number(v)),
@@ -322,6 +353,11 @@ pub static BUILDINGS: Registry<BuildingSetup> = Registry {
             &setting::MOTION_LENGTH,
             |s, _| number(s.motion.synthetic.duration_s),
             |s, t, v| put(&mut s.motion.synthetic.duration_s, t.checked(v)),
+        ),
+        E::new(
+            &setting::MOTION_SETTLE,
+            |s, _| number(s.motion.settle_s),
+            |s, t, v| put(&mut s.motion.settle_s, t.checked(v)),
         ),
         E::new(
             &setting::TOLERANCE,

@@ -43,6 +43,8 @@ pub struct MotionSpec {
     pub duration_s: Option<f64>,
     pub dt_s: Option<f64>,
     pub synthetic: SyntheticSpec,
+    /// Seconds of rest appended to the record (a residual drift settles in them).
+    pub settle_s: f64,
 }
 
 impl Default for MotionSpec {
@@ -54,9 +56,13 @@ impl Default for MotionSpec {
             duration_s: None,
             dt_s: None,
             synthetic: SyntheticSpec::default(),
+            settle_s: 0.0,
         }
     }
 }
+
+/// The most samples of rest `motion.settle_s` may append (80 MB of record).
+const MAX_SETTLE_SAMPLES: f64 = 1e7;
 
 /// Reads (a built-in name or a file) or generates the record a spec asks for, truncated and
 /// scaled. Errors name the source and, for a malformed file, the line.
@@ -120,6 +126,23 @@ pub fn load(spec: &MotionSpec) -> Result<GroundMotion, MotionError> {
                 ),
             ));
         }
+    }
+    if spec.settle_s > 0.0 {
+        let samples = spec.settle_s / motion.dt_s;
+        if samples > MAX_SETTLE_SAMPLES {
+            return Err(err(
+                &motion.name,
+                None,
+                format!(
+                    "{}: {} s of rest is {} samples of {} s, more than {MAX_SETTLE_SAMPLES:e}; settle for less time",
+                    setting::MOTION_SETTLE.key,
+                    crate::model::settings::shown(spec.settle_s),
+                    crate::model::settings::shown(samples.ceil()),
+                    crate::model::settings::shown(motion.dt_s)
+                ),
+            ));
+        }
+        motion = motion.settled(spec.settle_s);
     }
     Ok(motion)
 }

@@ -35,6 +35,10 @@ pub const EMBEDDED: &[(&str, &str)] = &[
         include_str!("../../assets/presets/paper-buildings.toml"),
     ),
     (
+        "paper-buildings-yielding",
+        include_str!("../../assets/presets/paper-buildings-yielding.toml"),
+    ),
+    (
         "mdof-3-5",
         include_str!("../../assets/presets/mdof-3-5.toml"),
     ),

@@ -37,8 +37,11 @@ impl Hysteresis {
         Hysteresis::BoucWen,
     ];
 
+    /// Their names, in the order of [`Hysteresis::ALL`].
+    pub const NAMES: [&'static str; 3] = crate::model::names_of!(Self::ALL, 3);
+
     /// The name the command line and presets use.
-    pub fn name(self) -> &'static str {
+    pub const fn name(self) -> &'static str {
         match self {
             Hysteresis::Elastic => "elastic",
             Hysteresis::Bilinear => "bilinear",

@@ -68,12 +68,19 @@ pub struct BuildingEnergy {
     pub final_j: f64,
     /// Energy still stored in the contact elements at the end.
     pub stored_contact_j: f64,
+    /// Energy the yielding storeys dissipated (their work less what they store) [J]; zero for
+    /// elastic storeys.
+    pub hysteretic_j: f64,
 }
 
 impl BuildingEnergy {
     /// What the ledger fails to account for [J]: positive where energy appeared from nowhere.
     pub fn residual_j(&self) -> f64 {
-        self.building_damping_j + self.contact_j + self.final_j + self.stored_contact_j
+        self.building_damping_j
+            + self.contact_j
+            + self.final_j
+            + self.stored_contact_j
+            + self.hysteretic_j
             - self.initial_j
             - self.input_j
     }
@@ -172,6 +179,13 @@ pub struct BuildingResult {
     pub peak_floor_displacement_m: [Vec<f64>; 2],
     /// Every storey's peak |u_j - u_{j-1}| / h_j.
     pub peak_drift_ratio: [Vec<f64>; 2],
+    /// Every storey's peak drift over its yield drift F_y / k (the storey's ductility demand;
+    /// for elastic storeys, against the yield force they are given or its default).
+    pub ductility_demand: [Vec<f64>; 2],
+    /// Every storey's drift at the end of the run [m].
+    pub residual_drift_m: [Vec<f64>; 2],
+    /// The energy each storey's spring dissipated [J] (zero for elastic storeys).
+    pub hysteretic_energy_j: [Vec<f64>; 2],
     /// Largest contact force of the run [N].
     pub max_pounding_force_n: f64,
     /// Largest contact force at each level [N].

@@ -6,6 +6,7 @@ use super::modal::{DampingModel, Modes};
 use super::{ContactModel, SlabReading};
 use crate::model::contact::{PAPER_DIVISIONS, REFERENCE_OVERLAP_M};
 use crate::model::error::InputError;
+use crate::model::hysteresis::{Hysteresis, StoreyLaw};
 use crate::model::settings::{SIDES, building as setting};
 
 /// Concrete of the paper's slabs: E = 25 GPa (its contact stiffness, 15 GN/m, follows from it).
@@ -85,7 +86,20 @@ pub struct Building {
     pub slab_thicknesses_m: Vec<f64>,
     /// Floor slabs' Young's moduli [Pa], one or one each.
     pub slab_youngs_pa: Vec<f64>,
+    /// The storeys' shear springs: elastic (default) or hysteretic.
+    pub hysteresis: Hysteresis,
+    /// Storey yield forces [N], one or one each; None: the force at a drift of
+    /// [`AUTO_YIELD_DRIFT_RATIO`] of the storey's height.
+    pub yield_forces_n: Option<Vec<f64>>,
+    /// Post-yield stiffness ratio b, in [0, 1). Default 0.05.
+    pub hardening: f64,
+    /// Bouc-Wen's exponent n. Default 2.
+    pub bouc_wen_n: f64,
 }
+
+/// A storey without a stated yield force yields at this drift over its height: 0.5%, about
+/// where a reinforced-concrete frame's storey yields.
+pub const AUTO_YIELD_DRIFT_RATIO: f64 = 0.005;
 
 impl Building {
     /// A one-storey building with the given mass, stiffness, height and slab, 5% modal damping.
@@ -101,6 +115,10 @@ impl Building {
             slab_widths_m: vec![slab.width_m],
             slab_thicknesses_m: vec![slab.thickness_m],
             slab_youngs_pa: vec![slab.youngs_modulus_pa],
+            hysteresis: Hysteresis::Elastic,
+            yield_forces_n: None,
+            hardening: 0.05,
+            bouc_wen_n: 2.0,
         }
     }
 
@@ -124,6 +142,29 @@ impl Building {
             thickness_m: per(&self.slab_thicknesses_m, j),
             youngs_modulus_pa: per(&self.slab_youngs_pa, j),
         }
+    }
+    /// Storey j's yield force (0-based) [N].
+    pub fn yield_force(&self, j: usize) -> f64 {
+        match &self.yield_forces_n {
+            Some(list) => per(list, j),
+            None => self.stiffness(j) * AUTO_YIELD_DRIFT_RATIO * self.height(j),
+        }
+    }
+    /// Every storey's spring law, bottom first.
+    pub fn storey_laws(&self) -> Vec<StoreyLaw> {
+        (0..self.storeys)
+            .map(|j| StoreyLaw {
+                kind: self.hysteresis,
+                stiffness_n_m: self.stiffness(j),
+                yield_force_n: self.yield_force(j),
+                hardening: self.hardening,
+                bouc_wen_n: self.bouc_wen_n,
+            })
+            .collect()
+    }
+    /// Whether any storey yields (its law is not elastic).
+    pub fn yields(&self) -> bool {
+        self.hysteresis != Hysteresis::Elastic
     }
     /// Every floor's mass, bottom first [kg].
     pub fn masses(&self) -> Vec<f64> {
@@ -419,24 +460,21 @@ impl Building {
             (&setting::SLAB_THICKNESS, &b.slab_thicknesses_m),
             (&setting::SLAB_YOUNGS_MODULUS, &b.slab_youngs_pa),
         ] {
-            if list.len() != 1 && list.len() != b.storeys {
-                return Err(InputError::new(
-                    setting.key_of(side),
-                    format!(
-                        "{} values for {} storeys: give one value for every storey, or {}",
-                        list.len(),
-                        b.storeys,
-                        b.storeys
-                    ),
-                ));
-            }
-            for &v in list.iter() {
-                setting.check_at(side, v)?;
-            }
+            check_per_storey(setting, side, list, b.storeys)?;
         }
         setting::DAMPING_RATIO.check_at(side, b.damping_ratio)?;
+        b.validate_yielding(side)?;
         spread_of_modes(side, b)?;
         b.check_rayleigh_modes(side)
+    }
+
+    /// The yield forces (one or one per storey), the hardening and Bouc-Wen's exponent.
+    fn validate_yielding(&self, side: usize) -> Result<(), InputError> {
+        if let Some(list) = &self.yield_forces_n {
+            check_per_storey(&setting::YIELD_FORCES, side, list, self.storeys)?;
+        }
+        setting::HARDENING.check_at(side, self.hardening)?;
+        setting::BOUC_WEN_N.check_at(side, self.bouc_wen_n)
     }
 
     /// Rayleigh damping's two modes must be two of the building's.
@@ -470,6 +508,28 @@ impl Building {
         }
         Ok(())
     }
+}
+
+/// A per-storey list: one value for every storey or one each, each within the setting's range.
+fn check_per_storey(
+    setting: &crate::model::settings::Setting,
+    side: usize,
+    list: &[f64],
+    storeys: usize,
+) -> Result<(), InputError> {
+    if list.len() != 1 && list.len() != storeys {
+        return Err(InputError::new(
+            setting.key_of(side),
+            format!(
+                "{} values for {storeys} storeys: give one value for every storey, or {storeys}",
+                list.len()
+            ),
+        ));
+    }
+    for &v in list {
+        setting.check_at(side, v)?;
+    }
+    Ok(())
 }
 
 /// Steps per contact time scale that aim at a relative error `tolerance` with contact steps of

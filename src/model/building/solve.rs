@@ -340,6 +340,7 @@ fn assemble(
     let max_by_level = stepper.max_forces();
     let impacts = group_impacts(&contacts, sc.merge_gap_s);
     let (peak_floor, peak_drift, peak_points) = stepper.peaks();
+    let storeys = stepper.storey_summary([&sc.left, &sc.right], &peak_drift);
     let grid = setup.grid;
     BuildingResult {
         contact: sc.contact,
@@ -356,6 +357,9 @@ fn assemble(
         ],
         peak_floor_displacement_m: peak_floor,
         peak_drift_ratio: peak_drift,
+        ductility_demand: storeys.ductility_demand,
+        residual_drift_m: storeys.residual_drift_m,
+        hysteretic_energy_j: storeys.hysteretic_energy_j,
         floor_displacement_m: h.floors,
         floor_velocity_m_s: h.floor_v,
         force_n: h.force,

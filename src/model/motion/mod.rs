@@ -121,6 +121,14 @@ impl GroundMotion {
         self
     }
 
+    /// The record followed by `settle_s` of rest (zero acceleration), at its own step: what a
+    /// run needs to let the motion die out after the shaking.
+    pub fn settled(mut self, settle_s: f64) -> Self {
+        let extra = (settle_s / self.dt_s - 1e-9).ceil().max(0.0) as usize;
+        self.accel_m_s2.extend(std::iter::repeat_n(0.0, extra));
+        self
+    }
+
     /// The record times a factor (a negative factor flips it).
     pub fn scaled(mut self, factor: f64) -> Self {
         for a in &mut self.accel_m_s2 {

@@ -6,6 +6,7 @@
 
 use super::{Kind, Range, Setting, number, number_or};
 use crate::model::building::{ContactModel, DampingModel, Recording, SlabReading};
+use crate::model::hysteresis::Hysteresis;
 use crate::model::motion::Units;
 
 pub const CONTACT_MODEL: Setting = Setting {
@@ -126,6 +127,46 @@ pub const RAYLEIGH_MODES: Setting = Setting {
     help: "the two modes (from 1) Rayleigh damping gives the ratio to, as i,j",
     kind: Kind::Text,
     default: "1,2",
+};
+
+pub const HYSTERESIS: Setting = Setting {
+    key: "SIDE.hysteresis",
+    label: "storey law",
+    unit: "",
+    help: "the storeys' shear springs: elastic, bilinear (kinematic hardening) or bouc-wen",
+    kind: Kind::Choice(&Hysteresis::NAMES),
+    default: "elastic",
+};
+
+pub const YIELD_FORCES: Setting = Setting {
+    key: "SIDE.yield_forces",
+    label: "yield force",
+    unit: "N",
+    help: "storey yield forces F_y, one for every storey or one each (bilinear, bouc-wen)",
+    kind: Kind::List {
+        range: Range::closed(1e-3, 1e15),
+        slider: (1e3, 1e8),
+        log: true,
+    },
+    default: "auto: the force at a drift of 0.5% of the storey height",
+};
+
+pub const HARDENING: Setting = Setting {
+    key: "SIDE.hardening",
+    label: "hardening",
+    unit: "",
+    help: "post-yield stiffness over the initial stiffness, b",
+    kind: number(Range::below(0.0, 1.0), (0.0, 0.5), false),
+    default: "0.05",
+};
+
+pub const BOUC_WEN_N: Setting = Setting {
+    key: "SIDE.bouc_wen_n",
+    label: "Bouc-Wen n",
+    unit: "",
+    help: "Bouc-Wen's exponent: the larger, the sharper the knee (the bilinear curve in the limit)",
+    kind: number(Range::closed(1.0, 100.0), (1.0, 20.0), true),
+    default: "2",
 };
 
 pub const VELOCITY: Setting = Setting {
@@ -327,6 +368,15 @@ pub const MOTION_LENGTH: Setting = Setting {
     default: "20",
 };
 
+pub const MOTION_SETTLE: Setting = Setting {
+    key: "motion.settle_s",
+    label: "settling",
+    unit: "s",
+    help: "seconds of rest appended to the record, so a residual drift settles before it is read",
+    kind: number(Range::closed(0.0, 1e4), (0.0, 30.0), false),
+    default: "0",
+};
+
 pub const TOLERANCE: Setting = Setting {
     key: "solver.tolerance",
     label: "tolerance",
@@ -389,6 +439,10 @@ pub static BUILDING_SETTINGS: &[Setting] = &[
     DAMPING_RATIO,
     DAMPING,
     RAYLEIGH_MODES,
+    HYSTERESIS,
+    YIELD_FORCES,
+    HARDENING,
+    BOUC_WEN_N,
     VELOCITY,
     SLAB_LENGTH,
     SLAB_WIDTH,
@@ -409,6 +463,7 @@ pub static BUILDING_SETTINGS: &[Setting] = &[
     MOTION_PGA,
     MOTION_SEED,
     MOTION_LENGTH,
+    MOTION_SETTLE,
     TOLERANCE,
     STEPS_PER_SCALE,
     MAX_STEP,

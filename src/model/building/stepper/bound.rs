@@ -16,8 +16,26 @@
 /// its fifth.
 pub(super) fn mode_bounds(omega: f64, zeta: f64, y: &[f64; 4], len: f64) -> [f64; 3] {
     let (m4, m5) = derivative_bounds(omega, zeta, y);
-    if omega <= 0.0 || !omega.is_finite() {
+    let Some(Envelope { alpha, beta, free }) = envelope(omega, zeta, y) else {
         return [f64::INFINITY, m4, m5];
+    };
+    [free + alpha.abs().max((alpha + beta * len).abs()), m4, m5]
+}
+
+/// A mode's response where its forcing is linear: the particular line alpha + beta t, and a
+/// bound on how far the free vibration takes it from that line.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Envelope {
+    pub alpha: f64,
+    pub beta: f64,
+    pub free: f64,
+}
+
+/// The envelope of one mode from its augmented state y = [q, q', g, g'] (none for a mode
+/// without stiffness).
+pub(super) fn envelope(omega: f64, zeta: f64, y: &[f64; 4]) -> Option<Envelope> {
+    if omega <= 0.0 || !omega.is_finite() {
+        return None;
     }
     let w2 = omega * omega;
     let beta = y[3] / w2;
@@ -36,7 +54,7 @@ pub(super) fn mode_bounds(omega: f64, zeta: f64, y: &[f64; 4], len: f64) -> [f64
         let a1 = (vh - l2 * qh) / (l1 - l2);
         a1.abs() + (qh - a1).abs()
     };
-    [free + alpha.abs().max((alpha + beta * len).abs()), m4, m5]
+    Some(Envelope { alpha, beta, free })
 }
 
 /// The bounds on the fourth and fifth time derivatives of one mode's response over a stretch

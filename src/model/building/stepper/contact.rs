@@ -55,6 +55,8 @@ pub(super) struct Scratch {
     modal_before: [[Vec<f64>; 2]; 2],
     before: Vec<f64>,
     u_before: Vec<(f64, f64)>,
+    /// Yielding storeys: each side's load of their corrections at the trial's end, per mode.
+    pseudo1: [Vec<f64>; 2],
 }
 
 impl Stepper<'_> {
@@ -272,7 +274,8 @@ impl Stepper<'_> {
         let ground = self.motion.at(self.time());
         for (side, load) in self.sides.iter_mut().zip(load) {
             for (k, contact) in load.iter().enumerate() {
-                side.a[k] = -side.gamma[k] * ground + contact
+                let pseudo = side.storeys.as_ref().map_or(0.0, |st| st.load0[k]);
+                side.a[k] = -side.gamma[k] * ground + contact + pseudo
                     - 2.0 * side.zeta[k] * side.omega[k] * side.v[k]
                     - side.omega[k].powi(2) * side.q[k];
             }
@@ -291,8 +294,32 @@ impl Stepper<'_> {
         moved[0] - moved[1]
     }
 
-    /// A contact step of length hh, not yet taken, into `cs.trial`.
+    /// A contact step of length hh, not yet taken, into `cs.trial`; where storeys yield, with
+    /// their corrections at its end found by the fixed point.
     fn trial(&self, hh: f64, cs: &mut Scratch) {
+        if !self.yields() {
+            return self.trial_once(hh, cs);
+        }
+        for s in 0..2 {
+            match &self.sides[s].storeys {
+                Some(st) => cs.pseudo1[s].clone_from(&st.load0),
+                None => cs.pseudo1[s].clear(),
+            }
+        }
+        for _ in 0..Self::max_passes() {
+            self.trial_once(hh, cs);
+            let mut pseudo1 = std::mem::take(&mut cs.pseudo1);
+            let change = self.contact_end_loads(&cs.trial.dq, &mut pseudo1);
+            cs.pseudo1 = pseudo1;
+            if change <= 1e-13 {
+                break;
+            }
+        }
+    }
+
+    /// The contact step of length hh with the storeys' corrections at its end as in
+    /// `cs.pseudo1` (none where they are elastic).
+    fn trial_once(&self, hh: f64, cs: &mut Scratch) {
         let ground = self.motion.at(self.time() + hh);
         self.free_increment(hh, ground, cs);
         self.contact_compliance(hh, cs);
@@ -337,7 +364,12 @@ impl Stepper<'_> {
                 };
                 let c = 2.0 * side.zeta[k] * side.omega[k];
                 let contact_now = cs.load_now[s][k];
+                let pseudo_change = match &side.storeys {
+                    Some(st) => cs.pseudo1[s][k] - st.load0[k],
+                    None => 0.0,
+                };
                 let load = -side.gamma[k] * ground_change - contact_now
+                    + pseudo_change
                     + (4.0 / hh + 2.0 * c) * side.v[k]
                     + 2.0 * side.a[k];
                 cs.k_hat[s][k] = kh;
@@ -519,6 +551,9 @@ impl Stepper<'_> {
                 // Newmark's discrete energy identity: the work of the ground is half the sum of
                 // its forces times the displacement; the damping takes h/4 c (v0 + v1)^2.
                 self.ledger.input_j += 0.5 * dq * (-side.gamma[k]) * (ground0 + tr.ground);
+                if let Some(st) = &side.storeys {
+                    self.ledger.pseudo_work_j += 0.5 * dq * (st.load0[k] + cs.pseudo1[s][k]);
+                }
                 self.ledger.damping_j +=
                     0.25 * hh * 2.0 * side.zeta[k] * side.omega[k] * (v0 + v1).powi(2);
                 side.q[k] += dq;
@@ -527,6 +562,9 @@ impl Stepper<'_> {
             }
         }
         self.advance(hh);
+        if self.yields() {
+            self.commit_storeys();
+        }
         for (i, p) in self.points.iter_mut().enumerate() {
             let f1 = tr.forces[i];
             for slab in p.slabs.iter_mut().flatten() {

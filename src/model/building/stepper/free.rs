@@ -43,11 +43,12 @@ impl Stepper<'_> {
         let side = &self.sides[s];
         out.clear();
         out.extend((0..side.modes()).map(|k| {
+            let (p, p_rate) = self.free_pseudo(s, k);
             [
                 side.q[k],
                 side.v[k],
-                -side.gamma[k] * a0,
-                -side.gamma[k] * slope,
+                -side.gamma[k] * a0 + p,
+                -side.gamma[k] * slope + p_rate,
             ]
         }));
     }
@@ -69,7 +70,15 @@ impl Stepper<'_> {
         let j = ((steps - whole).abs() <= 1e-9 * steps.max(1.0))
             .then_some(whole as usize)
             .filter(|j| (1..=self.grid.per_free_step).contains(j));
+        let yields = self.yields();
         for s in 0..2 {
+            let pseudo: Vec<(f64, f64)> = if yields {
+                (0..self.sides[s].modes())
+                    .map(|k| self.free_pseudo(s, k))
+                    .collect()
+            } else {
+                vec![]
+            };
             let side = &mut self.sides[s];
             if let Some(j) = j
                 && j < self.grid.per_free_step
@@ -91,12 +100,18 @@ impl Stepper<'_> {
                 let dq = q1[s][k] - y[0];
                 let int_q: f64 = (0..4).map(|j| ints.int_q[j] * y[j]).sum();
                 let int_s_v = len * q1[s][k] - int_q;
-                self.ledger.input_j += y[2] * dq + y[3] * int_s_v;
+                let (p, p_rate) = pseudo.get(k).copied().unwrap_or_default();
+                // The storeys' corrections are loads in y; their work is theirs, not the ground's.
+                self.ledger.input_j += (y[2] - p) * dq + (y[3] - p_rate) * int_s_v;
+                self.ledger.pseudo_work_j += p * dq + p_rate * int_s_v;
                 self.ledger.damping_j +=
                     2.0 * side.zeta[k] * side.omega[k] * ints.velocity_squared(y);
                 side.q[k] = q1[s][k];
                 side.v[k] = v1[s][k];
             }
+        }
+        if yields {
+            self.commit_storeys();
         }
     }
 
@@ -123,8 +138,10 @@ impl Stepper<'_> {
     pub(super) fn free_step(&mut self) -> Result<Free, SolveError> {
         self.newmark = false;
         let g = self.grid;
-        // To the next free-step boundary (record samples are boundaries too).
+        // To the next free-step boundary (record samples are boundaries too); one fine step
+        // where storeys yield (their corrections are planned step by step).
         let len = (g.per_free_step - self.n % g.per_free_step).min(g.total - self.n);
+        let len = if self.single_step { len.min(1) } else { len };
         self.count_step()?;
         let t0 = self.time();
         let mut w = self
@@ -159,7 +176,7 @@ impl Stepper<'_> {
         }
         self.scratch = Some(w);
         self.n += len;
-        self.record_now();
+        self.record_free();
         Ok(Free::Done)
     }
 

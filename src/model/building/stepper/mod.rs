@@ -27,9 +27,11 @@ mod contact;
 mod free;
 mod onset;
 mod record;
+mod yielding;
 
 pub(super) use record::Record;
 use record::{Peaks, Signal};
+use yielding::Storeys;
 
 use super::elements::Element;
 use super::levels::Level;
@@ -83,6 +85,8 @@ struct Side {
     doublings: Vec<Vec<(StepIntegrals, [[f64; 4]; 4])>>,
     /// Newmark's effective stiffness over h, per mode.
     k_hat: Vec<f64>,
+    /// The storeys' springs where they may yield (None: all elastic, nothing to correct).
+    storeys: Option<Storeys>,
 }
 
 impl Side {
@@ -139,6 +143,7 @@ impl Side {
             v: modes.participation.iter().map(|g| g * v0).collect(),
             a: vec![0.0; n],
             sub,
+            storeys: None,
         }
     }
 
@@ -211,6 +216,8 @@ pub(super) struct Ledger {
     pub contact_work_j: f64,
     /// Energy the stereomechanical exchanges took.
     pub exchanged_j: f64,
+    /// Work of the storeys' corrections on the modes (yielding storeys).
+    pub pseudo_work_j: f64,
 }
 
 /// A contact point: its element, projections onto the modes, slabs and state.
@@ -305,6 +312,8 @@ pub(super) struct Stepper<'a> {
     histories: bool,
     /// The modal accelerations are Newmark's (the last step was a contact step).
     newmark: bool,
+    /// The next free step is one fine step (yielding storeys near or past their yield point).
+    single_step: bool,
     /// Buffers, boxed so that a stage can take them out of the stepper for the step's length
     /// without copying them.
     scratch: Option<Box<Scratch>>,
@@ -382,6 +391,12 @@ impl<'a> Stepper<'a> {
                 &grid,
             ),
         ];
+        let mut sides = sides;
+        for (side, b) in sides.iter_mut().zip([&sc.left, &sc.right]) {
+            if b.yields() {
+                side.storeys = Some(Storeys::new(b.storey_laws(), &side.shapes));
+            }
+        }
         let sears = sc.contact == ContactModel::Sears;
         let points: Vec<Point> = levels
             .iter()
@@ -416,6 +431,7 @@ impl<'a> Stepper<'a> {
             sears,
             histories,
             newmark: false,
+            single_step: false,
             scratch: Some(Box::default()),
             contact_scratch: Some(Box::default()),
         };
@@ -474,13 +490,18 @@ impl<'a> Stepper<'a> {
             .map(|p| p.element.stored_energy(p.delta))
             .sum();
         let l = self.ledger;
+        let storeys = self.sides.iter().filter_map(|s| s.storeys.as_ref());
+        let (hysteretic, stored_less_elastic) = storeys.fold((0.0, 0.0), |(h, e), st| {
+            (h + st.dissipated_j(), e + st.stored_less_elastic_j())
+        });
         BuildingEnergy {
             initial_j: l.initial_j,
             input_j: l.input_j,
             building_damping_j: l.damping_j,
             contact_j: -l.contact_work_j - stored + l.exchanged_j,
-            final_j: self.sides[0].energy() + self.sides[1].energy(),
+            final_j: self.sides[0].energy() + self.sides[1].energy() + stored_less_elastic,
             stored_contact_j: stored,
+            hysteretic_j: hysteretic,
         }
     }
 
@@ -512,11 +533,15 @@ impl<'a> Stepper<'a> {
             if self.offset > 0.0 {
                 // Back onto the grid after an event inside a step.
                 let rest = self.grid.h - self.offset;
+                if self.yields() {
+                    self.plan_free(rest);
+                }
                 if let Some(level) = self.free_partial(rest)? {
                     self.onset_in_partial(level, rest)?;
                 }
                 continue;
             }
+            self.single_step = self.yields() && !self.plan_stretch();
             match self.free_step()? {
                 Free::Done => {}
                 Free::Onset { j, level } => self.onset(j, level)?,

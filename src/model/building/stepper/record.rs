@@ -363,7 +363,8 @@ impl Stepper<'_> {
                     let a = if contact {
                         side.a[k]
                     } else {
-                        -side.gamma[k] * ground
+                        side.storeys.as_ref().map_or(0.0, |st| st.load0[k])
+                            - side.gamma[k] * ground
                             - 2.0 * side.zeta[k] * side.omega[k] * side.v[k]
                             - side.omega[k].powi(2) * side.q[k]
                     };
@@ -400,6 +401,15 @@ impl Stepper<'_> {
             total += p.force;
         }
         rec.force.push(total);
+    }
+
+    /// After a free step: records it, or, where storeys yield and the steps are fine, where the
+    /// last sample is a whole free step old (the density of an elastic run's samples).
+    pub(super) fn record_free(&mut self) {
+        let spacing = self.grid.per_free_step as f64 * self.grid.h;
+        if !self.single_step || self.time() >= self.record.last_time() + spacing * (1.0 - 1e-9) {
+            self.record_now();
+        }
     }
 
     /// Inside contacts: records the state where a contact opened or closed in the last step, or
