@@ -67,16 +67,23 @@ fn storeys_that_never_reach_their_yield_force_pound_as_elastic_ones() {
 /// One storey, m u'' + c u' + F(u) = -m a_g, integrated independently of the solver: its own
 /// bilinear law (return mapping on the plastic drift) and classical Runge-Kutta with the law's
 /// state frozen over each tiny step. Returns (peak |u|, u at the end, dissipated energy).
-fn independent_storey(
+/// One storey's constants for the independent integration.
+#[derive(Clone, Copy)]
+struct Storey {
     m: f64,
     k: f64,
     zeta: f64,
     fy: f64,
     b: f64,
+}
+
+fn independent_storey(
+    storey: &Storey,
     ground: &[f64],
     dt_ground: f64,
     end: f64,
 ) -> (f64, f64, f64) {
+    let Storey { m, k, zeta, fy, b } = *storey;
     let c = 2.0 * zeta * (k * m).sqrt();
     let a_g = |t: f64| {
         let p = t / dt_ground;
@@ -139,8 +146,18 @@ fn a_yielding_storey_under_a_sine_pulse_follows_an_independent_fine_integration(
         let mut sc = yielding(ContactModel::None);
         sc.left.hardening = b;
         let r = run(&sc, &motion);
-        let (peak, end, dissipated) =
-            independent_storey(36_000.0, 1.16e7, 0.05, 2.5e5, b, &ground, dt, n as f64 * dt);
+        let (peak, end, dissipated) = independent_storey(
+            &Storey {
+                m: 36_000.0,
+                k: 1.16e7,
+                zeta: 0.05,
+                fy: 2.5e5,
+                b,
+            },
+            &ground,
+            dt,
+            n as f64 * dt,
+        );
         let mu = peak / (2.5e5 / 1.16e7);
         assert!(
             mu > 1.5,

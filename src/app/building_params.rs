@@ -5,6 +5,7 @@
 use super::params::{Fields, Spec};
 use crate::io::building_settings::{BUILDINGS, BuildingSetup};
 use crate::model::building::{Building, ContactModel, DampingModel, SlabReading};
+use crate::model::hysteresis::Hysteresis;
 use crate::model::settings::{Range, SIDES, Setting, building as setting};
 use eframe::egui;
 
@@ -77,6 +78,7 @@ fn building_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup
     let n = b.storeys;
     storey_lists_ui(ui, fields, b, side);
     row(ui, fields, &setting::DAMPING_RATIO, side, setup);
+    yielding_ui(ui, fields, side, setup);
     let b = setup.building_mut(side);
     if n > 1 {
         ui.horizontal(|ui| {
@@ -87,6 +89,37 @@ fn building_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup
                 ui.selectable_value(&mut b.damping, d, d.name());
             }
         });
+    }
+}
+
+/// The storeys' law and, where they yield, the yield force (every storey alike; per storey from
+/// the command line or a preset), the hardening and Bouc-Wen's exponent.
+fn yielding_ui(ui: &mut egui::Ui, fields: &mut Fields, side: usize, setup: &mut BuildingSetup) {
+    let b = setup.building_mut(side);
+    ui.horizontal(|ui| {
+        ui.label(setting::HYSTERESIS.label)
+            .on_hover_text(setting::HYSTERESIS.help);
+        for h in Hysteresis::ALL {
+            ui.selectable_value(&mut b.hysteresis, h, h.name());
+        }
+    });
+    if !b.yields() {
+        return;
+    }
+    let bouc_wen = b.hysteresis == Hysteresis::BoucWen;
+    let fy = b.yield_force(0);
+    let spec = Spec::of(&setting::YIELD_FORCES);
+    fields.entry_row(
+        ui,
+        BUILDINGS.entry(&setting::YIELD_FORCES),
+        side,
+        setup,
+        &spec,
+        fy,
+    );
+    row(ui, fields, &setting::HARDENING, side, setup);
+    if bouc_wen {
+        row(ui, fields, &setting::BOUC_WEN_N, side, setup);
     }
 }
 
@@ -232,6 +265,7 @@ fn motion_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup, 
     });
     // A factor of 0 is refused by the entry: the record keeps its last factor.
     row(ui, fields, &setting::MOTION_SCALE, 0, setup);
+    row(ui, fields, &setting::MOTION_SETTLE, 0, setup);
     let duration = BUILDINGS.entry(&setting::MOTION_DURATION);
     // 0 here means the whole record.
     let whole = Spec {

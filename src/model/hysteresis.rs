@@ -188,7 +188,10 @@ impl StoreyLaw {
         }
         let uy = self.yield_drift_m();
         let piece = uy / (16.0 * self.bouc_wen_n.max(1.0));
-        let pieces = (du_total.abs() / piece).ceil().clamp(1.0, 1e6) as usize;
+        // A path many yield drifts long (a yield force near zero) saturates z within its first
+        // pieces: 256 of them resolve the knee of any path up to 16 u_y / n, and beyond that z
+        // sits at its bound, where the clamp below keeps it.
+        let pieces = (du_total.abs() / piece).ceil().clamp(1.0, 256.0) as usize;
         let du = du_total / pieces as f64;
         let dir = du.signum();
         let scale = (1.0 - self.hardening) * self.stiffness_n_m;

@@ -297,7 +297,15 @@ impl Stepper<'_> {
     /// A contact step of length hh, not yet taken, into `cs.trial`; where storeys yield, with
     /// their corrections at its end found by the fixed point.
     fn trial(&self, hh: f64, cs: &mut Scratch) {
-        if !self.yields() {
+        // A step of no length (the release search's end point) has no end state to correct.
+        if !self.yields() || hh <= 0.0 {
+            if self.yields() {
+                for s in 0..2 {
+                    if let Some(st) = &self.sides[s].storeys {
+                        cs.pseudo1[s].clone_from(&st.load0);
+                    }
+                }
+            }
             return self.trial_once(hh, cs);
         }
         for s in 0..2 {

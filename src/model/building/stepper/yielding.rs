@@ -85,6 +85,10 @@ impl Storeys {
     /// straight path of its drift), into `out`; the largest change of a correction from what
     /// `out` held, relative to the corrections' scale.
     pub fn end_loads(&self, q1: &[f64], out: &mut Vec<f64>) -> f64 {
+        if !q1.iter().all(|q| q.is_finite()) {
+            // No end state to follow (a trial that failed): the loads stay as they were.
+            return 0.0;
+        }
         let mut c1 = Vec::with_capacity(self.laws.len());
         let mut scale = 0.0f64;
         for (j, law) in self.laws.iter().enumerate() {
