@@ -5,6 +5,7 @@ use pounding::model::building::{
     Building, BuildingErrorEstimate, BuildingResult, BuildingScenario, ContactModel, Level,
     SlabReading,
 };
+use pounding::model::hysteresis::Hysteresis;
 use pounding::model::motion::{G, GroundMotion};
 use serde::Serialize;
 use std::fmt::Write;
@@ -322,7 +323,7 @@ fn storey_law(b: &Building) -> String {
         return String::new();
     }
     let fy: Vec<f64> = (0..b.storeys).map(|j| b.yield_force(j)).collect();
-    let n = if b.hysteresis == pounding::model::hysteresis::Hysteresis::BoucWen {
+    let n = if b.hysteresis == Hysteresis::BoucWen {
         format!(", n = {}", b.bouc_wen_n)
     } else {
         String::new()

@@ -3,6 +3,7 @@
 //! and the compliance of the points over a whole grid step (the same at every such step) is
 //! computed once.
 
+use super::yielding::MAX_PASSES;
 use super::*;
 
 /// A contact step computed but not taken.
@@ -274,8 +275,7 @@ impl Stepper<'_> {
         let ground = self.motion.at(self.time());
         for (side, load) in self.sides.iter_mut().zip(load) {
             for (k, contact) in load.iter().enumerate() {
-                let pseudo = side.storeys.as_ref().map_or(0.0, |st| st.load0[k]);
-                side.a[k] = -side.gamma[k] * ground + contact + pseudo
+                side.a[k] = -side.gamma[k] * ground + contact + side.pseudo_now(k)
                     - 2.0 * side.zeta[k] * side.omega[k] * side.v[k]
                     - side.omega[k].powi(2) * side.q[k];
             }
@@ -297,15 +297,7 @@ impl Stepper<'_> {
     /// A contact step of length hh, not yet taken, into `cs.trial`; where storeys yield, with
     /// their corrections at its end found by the fixed point.
     fn trial(&self, hh: f64, cs: &mut Scratch) {
-        // A step of no length (the release search's end point) has no end state to correct.
-        if !self.yields() || hh <= 0.0 {
-            if self.yields() {
-                for s in 0..2 {
-                    if let Some(st) = &self.sides[s].storeys {
-                        cs.pseudo1[s].clone_from(&st.load0);
-                    }
-                }
-            }
+        if !self.yields() {
             return self.trial_once(hh, cs);
         }
         for s in 0..2 {
@@ -314,7 +306,11 @@ impl Stepper<'_> {
                 None => cs.pseudo1[s].clear(),
             }
         }
-        for _ in 0..Self::max_passes() {
+        // A step of no length (the release search's end point) has no end state to correct.
+        if hh <= 0.0 {
+            return self.trial_once(hh, cs);
+        }
+        for _ in 0..MAX_PASSES {
             self.trial_once(hh, cs);
             let mut pseudo1 = std::mem::take(&mut cs.pseudo1);
             let change = self.contact_end_loads(&cs.trial.dq, &mut pseudo1);
@@ -373,7 +369,7 @@ impl Stepper<'_> {
                 let c = 2.0 * side.zeta[k] * side.omega[k];
                 let contact_now = cs.load_now[s][k];
                 let pseudo_change = match &side.storeys {
-                    Some(st) => cs.pseudo1[s][k] - st.load0[k],
+                    Some(_) => cs.pseudo1[s][k] - side.pseudo_now(k),
                     None => 0.0,
                 };
                 let load = -side.gamma[k] * ground_change - contact_now
@@ -559,9 +555,6 @@ impl Stepper<'_> {
                 // Newmark's discrete energy identity: the work of the ground is half the sum of
                 // its forces times the displacement; the damping takes h/4 c (v0 + v1)^2.
                 self.ledger.input_j += 0.5 * dq * (-side.gamma[k]) * (ground0 + tr.ground);
-                if let Some(st) = &side.storeys {
-                    self.ledger.pseudo_work_j += 0.5 * dq * (st.load0[k] + cs.pseudo1[s][k]);
-                }
                 self.ledger.damping_j +=
                     0.25 * hh * 2.0 * side.zeta[k] * side.omega[k] * (v0 + v1).powi(2);
                 side.q[k] += dq;

@@ -38,12 +38,12 @@ impl Stepper<'_> {
         y
     }
 
-    fn initial_into(&self, s: usize, t: f64, out: &mut Vec<[f64; 4]>) {
+    pub(super) fn initial_into(&self, s: usize, t: f64, out: &mut Vec<[f64; 4]>) {
         let (a0, slope) = self.ground(t);
         let side = &self.sides[s];
         out.clear();
         out.extend((0..side.modes()).map(|k| {
-            let (p, p_rate) = self.free_pseudo(s, k);
+            let (p, p_rate) = side.storeys.as_ref().map_or((0.0, 0.0), |st| st.pseudo(k));
             [
                 side.q[k],
                 side.v[k],
@@ -70,15 +70,7 @@ impl Stepper<'_> {
         let j = ((steps - whole).abs() <= 1e-9 * steps.max(1.0))
             .then_some(whole as usize)
             .filter(|j| (1..=self.grid.per_free_step).contains(j));
-        let yields = self.yields();
         for s in 0..2 {
-            let pseudo: Vec<(f64, f64)> = if yields {
-                (0..self.sides[s].modes())
-                    .map(|k| self.free_pseudo(s, k))
-                    .collect()
-            } else {
-                vec![]
-            };
             let side = &mut self.sides[s];
             if let Some(j) = j
                 && j < self.grid.per_free_step
@@ -100,17 +92,17 @@ impl Stepper<'_> {
                 let dq = q1[s][k] - y[0];
                 let int_q: f64 = (0..4).map(|j| ints.int_q[j] * y[j]).sum();
                 let int_s_v = len * q1[s][k] - int_q;
-                let (p, p_rate) = pseudo.get(k).copied().unwrap_or_default();
-                // The storeys' corrections are loads in y; their work is theirs, not the ground's.
+                let (p, p_rate) = side.storeys.as_ref().map_or((0.0, 0.0), |st| st.pseudo(k));
+                // The storeys' corrections are loads in y; their work is theirs, not the ground's
+                // (what they dissipate is their laws' own count).
                 self.ledger.input_j += (y[2] - p) * dq + (y[3] - p_rate) * int_s_v;
-                self.ledger.pseudo_work_j += p * dq + p_rate * int_s_v;
                 self.ledger.damping_j +=
                     2.0 * side.zeta[k] * side.omega[k] * ints.velocity_squared(y);
                 side.q[k] = q1[s][k];
                 side.v[k] = v1[s][k];
             }
         }
-        if yields {
+        if self.yields() {
             self.commit_storeys();
         }
     }

@@ -161,6 +161,11 @@ impl Side {
     fn floor(&self, q: &[f64], f: usize) -> f64 {
         dotv(&self.by_floor[f], q)
     }
+
+    /// Mode k's load from the yielding storeys' corrections now (zero for elastic storeys).
+    fn pseudo_now(&self, k: usize) -> f64 {
+        self.storeys.as_ref().map_or(0.0, |st| st.load0[k])
+    }
 }
 
 /// The integrals and exact maps over 1, 2, 4, ... fine steps of one mode, as many as `steps`
@@ -216,8 +221,6 @@ pub(super) struct Ledger {
     pub contact_work_j: f64,
     /// Energy the stereomechanical exchanges took.
     pub exchanged_j: f64,
-    /// Work of the storeys' corrections on the modes (yielding storeys).
-    pub pseudo_work_j: f64,
 }
 
 /// A contact point: its element, projections onto the modes, slabs and state.

@@ -363,7 +363,7 @@ impl Stepper<'_> {
                     let a = if contact {
                         side.a[k]
                     } else {
-                        side.storeys.as_ref().map_or(0.0, |st| st.load0[k])
+                        side.pseudo_now(k)
                             - side.gamma[k] * ground
                             - 2.0 * side.zeta[k] * side.omega[k] * side.v[k]
                             - side.omega[k].powi(2) * side.q[k]

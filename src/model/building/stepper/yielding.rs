@@ -16,7 +16,7 @@ use super::*;
 use crate::model::hysteresis::{Hysteresis, StoreyLaw, StoreyState};
 
 /// The most passes of the fixed point over one step.
-const MAX_PASSES: usize = 60;
+pub(super) const MAX_PASSES: usize = 60;
 
 /// A building's storey springs and what they remember.
 #[derive(Debug, Clone)]
@@ -63,16 +63,35 @@ impl Storeys {
         dotv(&self.drift[j], q)
     }
 
+    /// Storey j's drift with the modes at q + dq [m].
+    fn drift_after(&self, j: usize, q: &[f64], dq: &[f64]) -> f64 {
+        self.drift[j]
+            .iter()
+            .zip(q.iter().zip(dq))
+            .map(|(d, (q, dq))| d * (q + dq))
+            .sum()
+    }
+
+    /// Mode k's load over the planned free step: its value now and its rate.
+    pub fn pseudo(&self, k: usize) -> (f64, f64) {
+        let rate = if self.len > 0.0 {
+            (self.load1[k] - self.load0[k]) / self.len
+        } else {
+            0.0
+        };
+        (self.load0[k], rate)
+    }
+
     /// The correction c = k u - F of a storey in state `s` [N].
     fn correction(law: &StoreyLaw, s: &StoreyState) -> f64 {
         law.stiffness_n_m * s.drift_m - law.force_n(s)
     }
 
-    /// Each mode's load from corrections `c`, into `out`.
-    fn loads(&self, c: &[f64], out: &mut Vec<f64>) {
+    /// Each mode's load from corrections `c` on storeys of drift rows `drift`, into `out`.
+    fn loads(drift: &[Vec<f64>], c: &[f64], out: &mut Vec<f64>) {
         out.clear();
-        out.resize(self.drift.first().map_or(0, Vec::len), 0.0);
-        for (cj, dj) in c.iter().zip(&self.drift) {
+        out.resize(drift.first().map_or(0, Vec::len), 0.0);
+        for (cj, dj) in c.iter().zip(drift) {
             if *cj != 0.0 {
                 for (o, d) in out.iter_mut().zip(dj) {
                     *o += cj * d;
@@ -81,34 +100,37 @@ impl Storeys {
         }
     }
 
-    /// The loads at the end of a step that brings the modes to q1 (each storey along the
-    /// straight path of its drift), into `out`; the largest change of a correction from what
-    /// `out` held, relative to the corrections' scale.
-    pub fn end_loads(&self, q1: &[f64], out: &mut Vec<f64>) -> f64 {
-        if !q1.iter().all(|q| q.is_finite()) {
-            // No end state to follow (a trial that failed): the loads stay as they were.
-            return 0.0;
-        }
+    /// The loads at the end of a step that brings storey j to the drift `drift(j)` (each storey
+    /// along the straight path of its drift), into `out`; the largest change of a load from what
+    /// `out` held, relative to the largest load before or after.
+    fn end_loads(&self, drift: impl Fn(usize) -> f64, out: &mut [f64]) -> f64 {
         let mut c1 = Vec::with_capacity(self.laws.len());
         let mut scale = 0.0f64;
         for (j, law) in self.laws.iter().enumerate() {
+            let u = drift(j);
+            if !u.is_finite() {
+                // No end state to follow (a trial that failed): the loads stay as they were.
+                return 0.0;
+            }
             let mut s = self.state[j];
-            law.advance(&mut s, self.drift_of(j, q1));
+            law.advance(&mut s, u);
             let c = Self::correction(law, &s);
             scale = scale.max(c.abs()).max(self.c0[j].abs());
             c1.push(c);
         }
-        let before = out.clone();
-        self.loads(&c1, out);
-        let change = before
-            .iter()
-            .zip(out.iter())
-            .map(|(a, b)| (a - b).abs())
-            .fold(0.0, f64::max);
-        let load_scale = out
-            .iter()
-            .chain(&before)
-            .fold(0.0f64, |m, x| m.max(x.abs()));
+        // Mode by mode, in the storeys' order (as `loads` sums), comparing as it writes.
+        let (mut change, mut load_scale) = (0.0f64, 0.0f64);
+        for (k, o) in out.iter_mut().enumerate() {
+            let mut load = 0.0;
+            for (cj, dj) in c1.iter().zip(&self.drift) {
+                if *cj != 0.0 {
+                    load += cj * dj[k];
+                }
+            }
+            change = change.max((load - *o).abs());
+            load_scale = load_scale.max(load.abs()).max(o.abs());
+            *o = load;
+        }
         if scale == 0.0 || load_scale == 0.0 {
             0.0
         } else {
@@ -124,11 +146,7 @@ impl Storeys {
             self.laws[j].advance(&mut self.state[j], u);
             self.c0[j] = Self::correction(&self.laws[j], &self.state[j]);
         }
-        let c0 = std::mem::take(&mut self.c0);
-        let mut load0 = std::mem::take(&mut self.load0);
-        self.loads(&c0, &mut load0);
-        self.c0 = c0;
-        self.load0 = load0;
+        Self::loads(&self.drift, &self.c0, &mut self.load0);
     }
 
     /// Whether every storey provably stays inside its elastic range over a stretch of length
@@ -225,21 +243,22 @@ impl Stepper<'_> {
     pub(super) fn plan_free(&mut self, len: f64) {
         let grid_step = (len - self.grid.h).abs() <= 1e-12 * len;
         let t0 = self.time();
+        let mut y0 = Vec::new();
         for s in 0..2 {
             let Some(st) = self.sides[s].storeys.as_mut() else {
                 continue;
             };
             st.load1.clone_from(&st.load0);
             st.len = len;
+            let side = &self.sides[s];
             let props: Option<Vec<Propagator>> = (!grid_step).then(|| {
-                let side = &self.sides[s];
                 (0..side.modes())
                     .map(|k| propagator(side.omega[k], side.zeta[k], len))
                     .collect()
             });
-            let mut q1 = vec![0.0; self.sides[s].modes()];
+            let mut q1 = vec![0.0; side.modes()];
             for _ in 0..MAX_PASSES {
-                let y0 = self.initial(s, t0);
+                self.initial_into(s, t0, &mut y0);
                 let side = &self.sides[s];
                 let props = props.as_deref().unwrap_or(&side.sub[0]);
                 for (k, p) in props.iter().enumerate() {
@@ -247,21 +266,12 @@ impl Stepper<'_> {
                 }
                 let st = self.sides[s].storeys.as_mut().expect("checked");
                 let mut load1 = std::mem::take(&mut st.load1);
-                let change = st.end_loads(&q1, &mut load1);
+                let change = st.end_loads(|j| st.drift_of(j, &q1), &mut load1);
                 st.load1 = load1;
                 if change <= 1e-13 {
                     break;
                 }
             }
-        }
-    }
-
-    /// The pseudo-loads of side s over a free step: each mode's load now and its rate.
-    pub(super) fn free_pseudo(&self, s: usize, k: usize) -> (f64, f64) {
-        match &self.sides[s].storeys {
-            Some(st) if st.len > 0.0 => (st.load0[k], (st.load1[k] - st.load0[k]) / st.len),
-            Some(st) => (st.load0[k], 0.0),
-            None => (0.0, 0.0),
         }
     }
 
@@ -275,21 +285,16 @@ impl Stepper<'_> {
         }
     }
 
-    /// Inside a contact step: each side's corrections at the trial's end into `load1`; the
-    /// largest relative change.
+    /// Inside a contact step: each side's corrections at the trial's end (its modes moved by
+    /// `dq`) into `load1`; the largest relative change.
     pub(super) fn contact_end_loads(&self, dq: &[Vec<f64>; 2], load1: &mut [Vec<f64>; 2]) -> f64 {
         let mut worst = 0.0f64;
         for s in 0..2 {
             let side = &self.sides[s];
-            let Some(st) = side.storeys.as_ref() else {
-                load1[s].clear();
-                continue;
-            };
-            if load1[s].len() != st.load0.len() {
-                load1[s].clone_from(&st.load0);
+            if let Some(st) = side.storeys.as_ref() {
+                let drift = |j| st.drift_after(j, &side.q, &dq[s]);
+                worst = worst.max(st.end_loads(drift, &mut load1[s]));
             }
-            let q1: Vec<f64> = side.q.iter().zip(&dq[s]).map(|(q, d)| q + d).collect();
-            worst = worst.max(st.end_loads(&q1, &mut load1[s]));
         }
         worst
     }
@@ -324,10 +329,5 @@ impl Stepper<'_> {
             }
         }
         out
-    }
-
-    /// The most passes a contact step's fixed point takes.
-    pub(super) const fn max_passes() -> usize {
-        MAX_PASSES
     }
 }
