@@ -20,13 +20,18 @@ fn snapshot(scene: SceneKind, time_s: f64, name: &str) {
 
 /// A window `height` points high: tall enough to reach a scene's lower parts.
 fn snapshot_sized(scene: SceneKind, time_s: f64, name: &str, height: f32) {
+    snapshot_of(scene, "paper-base", time_s, name, height);
+}
+
+/// The scene on `preset` (a buildings preset goes to the buildings scene).
+fn snapshot_of(scene: SceneKind, preset: &str, time_s: f64, name: &str, height: f32) {
     if common::adapter_or_skip().is_none() {
         return;
     }
     HIDE_TIMINGS.store(true, std::sync::atomic::Ordering::Relaxed);
     let launch = Launch {
         scene: Some(scene),
-        preset: Some("paper-base".into()),
+        preset: Some(preset.into()),
         time_s: Some(time_s),
         ..Default::default()
     };
@@ -66,6 +71,19 @@ fn parameter_study_scene_matches_its_snapshot() {
 fn building_scene_down_to_the_slabs_space_time_diagram_matches_its_snapshot() {
     // Tall enough for the impact list and the x-t diagram of the strongest impact's slabs.
     snapshot_sized(SceneKind::Buildings, 2.6537, "scene-buildings-xt", 1500.0);
+}
+
+#[test]
+fn yielding_buildings_show_their_storeys_loops_grown_to_the_time_shown() {
+    // Past the strongest impacts: both storeys have yielded (orange columns), and each loop has
+    // grown to t = 4 s with the impacts marked on it.
+    snapshot_of(
+        SceneKind::Buildings,
+        "paper-buildings-yielding",
+        4.0,
+        "scene-buildings-yielding",
+        1100.0,
+    );
 }
 
 #[test]

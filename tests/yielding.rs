@@ -235,6 +235,52 @@ fn the_error_estimate_of_a_yielding_run_bounds_a_tenfold_refined_run() {
 }
 
 #[test]
+fn the_recorded_loops_stay_inside_the_bilinear_bounds_and_enclose_the_hysteretic_energy() {
+    let m = record(8.0);
+    let sc = yielding(ContactModel::Linear);
+    let r = run(&sc, &m);
+    for (s, b) in [&sc.left, &sc.right].into_iter().enumerate() {
+        let law = b.storey_laws()[0];
+        let (k, fy, hardening) = (law.stiffness_n_m, law.yield_force_n, law.hardening);
+        let u = r.storey_drift_m(s, 0);
+        let f = &r.storey_shear_n[s][0];
+        assert_eq!(u.len(), r.time_s.len());
+        // Kinematic hardening: |F - b k u| never passes (1 - b) F_y, and reaches it.
+        let reach = u
+            .iter()
+            .zip(f)
+            .map(|(u, f)| (f - hardening * k * u).abs() / ((1.0 - hardening) * fy))
+            .fold(0.0, f64::max);
+        assert!(reach <= 1.0 + 1e-8, "side {s}: the loop leaves its bounds ({reach})");
+        assert!(reach > 1.0 - 1e-6, "side {s}: the storey must yield ({reach})");
+        // The work the samples' trapezoids give, less what the spring stores at the end (its
+        // elastic part after unloading to the hardening line), against the solver's own count.
+        let work: f64 = (1..u.len())
+            .map(|i| 0.5 * (f[i] + f[i - 1]) * (u[i] - u[i - 1]))
+            .sum();
+        let (ue, fe) = (u[u.len() - 1], f[f.len() - 1]);
+        let elastic_part = (fe - hardening * k * ue) / ((1.0 - hardening) * k);
+        let stored =
+            0.5 * hardening * k * ue * ue + 0.5 * (1.0 - hardening) * k * elastic_part.powi(2);
+        let area = work - stored;
+        let counted = r.hysteretic_energy_j[s][0];
+        assert!(
+            rel(area, counted) < 0.01,
+            "side {s}: the loop encloses {area} J against {counted} J dissipated"
+        );
+        // Before its first yield the drift stays inside the yield drift.
+        let first = r.first_yield_s[s][0].expect("it yields");
+        let uy = fy / k;
+        let mut before = r.time_s.iter().zip(&u).filter(|(t, _)| **t < first - 1e-9);
+        assert!(before.all(|(_, u)| u.abs() < uy * (1.0 + 1e-9)));
+    }
+    // An elastic building records no shear of its own (its shear is k times the drift).
+    let elastic = run(&BuildingScenario::paper(), &record(2.0));
+    assert!(elastic.storey_shear_n.iter().all(Vec::is_empty));
+    assert!(elastic.first_yield_s.iter().flatten().all(Option::is_none));
+}
+
+#[test]
 fn the_yielding_preset_reads_and_its_keys_round_trip() {
     let setup: BuildingSetup =
         pounding::io::preset::load("paper-buildings-yielding").expect("the preset loads");

@@ -47,6 +47,7 @@ pub struct BuildingScene {
     pub view_rect: Option<egui::Rect>,
     shown_displacements: ShownPlot,
     shown_force: ShownPlot,
+    shown_loops: ShownPlot,
     /// The impact whose slabs the x-t diagram shows (`None`: the strongest).
     selected: Option<usize>,
     /// What the x-t diagram shows.
@@ -86,6 +87,7 @@ impl BuildingScene {
             view_rect: None,
             shown_displacements: ShownPlot::default(),
             shown_force: ShownPlot::default(),
+            shown_loops: ShownPlot::default(),
         };
         s.request();
         s
@@ -159,6 +161,9 @@ impl BuildingScene {
         if self.solved.is_some() {
             plots.push(("displacements", &self.shown_displacements));
             plots.push(("force", &self.shown_force));
+            if !self.shown_loops.series.is_empty() {
+                plots.push(("hysteresis", &self.shown_loops));
+            }
         }
         plots
     }
@@ -513,6 +518,14 @@ impl BuildingScene {
         let show = self.visibility.clone();
         if show.shows("displacements") {
             self.displacements_ui(ui, exporter);
+        }
+        if show.shows("hysteresis")
+            && let Some(s) = &self.solved
+        {
+            super::hysteresis_view::show(ui, &s.drawing, t, &mut self.shown_loops);
+            if !self.shown_loops.series.is_empty() {
+                exporter.buttons(ui, &self.shown_loops, "hysteresis");
+            }
         }
         if !show.shows("force") && !show.shows("impacts") {
             return;

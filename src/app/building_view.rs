@@ -53,6 +53,9 @@ impl BuildingDrawing {
     }
 }
 
+/// The columns of a storey that has yielded.
+pub const YIELDED: Color32 = Color32::from_rgb(230, 120, 30);
+
 /// A point of a building at floor weights: its displacement at t.
 fn attached(floors: &[Vec<f64>], time: &[f64], a: &Attachment, t: f64) -> f64 {
     a.weights()
@@ -223,6 +226,13 @@ impl<'a> Scene<'a> {
             } else {
                 (below_u, below_z)
             };
+            // A storey that has yielded by now keeps its columns tinted: its drift went past
+            // F_y / k, and what is left of it after the record is the residual drift.
+            let stroke = if r.yielded_by(s, f, self.t) {
+                Stroke::new(column.width + 1.0, YIELDED)
+            } else {
+                column
+            };
             for frac in [0.05, 0.95] {
                 let x = inner + dir * frac * len;
                 painter.line_segment(
@@ -230,7 +240,7 @@ impl<'a> Scene<'a> {
                         self.to_screen(x + base_u, base_z),
                         self.to_screen(x + u, z - self.slab_t),
                     ],
-                    column,
+                    stroke,
                 );
             }
             let coloured = d.bars.iter().any(|&(level, side)| {
@@ -307,6 +317,18 @@ impl<'a> Scene<'a> {
             egui::FontId::proportional(12.0),
             text,
         );
+        let yielded = (0..2)
+            .map(|s| (0..r.first_yield_s[s].len()).filter(|&j| r.yielded_by(s, j, self.t)).count())
+            .sum::<usize>();
+        if r.storey_shear_n.iter().any(|s| !s.is_empty()) {
+            painter.text(
+                Pos2::new(rect.right() - 8.0, rect.top() + 22.0),
+                egui::Align2::RIGHT_TOP,
+                format!("storeys yielded so far: {yielded} (orange columns)"),
+                egui::FontId::proportional(12.0),
+                YIELDED,
+            );
+        }
     }
 }
 

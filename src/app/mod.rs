@@ -8,6 +8,7 @@ mod building_job;
 mod building_params;
 mod building_scene;
 pub(crate) mod building_view;
+mod hysteresis_view;
 mod compare_scene;
 mod dialog;
 mod energy_view;

@@ -35,9 +35,20 @@ fn log_marks(input: GridInput) -> Vec<GridMark> {
 /// points apart (egui_plot's own spacer labels only powers of ten, so a short plot of e between
 /// 0.5 and 1 read "1" alone), with five unlabelled lines between.
 pub(super) fn nice_marks(input: GridInput) -> Vec<GridMark> {
+    marks_apart(input, 32.0)
+}
+
+/// [`nice_marks`] with labelled marks at least 64 points apart: a narrow plot's axis, whose
+/// labels egui_plot leaves out closer than 40.
+pub(super) fn sparse_marks(input: GridInput) -> Vec<GridMark> {
+    marks_apart(input, 64.0)
+}
+
+/// Marks at round values, the labelled ones at least `points` apart.
+fn marks_apart(input: GridInput, points: f64) -> Vec<GridMark> {
     let (lo, hi) = input.bounds;
     // base_step_size is the value of 8 points.
-    let wanted = 4.0 * input.base_step_size;
+    let wanted = points / 8.0 * input.base_step_size;
     if !(lo.is_finite() && hi.is_finite() && wanted.is_finite() && wanted > 0.0) {
         return Vec::new();
     }

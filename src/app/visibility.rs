@@ -20,7 +20,7 @@ impl Visibility {
     }
 
     /// Whether `panel` (a lesson panel name: bars, buildings, force, approach, displacements,
-    /// readouts, xt, energy, impacts, gaps) is drawn.
+    /// readouts, xt, energy, impacts, gaps, hysteresis) is drawn.
     pub fn shows(&self, panel: &str) -> bool {
         self.only.as_ref().is_none_or(|s| s.contains(panel))
     }

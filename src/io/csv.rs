@@ -24,12 +24,24 @@ pub fn write_building_history(
     out: &mut (impl Write + ?Sized),
     r: &crate::model::building::BuildingResult,
 ) -> std::io::Result<()> {
-    writeln!(
+    // A side whose storeys yield adds each storey's drift and shear: its hysteresis loops.
+    let mut loops: Vec<(String, Vec<f64>)> = Vec::new();
+    for (s, name) in ["left", "right"].into_iter().enumerate() {
+        for (j, shear) in r.storey_shear_n[s].iter().enumerate() {
+            loops.push((format!("drift_{name}_{}_m", j + 1), r.storey_drift_m(s, j)));
+            loops.push((format!("shear_{name}_{}_n", j + 1), shear.clone()));
+        }
+    }
+    write!(
         out,
         "time_s,ground_accel_m_s2,u_left_m,u_right_m,v_left_m_s,v_right_m_s,a_left_m_s2,a_right_m_s2,force_n"
     )?;
+    for (name, _) in &loops {
+        write!(out, ",{name}")?;
+    }
+    writeln!(out)?;
     for i in 0..r.time_s.len() {
-        writeln!(
+        write!(
             out,
             "{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e}",
             r.time_s[i],
@@ -42,6 +54,10 @@ pub fn write_building_history(
             r.acceleration_m_s2[1][i],
             r.force_n[i]
         )?;
+        for (_, column) in &loops {
+            write!(out, ",{:.9e}", column[i])?;
+        }
+        writeln!(out)?;
     }
     Ok(())
 }

@@ -123,10 +123,12 @@ pub enum Panel {
     Impacts,
     /// The gap assessment against ABS and SRSS.
     Gaps,
+    /// The yielding storeys' hysteresis loops.
+    Hysteresis,
 }
 
 impl Panel {
-    pub const ALL: [Panel; 10] = [
+    pub const ALL: [Panel; 11] = [
         Panel::Bars,
         Panel::Buildings,
         Panel::Force,
@@ -137,6 +139,7 @@ impl Panel {
         Panel::Energy,
         Panel::Impacts,
         Panel::Gaps,
+        Panel::Hysteresis,
     ];
 
     pub fn name(self) -> &'static str {
@@ -151,6 +154,7 @@ impl Panel {
             Panel::Energy => "energy",
             Panel::Impacts => "impacts",
             Panel::Gaps => "gaps",
+            Panel::Hysteresis => "hysteresis",
         }
     }
 
@@ -163,7 +167,11 @@ impl Panel {
         match self {
             Panel::Force | Panel::Readouts | Panel::Energy => true,
             Panel::Bars | Panel::Approach | Panel::Xt => scene != LessonScene::Buildings,
-            Panel::Buildings | Panel::Displacements | Panel::Impacts | Panel::Gaps => {
+            Panel::Buildings
+            | Panel::Displacements
+            | Panel::Impacts
+            | Panel::Gaps
+            | Panel::Hysteresis => {
                 scene == LessonScene::Buildings
             }
         }

@@ -121,6 +121,14 @@ impl StoreyLaw {
         }
     }
 
+    /// The lines the shear of a yielding law approaches at drift u, b k u -+ (1 - b) F_y [N]
+    /// (the bilinear law's bounds, Bouc-Wen's asymptotes); `None` for the elastic law.
+    pub fn bounding_shears_n(&self, u: f64) -> Option<[f64; 2]> {
+        let (k, b, fy) = (self.stiffness_n_m, self.hardening, self.yield_force_n);
+        (self.kind != Hysteresis::Elastic)
+            .then(|| [b * k * u - (1.0 - b) * fy, b * k * u + (1.0 - b) * fy])
+    }
+
     /// The drifts between which the next move is elastic (slope k), for the bilinear law: the
     /// yield points either side of the plastic drift. `None` for the other laws (elastic: always;
     /// Bouc-Wen: never exactly).

@@ -186,6 +186,14 @@ pub struct BuildingResult {
     pub residual_drift_m: [Vec<f64>; 2],
     /// The energy each storey's spring dissipated [J] (zero for elastic storeys).
     pub hysteretic_energy_j: [Vec<f64>; 2],
+    /// Every storey's yield drift F_y / k [m].
+    pub yield_drift_m: [Vec<f64>; 2],
+    /// When each yielding storey's drift first reached its yield drift [s] (`None`: never, or
+    /// an elastic storey).
+    pub first_yield_s: [Vec<Option<f64>>; 2],
+    /// Each storey's shear force at the samples, `storey_shear_n[side][storey][sample]` [N], for
+    /// a side whose storeys yield; empty for an elastic side.
+    pub storey_shear_n: [Vec<Vec<f64>>; 2],
     /// Largest contact force of the run [N].
     pub max_pounding_force_n: f64,
     /// Largest contact force at each level [N].
@@ -214,6 +222,25 @@ impl BuildingResult {
     /// The Sears slabs' waves at each level (empty for the other elements).
     pub fn slab_waves(&self) -> &[LevelWaves] {
         self.slabs.waves()
+    }
+
+    /// Storey j's drift on a side at the samples: its floor's displacement less the one below
+    /// (the ground's, zero, for the first storey) [m].
+    pub fn storey_drift_m(&self, side: usize, j: usize) -> Vec<f64> {
+        let floors = &self.floor_displacement_m[side];
+        match j {
+            0 => floors[0].clone(),
+            _ => floors[j].iter().zip(&floors[j - 1]).map(|(a, b)| a - b).collect(),
+        }
+    }
+
+    /// Whether storey j on a side has yielded by time t.
+    pub fn yielded_by(&self, side: usize, j: usize, t: f64) -> bool {
+        self.first_yield_s[side]
+            .get(j)
+            .copied()
+            .flatten()
+            .is_some_and(|y| y <= t)
     }
 }
 

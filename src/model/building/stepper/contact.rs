@@ -564,7 +564,8 @@ impl Stepper<'_> {
         }
         self.advance(hh);
         if self.yields() {
-            self.commit_storeys();
+            let t1 = self.time();
+            self.commit_storeys(t1 - hh, t1);
         }
         for (i, p) in self.points.iter_mut().enumerate() {
             let f1 = tr.forces[i];

@@ -103,7 +103,8 @@ impl Stepper<'_> {
             }
         }
         if self.yields() {
-            self.commit_storeys();
+            let t0 = self.time();
+            self.commit_storeys(t0, t0 + len);
         }
     }
 

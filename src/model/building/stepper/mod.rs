@@ -421,7 +421,8 @@ impl<'a> Stepper<'a> {
                 sc.right.storeys,
                 levels.len(),
                 grid.contact_sample_s,
-            ),
+            )
+            .with_shears([&sc.left, &sc.right].map(|b| if b.yields() { b.storeys } else { 0 })),
             signals,
             sides,
             points,

@@ -159,6 +159,9 @@ pub(in crate::model::building) struct Record {
     pub roof_a: [Vec<f64>; 2],
     pub level_force: Vec<Vec<f64>>,
     pub force: Vec<f64>,
+    /// `storey_shear[side][storey][sample]` [N], for a side whose storeys yield (empty for an
+    /// elastic side: its shear is k times the drift the floors give).
+    pub storey_shear: [Vec<Vec<f64>>; 2],
     contact_sample_s: f64,
 }
 
@@ -178,14 +181,22 @@ impl Record {
             roof_a: [Vec::new(), Vec::new()],
             level_force: vec![Vec::new(); levels],
             force: Vec::new(),
+            storey_shear: [Vec::new(), Vec::new()],
             contact_sample_s,
         }
+    }
+
+    /// Records each storey's shear on the sides given a count of storeys (those that yield).
+    pub(in crate::model::building) fn with_shears(mut self, storeys: [usize; 2]) -> Self {
+        self.storey_shear = storeys.map(|n| vec![Vec::new(); n]);
+        self
     }
 
     /// Bytes its samples take.
     pub(super) fn bytes(&self) -> f64 {
         let floors = self.floors[0].len() + self.floors[1].len();
-        let per_sample = 2 + 2 * floors + 4 + self.level_force.len() + 1;
+        let shears = self.storey_shear[0].len() + self.storey_shear[1].len();
+        let per_sample = 2 + 2 * floors + 4 + self.level_force.len() + 1 + shears;
         (8 * per_sample * self.time_s.len()) as f64
     }
 
@@ -394,6 +405,11 @@ impl Stepper<'_> {
             let roof = side.heights.len() - 1;
             rec.roof_v[s].push(side.floor(&side.v, roof));
             rec.roof_a[s].push(roof_a + ground);
+            if let Some(st) = &side.storeys {
+                for (j, column) in rec.storey_shear[s].iter_mut().enumerate() {
+                    column.push(st.shear_n(j));
+                }
+            }
         }
         let mut total = 0.0;
         for (l, p) in self.points.iter().enumerate() {

@@ -32,6 +32,8 @@ pub(super) struct Storeys {
     /// The planned free step: each mode's load at its end, and its length.
     pub load1: Vec<f64>,
     pub len: f64,
+    /// When each storey's drift first reached its yield drift F_y / k [s].
+    pub first_yield_s: Vec<Option<f64>>,
 }
 
 impl Storeys {
@@ -55,6 +57,7 @@ impl Storeys {
             load0: vec![0.0; modes],
             load1: vec![0.0; modes],
             len: 0.0,
+            first_yield_s: vec![None; n],
         }
     }
 
@@ -138,11 +141,28 @@ impl Storeys {
         }
     }
 
+    /// Storey j's shear force now [N].
+    pub fn shear_n(&self, j: usize) -> f64 {
+        self.laws[j].force_n(&self.state[j])
+    }
+
     /// Moves every storey to the drifts of the modes at q, along the straight path from where
-    /// they stand.
-    pub fn commit(&mut self, q: &[f64]) {
+    /// they stand, over the step from `t0` to `t1`.
+    pub fn commit(&mut self, q: &[f64], t0: f64, t1: f64) {
         for j in 0..self.laws.len() {
             let u = self.drift_of(j, q);
+            let before = self.state[j].drift_m;
+            let uy = self.laws[j].yield_drift_m();
+            if self.first_yield_s[j].is_none() && u.abs() >= uy {
+                // Within the step, where the straight drift path reaches the yield drift.
+                let target = uy.copysign(u);
+                let share = if u != before {
+                    ((target - before) / (u - before)).clamp(0.0, 1.0)
+                } else {
+                    1.0
+                };
+                self.first_yield_s[j] = Some(t0 + share * (t1 - t0));
+            }
             self.laws[j].advance(&mut self.state[j], u);
             self.c0[j] = Self::correction(&self.laws[j], &self.state[j]);
         }
@@ -198,6 +218,8 @@ pub(in crate::model::building) struct StoreySummary {
     pub ductility_demand: [Vec<f64>; 2],
     pub residual_drift_m: [Vec<f64>; 2],
     pub hysteretic_energy_j: [Vec<f64>; 2],
+    pub first_yield_s: [Vec<Option<f64>>; 2],
+    pub yield_drift_m: [Vec<f64>; 2],
 }
 
 impl Stepper<'_> {
@@ -275,11 +297,12 @@ impl Stepper<'_> {
         }
     }
 
-    /// Every side's storeys moved to where the modes now stand.
-    pub(super) fn commit_storeys(&mut self) {
+    /// Every side's storeys moved to where the modes stand at the end of the step just
+    /// committed, from `t0` to `t1`.
+    pub(super) fn commit_storeys(&mut self, t0: f64, t1: f64) {
         for side in self.sides.iter_mut() {
             if let Some(st) = side.storeys.as_mut() {
-                st.commit(&side.q);
+                st.commit(&side.q, t0, t1);
                 st.len = 0.0;
             }
         }
@@ -313,6 +336,12 @@ impl Stepper<'_> {
                 let yield_drift = b.yield_force(j) / b.stiffness(j);
                 let peak = peak_drift_ratio[s].get(j).copied().unwrap_or(0.0) * b.height(j);
                 out.ductility_demand[s].push(peak / yield_drift);
+                out.yield_drift_m[s].push(yield_drift);
+                out.first_yield_s[s].push(
+                    side.storeys
+                        .as_ref()
+                        .and_then(|st| st.first_yield_s.get(j).copied().flatten()),
+                );
                 let (drift, dissipated) = match &side.storeys {
                     Some(st) => (st.drift_of(j, &side.q), st.state[j].dissipated_j),
                     None => {
