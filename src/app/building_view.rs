@@ -318,7 +318,11 @@ impl<'a> Scene<'a> {
             text,
         );
         let yielded = (0..2)
-            .map(|s| (0..r.first_yield_s[s].len()).filter(|&j| r.yielded_by(s, j, self.t)).count())
+            .map(|s| {
+                (0..r.first_yield_s[s].len())
+                    .filter(|&j| r.yielded_by(s, j, self.t))
+                    .count()
+            })
             .sum::<usize>();
         if r.storey_shear_n.iter().any(|s| !s.is_empty()) {
             painter.text(

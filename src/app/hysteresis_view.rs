@@ -72,7 +72,9 @@ fn storey(d: &BuildingDrawing, side: usize, j: usize) -> Storey {
 /// an export of them holds goes into `shown`. Nothing where no storey yields.
 pub fn show(ui: &mut egui::Ui, d: &BuildingDrawing, t: f64, shown: &mut ShownPlot) {
     let r = &d.result;
-    let sides: Vec<usize> = (0..2).filter(|&s| !r.storey_shear_n[s].is_empty()).collect();
+    let sides: Vec<usize> = (0..2)
+        .filter(|&s| !r.storey_shear_n[s].is_empty())
+        .collect();
     if sides.is_empty() {
         return;
     }
@@ -94,7 +96,15 @@ pub fn show(ui: &mut egui::Ui, d: &BuildingDrawing, t: f64, shown: &mut ShownPlo
                 let grown = &st.points[..upto.min(st.points.len())];
                 ui.vertical(|ui| {
                     ui.label(format!("{}: ductility {:.2}", st.name, st.ductility));
-                    loop_plot(ui, (s, j), &st, grown, &struck, width, r.yielded_by(s, j, t));
+                    loop_plot(
+                        ui,
+                        (s, j),
+                        &st,
+                        grown,
+                        &struck,
+                        width,
+                        r.yielded_by(s, j, t),
+                    );
                 });
                 series.push((st.name, grown.to_vec()));
             }

@@ -171,9 +171,7 @@ impl Panel {
             | Panel::Displacements
             | Panel::Impacts
             | Panel::Gaps
-            | Panel::Hysteresis => {
-                scene == LessonScene::Buildings
-            }
+            | Panel::Hysteresis => scene == LessonScene::Buildings,
         }
     }
 }

@@ -126,7 +126,7 @@ impl StoreyLaw {
     pub fn bounding_shears_n(&self, u: f64) -> Option<[f64; 2]> {
         let (k, b, fy) = (self.stiffness_n_m, self.hardening, self.yield_force_n);
         (self.kind != Hysteresis::Elastic)
-            .then(|| [b * k * u - (1.0 - b) * fy, b * k * u + (1.0 - b) * fy])
+            .then_some([b * k * u - (1.0 - b) * fy, b * k * u + (1.0 - b) * fy])
     }
 
     /// The drifts between which the next move is elastic (slope k), for the bilinear law: the

@@ -107,6 +107,11 @@ impl Element {
         }
     }
 
+    /// Whether the force is the law's alone (a function of the overlap, rising with it).
+    pub fn undamped(&self) -> bool {
+        self.dashpot == Dashpot::None
+    }
+
     /// Contact force, never a pull.
     pub fn force(&self, delta: f64, rate: f64, v0: f64) -> f64 {
         if delta <= 0.0 {

@@ -230,7 +230,11 @@ impl BuildingResult {
         let floors = &self.floor_displacement_m[side];
         match j {
             0 => floors[0].clone(),
-            _ => floors[j].iter().zip(&floors[j - 1]).map(|(a, b)| a - b).collect(),
+            _ => floors[j]
+                .iter()
+                .zip(&floors[j - 1])
+                .map(|(a, b)| a - b)
+                .collect(),
         }
     }
 

@@ -313,7 +313,7 @@ impl Stepper<'_> {
         for _ in 0..MAX_PASSES {
             self.trial_once(hh, cs);
             let mut pseudo1 = std::mem::take(&mut cs.pseudo1);
-            let change = self.contact_end_loads(&cs.trial.dq, &mut pseudo1);
+            let change = self.contact_end_loads(&cs.trial.dq, hh, &mut pseudo1);
             cs.pseudo1 = pseudo1;
             if change <= 1e-13 {
                 break;
@@ -618,9 +618,22 @@ impl Stepper<'_> {
             } else {
                 tr.deltas[i]
             };
+            // An undamped element's force peaks with the overlap: between the steps, at the
+            // cubic's maximum through both ends' overlaps and rates (sampling the steps alone
+            // would miss it by up to (w h)^2 / 8, at a phase that changes with the step).
+            let between = if !self.sears && p.element.undamped() && f0 > 0.0 && f1 > 0.0 {
+                let top = hermite_max(delta0, p.rate, tr.deltas[i], tr.rates[i], hh);
+                if top.is_finite() {
+                    p.element.force(top, 0.0, p.v0)
+                } else {
+                    0.0
+                }
+            } else {
+                0.0
+            };
             p.rate = tr.rates[i];
             p.force = f1;
-            p.max_force = p.max_force.max(f1);
+            p.max_force = p.max_force.max(f1).max(between);
             if f0 <= 0.0 && f1 > 0.0 {
                 opened_or_closed = true;
                 // Opened inside this step: where the overlap crossed zero.
@@ -645,7 +658,7 @@ impl Stepper<'_> {
             if let Some(c) = p.open {
                 let contact = &mut self.contacts[c];
                 contact.impulse_ns += 0.5 * hh * (f0 + f1);
-                contact.peak_force_n = contact.peak_force_n.max(f1);
+                contact.peak_force_n = contact.peak_force_n.max(f1).max(between);
                 if f1 <= 0.0 {
                     opened_or_closed = true;
                     contact.end_s = if tr.released == Some(i) || p.delta > 0.0 {

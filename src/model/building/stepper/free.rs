@@ -643,7 +643,7 @@ impl Stepper<'_> {
         self.advance(len);
         self.track_peaks_now();
         if self.offset == 0.0 {
-            self.record_now();
+            self.record_free();
         }
         Ok(None)
     }

@@ -397,7 +397,9 @@ impl<'a> Stepper<'a> {
         let mut sides = sides;
         for (side, b) in sides.iter_mut().zip([&sc.left, &sc.right]) {
             if b.yields() {
-                side.storeys = Some(Storeys::new(b.storey_laws(), &side.shapes));
+                let mut st = Storeys::new(b.storey_laws(), &side.shapes);
+                st.set_rates(&side.v);
+                side.storeys = Some(st);
             }
         }
         let sears = sc.contact == ContactModel::Sears;
@@ -536,16 +538,27 @@ impl<'a> Stepper<'a> {
             self.flush_deferred();
             if self.offset > 0.0 {
                 // Back onto the grid after an event inside a step.
-                let rest = self.grid.h - self.offset;
+                let mut piece = self.grid.h - self.offset;
                 if self.yields() {
-                    self.plan_free(rest);
+                    self.plan_free(piece);
+                    piece = self.step_to_first_event(piece);
                 }
-                if let Some(level) = self.free_partial(rest)? {
-                    self.onset_in_partial(level, rest)?;
+                if let Some(level) = self.free_partial(piece)? {
+                    self.onset_in_partial(level, piece)?;
                 }
                 continue;
             }
             self.single_step = self.yields() && !self.plan_stretch();
+            if self.single_step {
+                // A storey's law changing branch inside the step: up to there first.
+                let piece = self.step_to_first_event(self.grid.h);
+                if piece < self.grid.h {
+                    if let Some(level) = self.free_partial(piece)? {
+                        self.onset_in_partial(level, piece)?;
+                    }
+                    continue;
+                }
+            }
             match self.free_step()? {
                 Free::Done => {}
                 Free::Onset { j, level } => self.onset(j, level)?,

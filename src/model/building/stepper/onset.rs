@@ -181,6 +181,12 @@ impl Stepper<'_> {
             }
         }
         self.ledger.exchanged_j += energy - (self.sides[0].energy() + self.sides[1].energy());
+        // The storeys' drift rates jumped with the floors' velocities.
+        for side in self.sides.iter_mut() {
+            if let Some(st) = side.storeys.as_mut() {
+                st.set_rates(&side.v);
+            }
+        }
         self.contacts.push(RawContact {
             level,
             start_s: t,

@@ -18,6 +18,10 @@ use crate::model::hysteresis::{Hysteresis, StoreyLaw, StoreyState};
 /// The most passes of the fixed point over one step.
 pub(super) const MAX_PASSES: usize = 60;
 
+/// An event closer than this share of its step to either end is left inside the step: a piece
+/// that short would cost a step and change nothing the law can tell.
+const EVENT_PIECE: f64 = 1e-6;
+
 /// A building's storey springs and what they remember.
 #[derive(Debug, Clone)]
 pub(super) struct Storeys {
@@ -34,6 +38,8 @@ pub(super) struct Storeys {
     pub len: f64,
     /// When each storey's drift first reached its yield drift F_y / k [s].
     pub first_yield_s: Vec<Option<f64>>,
+    /// Each storey's drift rate where the current time stands [m/s].
+    rate: Vec<f64>,
 }
 
 impl Storeys {
@@ -58,7 +64,34 @@ impl Storeys {
             load1: vec![0.0; modes],
             len: 0.0,
             first_yield_s: vec![None; n],
+            rate: vec![0.0; n],
         }
+    }
+
+    /// Each storey's drift rate taken from modal velocities v (the start, or a velocity jump).
+    pub fn set_rates(&mut self, v: &[f64]) {
+        for j in 0..self.laws.len() {
+            self.rate[j] = self.drift_of(j, v);
+        }
+    }
+
+    /// Moves a storey's state along its drift path over a step of length `len` that ends at
+    /// drift u1 with rate r1, from where it stands with rate r0: where the rate changes sign the
+    /// path turns inside the step, at the extremum of the cubic through both ends' drifts and
+    /// rates, and the law follows the turn (a straight path would cut it short).
+    fn follow(law: &StoreyLaw, s: &mut StoreyState, r0: f64, (u1, r1): (f64, f64), len: f64) {
+        if len > 0.0 && r0 != 0.0 && r1 != 0.0 && (r0 > 0.0) != (r1 > 0.0) {
+            let u0 = s.drift_m;
+            let turn = if r0 > 0.0 {
+                hermite_max(u0, r0, u1, r1, len)
+            } else {
+                -hermite_max(-u0, -r0, -u1, -r1, len)
+            };
+            if turn.is_finite() {
+                law.advance(s, turn);
+            }
+        }
+        law.advance(s, u1);
     }
 
     /// Storey j's drift with the modes at q [m].
@@ -103,20 +136,20 @@ impl Storeys {
         }
     }
 
-    /// The loads at the end of a step that brings storey j to the drift `drift(j)` (each storey
-    /// along the straight path of its drift), into `out`; the largest change of a load from what
-    /// `out` held, relative to the largest load before or after.
-    fn end_loads(&self, drift: impl Fn(usize) -> f64, out: &mut [f64]) -> f64 {
+    /// The loads at the end of a step of length `len` that brings storey j to the drift and
+    /// rate `end(j)` (each storey along its path, [`Storeys::follow`]), into `out`; the largest
+    /// change of a load from what `out` held, relative to the largest load before or after.
+    fn end_loads(&self, end: impl Fn(usize) -> (f64, f64), len: f64, out: &mut [f64]) -> f64 {
         let mut c1 = Vec::with_capacity(self.laws.len());
         let mut scale = 0.0f64;
         for (j, law) in self.laws.iter().enumerate() {
-            let u = drift(j);
-            if !u.is_finite() {
+            let (u, r) = end(j);
+            if !u.is_finite() || !r.is_finite() {
                 // No end state to follow (a trial that failed): the loads stay as they were.
                 return 0.0;
             }
             let mut s = self.state[j];
-            law.advance(&mut s, u);
+            Self::follow(law, &mut s, self.rate[j], (u, r), len);
             let c = Self::correction(law, &s);
             scale = scale.max(c.abs()).max(self.c0[j].abs());
             c1.push(c);
@@ -146,11 +179,12 @@ impl Storeys {
         self.laws[j].force_n(&self.state[j])
     }
 
-    /// Moves every storey to the drifts of the modes at q, along the straight path from where
-    /// they stand, over the step from `t0` to `t1`.
-    pub fn commit(&mut self, q: &[f64], t0: f64, t1: f64) {
+    /// Moves every storey to the drifts of the modes at q (their rates at v), along their paths
+    /// from where they stand, over the step from `t0` to `t1`.
+    pub fn commit(&mut self, q: &[f64], v: &[f64], t0: f64, t1: f64) {
         for j in 0..self.laws.len() {
             let u = self.drift_of(j, q);
+            let r = self.drift_of(j, v);
             let before = self.state[j].drift_m;
             let uy = self.laws[j].yield_drift_m();
             if self.first_yield_s[j].is_none() && u.abs() >= uy {
@@ -163,7 +197,14 @@ impl Storeys {
                 };
                 self.first_yield_s[j] = Some(t0 + share * (t1 - t0));
             }
-            self.laws[j].advance(&mut self.state[j], u);
+            Self::follow(
+                &self.laws[j],
+                &mut self.state[j],
+                self.rate[j],
+                (u, r),
+                t1 - t0,
+            );
+            self.rate[j] = r;
             self.c0[j] = Self::correction(&self.laws[j], &self.state[j]);
         }
         Self::loads(&self.drift, &self.c0, &mut self.load0);
@@ -210,6 +251,51 @@ impl Storeys {
             .map(|(l, s)| l.stored_energy_j(s) - 0.5 * l.stiffness_n_m * s.drift_m * s.drift_m)
             .sum()
     }
+}
+
+/// The first yield or turn of a storey of `side` strictly inside a step of length `len` from
+/// the augmented modal states `y0` (the planned loads in them), if any.
+fn first_event(side: &Side, st: &Storeys, y0: &[[f64; 4]], len: f64) -> Option<f64> {
+    let at_end: Vec<(f64, f64)> = (0..side.modes())
+        .map(|k| propagator(side.omega[k], side.zeta[k], len).apply(&y0[k]))
+        .collect();
+    // Storey j's drift (or its rate) tau into the step, on the exact motion.
+    let at = |j: usize, tau: f64, rate: bool| -> f64 {
+        (0..side.modes())
+            .map(|k| {
+                let (q, v) = propagator(side.omega[k], side.zeta[k], tau).apply(&y0[k]);
+                st.drift[j][k] * if rate { v } else { q }
+            })
+            .sum()
+    };
+    let tol = 1e-14 * len;
+    let inside = |tau: f64| tau > EVENT_PIECE * len && tau < (1.0 - EVENT_PIECE) * len;
+    let mut first: Option<f64> = None;
+    for j in 0..st.laws.len() {
+        let (u0, r0) = (st.drift_of(j, &side.q), st.drift_of(j, &side.v));
+        let (mut u1, mut r1) = (0.0, 0.0);
+        for (d, (q, v)) in st.drift[j].iter().zip(&at_end) {
+            u1 += d * q;
+            r1 += d * v;
+        }
+        let mut events = [None, None];
+        if let Some((lo, hi)) = st.laws[j].elastic_range_m(&st.state[j])
+            && u0 > lo
+            && u0 < hi
+            && !(lo..=hi).contains(&u1)
+        {
+            // Just past the edge: the law yields from the next step on.
+            let edge = if u1 > hi { hi } else { lo };
+            events[0] = Some(bracket(|x| at(j, x, false) - edge, 0.0, len, tol).second_side);
+        }
+        if r0 != 0.0 && (r0 > 0.0) != (r1 > 0.0) {
+            events[1] = Some(bracket(|x| at(j, x, true), 0.0, len, tol).mid());
+        }
+        for tau in events.into_iter().flatten().filter(|&t| inside(t)) {
+            first = Some(first.map_or(tau, |f: f64| f.min(tau)));
+        }
+    }
+    first
 }
 
 /// What the storeys did over a run, per side and storey (lowest first).
@@ -279,16 +365,18 @@ impl Stepper<'_> {
                     .collect()
             });
             let mut q1 = vec![0.0; side.modes()];
+            let mut v1 = vec![0.0; side.modes()];
             for _ in 0..MAX_PASSES {
                 self.initial_into(s, t0, &mut y0);
                 let side = &self.sides[s];
                 let props = props.as_deref().unwrap_or(&side.sub[0]);
                 for (k, p) in props.iter().enumerate() {
-                    q1[k] = p.apply(&y0[k]).0;
+                    (q1[k], v1[k]) = p.apply(&y0[k]);
                 }
                 let st = self.sides[s].storeys.as_mut().expect("checked");
                 let mut load1 = std::mem::take(&mut st.load1);
-                let change = st.end_loads(|j| st.drift_of(j, &q1), &mut load1);
+                let end = |j: usize| (st.drift_of(j, &q1), st.drift_of(j, &v1));
+                let change = st.end_loads(end, len, &mut load1);
                 st.load1 = load1;
                 if change <= 1e-13 {
                     break;
@@ -297,26 +385,62 @@ impl Stepper<'_> {
         }
     }
 
+    /// Where a storey's law changes branch inside a planned free step of length `len`, that
+    /// instant is located on the exact motion and the step re-planned to end there, as a
+    /// contact onset is: a bilinear storey reaching the edge of its elastic range (yield), or
+    /// any yielding storey's drift turning (unload: the straight drift path of a step would
+    /// cut the turn's excursion short). The length of the step to take.
+    pub(super) fn step_to_first_event(&mut self, len: f64) -> f64 {
+        let t0 = self.time();
+        let mut first = len;
+        let mut y0 = Vec::new();
+        for s in 0..2 {
+            if self.sides[s].storeys.is_none() {
+                continue;
+            }
+            self.initial_into(s, t0, &mut y0);
+            let side = &self.sides[s];
+            let st = side.storeys.as_ref().expect("checked");
+            if let Some(tau) = first_event(side, st, &y0, len) {
+                first = first.min(tau);
+            }
+        }
+        if first < len {
+            self.plan_free(first);
+        }
+        first
+    }
+
     /// Every side's storeys moved to where the modes stand at the end of the step just
     /// committed, from `t0` to `t1`.
     pub(super) fn commit_storeys(&mut self, t0: f64, t1: f64) {
         for side in self.sides.iter_mut() {
             if let Some(st) = side.storeys.as_mut() {
-                st.commit(&side.q, t0, t1);
+                st.commit(&side.q, &side.v, t0, t1);
                 st.len = 0.0;
             }
         }
     }
 
-    /// Inside a contact step: each side's corrections at the trial's end (its modes moved by
-    /// `dq`) into `load1`; the largest relative change.
-    pub(super) fn contact_end_loads(&self, dq: &[Vec<f64>; 2], load1: &mut [Vec<f64>; 2]) -> f64 {
+    /// Inside a contact step of length `hh`: each side's corrections at the trial's end (its
+    /// modes moved by `dq`) into `load1`; the largest relative change.
+    pub(super) fn contact_end_loads(
+        &self,
+        dq: &[Vec<f64>; 2],
+        hh: f64,
+        load1: &mut [Vec<f64>; 2],
+    ) -> f64 {
         let mut worst = 0.0f64;
         for s in 0..2 {
             let side = &self.sides[s];
             if let Some(st) = side.storeys.as_ref() {
-                let drift = |j| st.drift_after(j, &side.q, &dq[s]);
-                worst = worst.max(st.end_loads(drift, &mut load1[s]));
+                // Newmark's (trapezoidal) velocity: the end rate is 2 du / h less the start's.
+                let end = |j: usize| {
+                    let u0 = st.state[j].drift_m;
+                    let u1 = st.drift_after(j, &side.q, &dq[s]);
+                    (u1, 2.0 * (u1 - u0) / hh - st.rate[j])
+                };
+                worst = worst.max(st.end_loads(end, hh, &mut load1[s]));
             }
         }
         worst
