@@ -862,3 +862,45 @@ fn gaps_takes_the_yielding_storeys_keys_and_yielding_changes_the_gap_that_avoids
     assert!(!o.status.success());
     assert!(stderr(&o).contains("left.hardening"), "{}", stderr(&o));
 }
+
+#[test]
+fn sweep_of_a_building_setting_agrees_with_the_gap_that_avoids_pounding_and_names_bad_keys() {
+    let need = json(&["gaps", "--quiet", "--set", "contact.model=linear"])["records"][0]
+        ["min_gap_m"]
+        .as_f64()
+        .unwrap();
+    let v = json(&[
+        "sweep",
+        "--buildings",
+        "--set",
+        "contact.model=linear",
+        "--param",
+        "gap",
+        "--from",
+        "0.05",
+        "--to",
+        "0.07",
+        "--count",
+        "5",
+        "--quiet",
+    ]);
+    let points = v["points"].as_array().unwrap();
+    assert_eq!(points.len(), 5, "{v}");
+    for p in points {
+        let gap = p["value"].as_f64().unwrap();
+        let impacts = p["impact_count"].as_u64().unwrap();
+        // A gap wider than the largest closing motion without contact never closes.
+        assert_eq!(impacts == 0, gap > need, "gap {gap} against {need}: {p}");
+        assert!(p["error"].is_null());
+    }
+    for (args, want) in [
+        (vec!["--param", "left.hysteresis", "--to", "0.9"], "left.hysteresis"),
+        (vec!["--param", "left.hardening", "--to", "1"], "left.hardening"),
+    ] {
+        let mut all = vec!["sweep", "--buildings", "--from", "0.5"];
+        all.extend(args);
+        let o = pounding(&all);
+        assert!(!o.status.success());
+        assert!(stderr(&o).contains(want), "{all:?}: {}", stderr(&o));
+    }
+}

@@ -7,6 +7,7 @@ mod bar_view;
 mod building_job;
 mod building_params;
 mod building_scene;
+mod building_study;
 pub(crate) mod building_view;
 mod compare_scene;
 mod dialog;
@@ -262,9 +263,14 @@ impl eframe::App for PoundingApp {
         self.bar.poll();
         self.compare.poll();
         self.buildings.poll();
-        // The study starts from the Bar impact scene's settings; only the shown study can Run.
+        // The study starts from the Bar impact and Building pounding scenes' settings; only the
+        // shown study can Run.
         if self.scene == SceneKind::Study {
             self.study.base = self.bar.core.setup;
+            // A building sweep starts from the Building pounding scene's settings.
+            if self.study.buildings.base != self.buildings.setup {
+                self.study.buildings.base.clone_from(&self.buildings.setup);
+            }
         }
         self.study.poll();
         if self.scene == SceneKind::Buildings {

@@ -1,5 +1,6 @@
 //! The Parameter study scene: one impact setting swept over a range on top of the Bar impact
-//! scene's settings, with peak force, contact duration and e against it for each chosen model.
+//! scene's settings, with peak force, contact duration and e against it for each chosen model;
+//! or one building setting on top of the Building pounding scene's (`building_study`).
 //! The sweep runs on a thread of its own (its solves on every core), shows its progress and can be
 //! cancelled; the window keeps drawing throughout.
 
@@ -76,6 +77,7 @@ struct Finished {
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Mode {
     Sweep,
+    Buildings,
     Paper,
 }
 
@@ -97,6 +99,8 @@ pub struct StudyScene {
     /// The last study's wall time: it is also the time from Run to its result.
     pub solve_time: Duration,
     shown: [ShownPlot; 3],
+    /// The sweep of a building setting.
+    pub buildings: super::building_study::BuildingStudy,
     ctx: egui::Context,
 }
 
@@ -124,6 +128,7 @@ impl StudyScene {
             status: None,
             solve_time: Duration::ZERO,
             shown: Default::default(),
+            buildings: super::building_study::BuildingStudy::new(ctx, Default::default()),
             ctx: ctx.clone(),
         };
         s.start();
@@ -138,12 +143,13 @@ impl StudyScene {
             .filter(|(_, on)| *on)
             .map(|(m, _)| m.name())
             .collect();
+        let b = &self.buildings;
         format!(
-            "mode={}\npaper={}\nparam={}\nfrom={}\nto={}\ncount={}\nlog={}\nmodels={}\n",
-            if self.mode == Mode::Paper {
-                "paper"
-            } else {
-                "sweep"
+            "mode={}\npaper={}\nparam={}\nfrom={}\nto={}\ncount={}\nlog={}\nmodels={}\nbuilding_param={}\nbuilding_from={}\nbuilding_to={}\nbuilding_count={}\nbuilding_log={}\n",
+            match self.mode {
+                Mode::Paper => "paper",
+                Mode::Buildings => "buildings",
+                Mode::Sweep => "sweep",
             },
             self.paper.choice,
             self.param,
@@ -151,7 +157,12 @@ impl StudyScene {
             self.to.trim(),
             self.count,
             self.log,
-            models.join(",")
+            models.join(","),
+            b.param,
+            b.from.trim(),
+            b.to.trim(),
+            b.count,
+            b.log,
         )
     }
 
@@ -171,8 +182,35 @@ impl StudyScene {
                         self.mode = Mode::Sweep;
                         true
                     }
+                    "buildings" => {
+                        self.mode = Mode::Buildings;
+                        true
+                    }
                     _ => false,
                 },
+                "building_param"
+                    if crate::study::building_sweep::numeric_keys()
+                        .iter()
+                        .any(|n| n == v) =>
+                {
+                    self.buildings.param = v.into();
+                    true
+                }
+                "building_from" => {
+                    self.buildings.from = v.into();
+                    true
+                }
+                "building_to" => {
+                    self.buildings.to = v.into();
+                    true
+                }
+                "building_count" => v
+                    .parse()
+                    .ok()
+                    .filter(|c| (2..=10_000).contains(c))
+                    .map(|c| self.buildings.count = c)
+                    .is_some(),
+                "building_log" => v.parse().map(|b| self.buildings.log = b).is_ok(),
                 "paper" => self.paper.choose(v),
                 "param" if sweep::numeric_keys().iter().any(|n| n == v) => {
                     self.param = v.into();
@@ -222,7 +260,7 @@ impl StudyScene {
     }
 
     pub fn busy(&self) -> bool {
-        self.running.is_some() || self.paper.busy()
+        self.running.is_some() || self.paper.busy() || self.buildings.busy()
     }
 
     /// Validates the inputs and starts the sweep on a thread; a refusal names the field.
@@ -269,6 +307,12 @@ impl StudyScene {
     pub fn poll(&mut self) {
         if let Some(t) = self.paper.poll() {
             self.solve_time = t;
+        }
+        if self.buildings.busy() {
+            self.buildings.poll();
+            if !self.buildings.busy() {
+                self.solve_time = self.buildings.solve_time;
+            }
         }
         let Some(r) = &self.running else { return };
         let Some((outcome, elapsed)) = r.job.try_take(&self.ctx) else {
@@ -318,11 +362,15 @@ impl StudyScene {
         if let Some(r) = &self.running {
             r.job.cancel();
         }
+        self.buildings.cancel();
     }
 
     pub fn shown_plots(&self) -> Vec<(&str, &ShownPlot)> {
         if self.mode == Mode::Paper {
             return self.paper.shown_plots();
+        }
+        if self.mode == Mode::Buildings {
+            return self.buildings.shown_plots();
         }
         if self.finished.is_none() {
             return vec![];
@@ -335,13 +383,25 @@ impl StudyScene {
         ui.horizontal(|ui| {
             let before = self.mode;
             ui.selectable_value(&mut self.mode, Mode::Sweep, "Sweep a setting");
+            ui.selectable_value(&mut self.mode, Mode::Buildings, "Sweep a building setting");
             ui.selectable_value(&mut self.mode, Mode::Paper, "The paper's figures");
             if self.mode != before && !self.paper.busy() && self.paper.shown_plots().is_empty() {
                 self.paper.start();
             }
+            if self.mode != before
+                && self.mode == Mode::Buildings
+                && !self.buildings.busy()
+                && self.buildings.shown_plots().is_empty()
+            {
+                self.buildings.start();
+            }
         });
         if self.mode == Mode::Paper {
             self.paper.params_ui(ui);
+            return;
+        }
+        if self.mode == Mode::Buildings {
+            self.buildings.params_ui(ui);
             return;
         }
         ui.label(
@@ -411,6 +471,10 @@ impl StudyScene {
     pub fn main_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
         if self.mode == Mode::Paper {
             self.paper.main_ui(ui, exporter);
+            return;
+        }
+        if self.mode == Mode::Buildings {
+            self.buildings.main_ui(ui, exporter);
             return;
         }
         let Some(f) = &self.finished else {

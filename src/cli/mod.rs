@@ -2,6 +2,7 @@
 
 pub mod accuracy;
 pub mod building_report;
+pub mod building_sweep;
 pub mod buildings;
 pub mod gaps;
 pub mod impact;
@@ -33,7 +34,8 @@ pub enum Command {
     /// solve, with the observed order; a table, CSV and a work-precision plot.
     Accuracy(accuracy::AccuracyArgs),
     /// Vary one impact setting over a range (solved in parallel): peak force, contact duration
-    /// and e against it for each model.
+    /// and e against it for each model; with --buildings, one building setting: impacts, max
+    /// force, peak sway, ductility demands and hysteretic energy against it.
     Sweep(sweep::SweepArgs),
     /// Rerun one of the paper's figures (or `all`): PNG, SVG and CSV per figure, and the numbers
     /// its claims are checked against (see `pounding study --list`).

@@ -17,7 +17,8 @@ const LISTS: [&str; 2] = ["list_keys", "list_presets"];
 
 #[derive(Args, Debug)]
 pub struct SweepArgs {
-    /// The setting to vary: any --set key of `pounding impact` (see `pounding impact --list-keys`)
+    /// The setting to vary: any numeric --set key of `pounding impact` (see `pounding sweep
+    /// --list-keys`), or with --buildings of `pounding buildings`
     #[arg(long, value_name = "KEY", required_unless_present_any = LISTS)]
     pub param: Option<String>,
     /// First value
@@ -32,6 +33,10 @@ pub struct SweepArgs {
     /// Space the values geometrically (A and B > 0)
     #[arg(long)]
     pub log: bool,
+    /// Sweep a setting of the building pair (`pounding buildings`: its presets, --set keys and
+    /// record) instead of an impact setting
+    #[arg(long)]
+    pub buildings: bool,
     /// Model (repeatable to compare): sears|wave|lumped-hertz|lumped-linear|kelvin|stereo|fe [default: the preset's]
     #[arg(long = "model", value_name = "M")]
     pub models: Vec<String>,
@@ -53,6 +58,9 @@ pub struct SweepReport {
 }
 
 pub fn run(args: &SweepArgs, out: &mut dyn Write) -> anyhow::Result<()> {
+    if args.buildings {
+        return super::building_sweep::run(args, out);
+    }
     if super::impact::answered_lists(&args.common, out)? {
         return Ok(());
     }
@@ -101,7 +109,7 @@ pub fn run(args: &SweepArgs, out: &mut dyn Write) -> anyhow::Result<()> {
 }
 
 /// A sweep's error, phrased with the flag at fault.
-fn flagged(e: sweep::SweepError) -> anyhow::Error {
+pub(super) fn flagged(e: sweep::SweepError) -> anyhow::Error {
     let flag = match e.part() {
         Part::Param => "--param: ",
         Part::Count => "--count: ",

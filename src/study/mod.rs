@@ -4,6 +4,7 @@
 //! A [`Control`] is shared with whoever runs a study: the study counts its solves in it, the
 //! command line draws a progress bar from it, the window a progress bar and a cancel button.
 
+pub mod building_sweep;
 pub mod buildings;
 pub mod gaps;
 pub mod paper;

@@ -58,6 +58,8 @@ pub fn numeric_keys() -> Vec<String> {
 pub enum SweepError {
     #[error("'{0}' is not a numeric impact setting")]
     NotNumeric(String),
+    #[error("'{0}' is not a numeric building setting")]
+    NotNumericBuilding(String),
     #[error("{0} values is outside 2 to 100000")]
     Count(usize),
     #[error("the ends of the range must be finite numbers")]
@@ -86,7 +88,7 @@ pub enum Part {
 impl SweepError {
     pub fn part(&self) -> Part {
         match self {
-            SweepError::NotNumeric(_) => Part::Param,
+            SweepError::NotNumeric(_) | SweepError::NotNumericBuilding(_) => Part::Param,
             SweepError::Count(_) => Part::Count,
             SweepError::NotFinite => Part::Range,
             SweepError::Geometric { .. } => Part::Spacing,
@@ -100,6 +102,11 @@ pub fn check(param: &str, from: f64, to: f64, count: usize, log: bool) -> Result
     if !numeric_keys().iter().any(|k| k == param) {
         return Err(SweepError::NotNumeric(param.to_string()));
     }
+    check_range(from, to, count, log)
+}
+
+/// The count and the ends of a sweep's range, checked.
+pub(super) fn check_range(from: f64, to: f64, count: usize, log: bool) -> Result<(), SweepError> {
     if !(2..=100_000).contains(&count) {
         return Err(SweepError::Count(count));
     }
