@@ -63,25 +63,48 @@ fn three_against_five(c: &mut Criterion) {
     g.finish();
 }
 
+/// The paper's pair with yielding storeys (the preset: bilinear, its record and settling).
+fn paper_yielding() -> (BuildingScenario, GroundMotion) {
+    let setup: BuildingSetup =
+        preset::load_for("paper-buildings-yielding", "buildings").expect("a shipped preset");
+    let motion = pounding::io::motion::load(&setup.motion).expect("its record");
+    (setup.scenario, motion)
+}
+
 /// What one `pounding buildings` makes: the run with its histories, its error estimate and the
 /// run without contact (the report's figures aside), for the paper's pair with Sears and with
-/// the linear spring, and the 3- against 5-storey pair with Sears.
+/// the linear spring, elastic and yielding, and the 3- against 5-storey pair with Sears.
 fn whole_run(c: &mut Criterion) {
     let motion = record();
+    let (yielding, settled) = paper_yielding();
     let mut g = c.benchmark_group("whole_run");
     g.sample_size(10);
-    for (name, base, model) in [
+    for (name, base, model, motion) in [
         (
             "paper_sears",
             BuildingScenario::paper(),
             ContactModel::Sears,
+            &motion,
         ),
         (
             "paper_linear",
             BuildingScenario::paper(),
             ContactModel::Linear,
+            &motion,
         ),
-        ("mdof_3_5_sears", mdof_3_5(), ContactModel::Sears),
+        ("mdof_3_5_sears", mdof_3_5(), ContactModel::Sears, &motion),
+        (
+            "paper_yielding_sears",
+            yielding.clone(),
+            ContactModel::Sears,
+            &settled,
+        ),
+        (
+            "paper_yielding_linear",
+            yielding.clone(),
+            ContactModel::Linear,
+            &settled,
+        ),
     ] {
         let sc = BuildingScenario {
             contact: model,
@@ -93,9 +116,9 @@ fn whole_run(c: &mut Criterion) {
         };
         g.bench_function(name, |b| {
             b.iter(|| {
-                let r = solve(black_box(&sc), black_box(&motion)).expect("solves");
-                let e = estimate_error(&sc, &motion, &r).expect("estimates");
-                (r, e, solve(&none, &motion).expect("solves"))
+                let r = solve(black_box(&sc), black_box(motion)).expect("solves");
+                let e = estimate_error(&sc, motion, &r).expect("estimates");
+                (r, e, solve(&none, motion).expect("solves"))
             })
         });
     }

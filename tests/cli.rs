@@ -865,10 +865,10 @@ fn gaps_takes_the_yielding_storeys_keys_and_yielding_changes_the_gap_that_avoids
 
 #[test]
 fn sweep_of_a_building_setting_agrees_with_the_gap_that_avoids_pounding_and_names_bad_keys() {
-    let need = json(&["gaps", "--quiet", "--set", "contact.model=linear"])["records"][0]
-        ["min_gap_m"]
-        .as_f64()
-        .unwrap();
+    let need =
+        json(&["gaps", "--quiet", "--set", "contact.model=linear"])["records"][0]["min_gap_m"]
+            .as_f64()
+            .unwrap();
     let v = json(&[
         "sweep",
         "--buildings",
@@ -894,8 +894,14 @@ fn sweep_of_a_building_setting_agrees_with_the_gap_that_avoids_pounding_and_name
         assert!(p["error"].is_null());
     }
     for (args, want) in [
-        (vec!["--param", "left.hysteresis", "--to", "0.9"], "left.hysteresis"),
-        (vec!["--param", "left.hardening", "--to", "1"], "left.hardening"),
+        (
+            vec!["--param", "left.hysteresis", "--to", "0.9"],
+            "left.hysteresis",
+        ),
+        (
+            vec!["--param", "left.hardening", "--to", "1"],
+            "left.hardening",
+        ),
     ] {
         let mut all = vec!["sweep", "--buildings", "--from", "0.5"];
         all.extend(args);

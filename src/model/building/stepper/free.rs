@@ -39,7 +39,12 @@ impl Stepper<'_> {
     }
 
     pub(super) fn initial_into(&self, s: usize, t: f64, out: &mut Vec<[f64; 4]>) {
-        let (a0, slope) = self.ground(t);
+        self.initial_on(s, self.ground(t), out);
+    }
+
+    /// [`Stepper::initial_into`] with the ground's acceleration and its slope at t given (a
+    /// step planned pass by pass reads them once).
+    pub(super) fn initial_on(&self, s: usize, (a0, slope): (f64, f64), out: &mut Vec<[f64; 4]>) {
         let side = &self.sides[s];
         out.clear();
         out.extend((0..side.modes()).map(|k| {

@@ -456,7 +456,7 @@ impl<'a> Stepper<'a> {
 
     /// The modal ground forcing at `t`: g_k = -Gamma_k a_g(t), and its slope over the record
     /// interval that starts at or before t.
-    fn ground(&self, t: f64) -> (f64, f64) {
+    pub(super) fn ground(&self, t: f64) -> (f64, f64) {
         let dt = self.motion.dt_s;
         // t >= 0: truncation is the floor.
         let i = (((t / dt) + 1e-9) as usize) as f64;

@@ -40,6 +40,18 @@ pub(super) struct Storeys {
     pub first_yield_s: Vec<Option<f64>>,
     /// Each storey's drift rate where the current time stands [m/s].
     rate: Vec<f64>,
+    /// Buffers a step's planning reuses: the modes' augmented states, their ends, and the
+    /// corrections at the end (a fine step is planned hundreds of thousands of times a run).
+    plan: Plan,
+    c1: std::cell::RefCell<Vec<f64>>,
+}
+
+/// The planning's buffers.
+#[derive(Debug, Clone, Default)]
+struct Plan {
+    y0: Vec<[f64; 4]>,
+    q1: Vec<f64>,
+    v1: Vec<f64>,
 }
 
 impl Storeys {
@@ -65,6 +77,12 @@ impl Storeys {
             len: 0.0,
             first_yield_s: vec![None; n],
             rate: vec![0.0; n],
+            plan: Plan {
+                y0: Vec::new(),
+                q1: vec![0.0; modes],
+                v1: vec![0.0; modes],
+            },
+            c1: std::cell::RefCell::new(Vec::with_capacity(n)),
         }
     }
 
@@ -140,7 +158,8 @@ impl Storeys {
     /// rate `end(j)` (each storey along its path, [`Storeys::follow`]), into `out`; the largest
     /// change of a load from what `out` held, relative to the largest load before or after.
     fn end_loads(&self, end: impl Fn(usize) -> (f64, f64), len: f64, out: &mut [f64]) -> f64 {
-        let mut c1 = Vec::with_capacity(self.laws.len());
+        let mut c1 = self.c1.borrow_mut();
+        c1.clear();
         let mut scale = 0.0f64;
         for (j, law) in self.laws.iter().enumerate() {
             let (u, r) = end(j);
@@ -255,10 +274,17 @@ impl Storeys {
 
 /// The first yield or turn of a storey of `side` strictly inside a step of length `len` from
 /// the augmented modal states `y0` (the planned loads in them), if any.
-fn first_event(side: &Side, st: &Storeys, y0: &[[f64; 4]], len: f64) -> Option<f64> {
-    let at_end: Vec<(f64, f64)> = (0..side.modes())
-        .map(|k| propagator(side.omega[k], side.zeta[k], len).apply(&y0[k]))
-        .collect();
+fn first_event(side: &Side, st: &Storeys, plan: &mut Plan, len: f64, h: f64) -> Option<f64> {
+    let Plan { y0, q1, v1 } = plan;
+    // A whole fine step (the usual case) has its propagators made once for the run.
+    let whole = (len - h).abs() <= 1e-12 * h;
+    for k in 0..side.modes() {
+        (q1[k], v1[k]) = if whole {
+            side.sub[0][k].apply(&y0[k])
+        } else {
+            propagator(side.omega[k], side.zeta[k], len).apply(&y0[k])
+        };
+    }
     // Storey j's drift (or its rate) tau into the step, on the exact motion.
     let at = |j: usize, tau: f64, rate: bool| -> f64 {
         (0..side.modes())
@@ -273,11 +299,7 @@ fn first_event(side: &Side, st: &Storeys, y0: &[[f64; 4]], len: f64) -> Option<f
     let mut first: Option<f64> = None;
     for j in 0..st.laws.len() {
         let (u0, r0) = (st.drift_of(j, &side.q), st.drift_of(j, &side.v));
-        let (mut u1, mut r1) = (0.0, 0.0);
-        for (d, (q, v)) in st.drift[j].iter().zip(&at_end) {
-            u1 += d * q;
-            r1 += d * v;
-        }
+        let (u1, r1) = (st.drift_of(j, q1), st.drift_of(j, v1));
         let mut events = [None, None];
         if let Some((lo, hi)) = st.laws[j].elastic_range_m(&st.state[j])
             && u0 > lo
@@ -350,24 +372,26 @@ impl Stepper<'_> {
     /// fixed point over the exact step with the corrections linear in time.
     pub(super) fn plan_free(&mut self, len: f64) {
         let grid_step = (len - self.grid.h).abs() <= 1e-12 * len;
-        let t0 = self.time();
-        let mut y0 = Vec::new();
+        let ground = self.ground(self.time());
         for s in 0..2 {
             let Some(st) = self.sides[s].storeys.as_mut() else {
                 continue;
             };
             st.load1.clone_from(&st.load0);
             st.len = len;
+            let Plan {
+                mut y0,
+                mut q1,
+                mut v1,
+            } = std::mem::take(&mut st.plan);
             let side = &self.sides[s];
             let props: Option<Vec<Propagator>> = (!grid_step).then(|| {
                 (0..side.modes())
                     .map(|k| propagator(side.omega[k], side.zeta[k], len))
                     .collect()
             });
-            let mut q1 = vec![0.0; side.modes()];
-            let mut v1 = vec![0.0; side.modes()];
             for _ in 0..MAX_PASSES {
-                self.initial_into(s, t0, &mut y0);
+                self.initial_on(s, ground, &mut y0);
                 let side = &self.sides[s];
                 let props = props.as_deref().unwrap_or(&side.sub[0]);
                 for (k, p) in props.iter().enumerate() {
@@ -382,6 +406,8 @@ impl Stepper<'_> {
                     break;
                 }
             }
+            let st = self.sides[s].storeys.as_mut().expect("checked");
+            st.plan = Plan { y0, q1, v1 };
         }
     }
 
@@ -391,19 +417,20 @@ impl Stepper<'_> {
     /// any yielding storey's drift turning (unload: the straight drift path of a step would
     /// cut the turn's excursion short). The length of the step to take.
     pub(super) fn step_to_first_event(&mut self, len: f64) -> f64 {
-        let t0 = self.time();
+        let ground = self.ground(self.time());
         let mut first = len;
-        let mut y0 = Vec::new();
         for s in 0..2 {
-            if self.sides[s].storeys.is_none() {
+            let Some(st) = self.sides[s].storeys.as_mut() else {
                 continue;
-            }
-            self.initial_into(s, t0, &mut y0);
+            };
+            let mut plan = std::mem::take(&mut st.plan);
+            self.initial_on(s, ground, &mut plan.y0);
             let side = &self.sides[s];
             let st = side.storeys.as_ref().expect("checked");
-            if let Some(tau) = first_event(side, st, &y0, len) {
+            if let Some(tau) = first_event(side, st, &mut plan, len, self.grid.h) {
                 first = first.min(tau);
             }
+            self.sides[s].storeys.as_mut().expect("checked").plan = plan;
         }
         if first < len {
             self.plan_free(first);
