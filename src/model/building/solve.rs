@@ -127,12 +127,19 @@ fn plan(
         .flat_map(|m| m.omega_rad_s.iter())
         .fold(0.0f64, |a, &w| a.max(w));
     let check = ((0.3 / w_max / h).floor() as usize).clamp(1, per_free_step);
+    // Where storeys yield, a piece of free motion takes the correction linear in time: its error
+    // goes as (w dt)^2 (and the energy ledger's gap with it), so a piece is held to
+    // w_max dt <= 0.3 sqrt(tolerance) (a balance within 1e-7 on the paper's pair), and refines
+    // with the tolerance.
+    let yield_piece =
+        ((0.3 * sc.tolerance.sqrt() / w_max / h).floor() as usize).clamp(1, per_free_step);
     (
         Grid {
             h,
             per_free_step,
             total,
             check,
+            yield_piece,
             contact_sample_s: (scale / CONTACT_SAMPLES_PER_SCALE).max(h),
         },
         warning,

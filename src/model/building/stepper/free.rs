@@ -139,7 +139,11 @@ impl Stepper<'_> {
         // To the next free-step boundary (record samples are boundaries too); one fine step
         // where storeys yield (their corrections are planned step by step).
         let len = (g.per_free_step - self.n % g.per_free_step).min(g.total - self.n);
-        let len = if self.single_step { len.min(1) } else { len };
+        let len = if self.single_step {
+            len.min(self.grid.yield_piece)
+        } else {
+            len
+        };
         self.count_step()?;
         let t0 = self.time();
         let mut w = self

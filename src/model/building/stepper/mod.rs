@@ -57,6 +57,8 @@ pub(super) struct Grid {
     pub check: usize,
     /// The spacing of the recorded samples inside contacts [s].
     pub contact_sample_s: f64,
+    /// Fine steps a planned piece of free motion takes at most where storeys yield.
+    pub yield_piece: usize,
 }
 
 /// One building in modal coordinates, with its precomputed exact steps.
@@ -550,9 +552,10 @@ impl<'a> Stepper<'a> {
             }
             self.single_step = self.yields() && !self.plan_stretch();
             if self.single_step {
-                // A storey's law changing branch inside the step: up to there first.
-                let piece = self.step_to_first_event(self.grid.h);
-                if piece < self.grid.h {
+                // A storey's law changing branch inside the piece: up to there first.
+                let planned = self.planned_piece();
+                let piece = self.step_to_first_event(planned);
+                if piece < planned {
                     if let Some(level) = self.free_partial(piece)? {
                         self.onset_in_partial(level, piece)?;
                     }

@@ -274,15 +274,19 @@ impl Storeys {
 
 /// The first yield or turn of a storey of `side` strictly inside a step of length `len` from
 /// the augmented modal states `y0` (the planned loads in them), if any.
-fn first_event(side: &Side, st: &Storeys, plan: &mut Plan, len: f64, h: f64) -> Option<f64> {
+fn first_event(
+    side: &Side,
+    st: &Storeys,
+    plan: &mut Plan,
+    len: f64,
+    maps: Option<&[Propagator]>,
+) -> Option<f64> {
     let Plan { y0, q1, v1 } = plan;
-    // A whole fine step (the usual case) has its propagators made once for the run.
-    let whole = (len - h).abs() <= 1e-12 * h;
+    // Whole fine steps (the usual case) have their maps made once for the run.
     for k in 0..side.modes() {
-        (q1[k], v1[k]) = if whole {
-            side.sub[0][k].apply(&y0[k])
-        } else {
-            propagator(side.omega[k], side.zeta[k], len).apply(&y0[k])
+        (q1[k], v1[k]) = match maps {
+            Some(m) => m[k].apply(&y0[k]),
+            None => propagator(side.omega[k], side.zeta[k], len).apply(&y0[k]),
         };
     }
     // Storey j's drift (or its rate) tau into the step, on the exact motion.
@@ -363,15 +367,32 @@ impl Stepper<'_> {
             st.stays_elastic(&env, span)
         });
         if !whole {
-            self.plan_free(g.h);
+            self.plan_free(len.min(g.yield_piece) as f64 * g.h);
         }
         whole
+    }
+
+    /// The length of the piece of free motion planned now [s].
+    pub(super) fn planned_piece(&self) -> f64 {
+        self.sides
+            .iter()
+            .find_map(|s| s.storeys.as_ref().map(|st| st.len))
+            .unwrap_or(self.grid.h)
+    }
+
+    /// The fine steps' exact maps for a piece of length `len`, when it is a whole number of
+    /// them within a free step (the maps the run made once).
+    fn grid_maps(&self, s: usize, len: f64) -> Option<&[Propagator]> {
+        let steps = len / self.grid.h;
+        let j = steps.round();
+        ((steps - j).abs() <= 1e-9 * steps.max(1.0) && j >= 1.0)
+            .then(|| self.sides[s].sub.get(j as usize - 1).map(Vec::as_slice))
+            .flatten()
     }
 
     /// Plans a free step of length `len` from now: each side's corrections at its end, by the
     /// fixed point over the exact step with the corrections linear in time.
     pub(super) fn plan_free(&mut self, len: f64) {
-        let grid_step = (len - self.grid.h).abs() <= 1e-12 * len;
         let ground = self.ground(self.time());
         for s in 0..2 {
             let Some(st) = self.sides[s].storeys.as_mut() else {
@@ -385,15 +406,17 @@ impl Stepper<'_> {
                 mut v1,
             } = std::mem::take(&mut st.plan);
             let side = &self.sides[s];
-            let props: Option<Vec<Propagator>> = (!grid_step).then(|| {
+            let own: Option<Vec<Propagator>> = self.grid_maps(s, len).is_none().then(|| {
                 (0..side.modes())
                     .map(|k| propagator(side.omega[k], side.zeta[k], len))
                     .collect()
             });
             for _ in 0..MAX_PASSES {
                 self.initial_on(s, ground, &mut y0);
-                let side = &self.sides[s];
-                let props = props.as_deref().unwrap_or(&side.sub[0]);
+                let props = own
+                    .as_deref()
+                    .or_else(|| self.grid_maps(s, len))
+                    .expect("one or the other");
                 for (k, p) in props.iter().enumerate() {
                     (q1[k], v1[k]) = p.apply(&y0[k]);
                 }
@@ -427,7 +450,8 @@ impl Stepper<'_> {
             self.initial_on(s, ground, &mut plan.y0);
             let side = &self.sides[s];
             let st = side.storeys.as_ref().expect("checked");
-            if let Some(tau) = first_event(side, st, &mut plan, len, self.grid.h) {
+            let maps = self.grid_maps(s, len);
+            if let Some(tau) = first_event(side, st, &mut plan, len, maps) {
                 first = first.min(tau);
             }
             self.sides[s].storeys.as_mut().expect("checked").plan = plan;
