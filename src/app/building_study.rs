@@ -91,7 +91,9 @@ pub struct BuildingStudy {
 
 impl BuildingStudy {
     pub fn new(ctx: &egui::Context, base: BuildingSetup) -> Self {
-        let param = "left.yield_forces".to_string();
+        let param = crate::model::settings::building::YIELD_FORCES
+            .key_of(0)
+            .into_owned();
         let (a, b, log) = default_range(&param);
         BuildingStudy {
             base,
