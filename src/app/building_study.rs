@@ -7,12 +7,13 @@ use super::background::Background;
 use super::export::{Exporter, ShownPlot};
 use super::params::format_value;
 use super::plot_view;
+use super::sweep_panel::{self, default_range, fielded};
 use crate::export::plot::{LinePlot, Series};
 use crate::io::building_settings::BuildingSetup;
-use crate::model::settings::{BUILDING_SETTINGS, Kind, axis_label, find};
+use crate::model::settings::{BUILDING_SETTINGS, axis_label};
 use crate::study::Cancelled;
 use crate::study::building_sweep::{self, BuildingPoint};
-use crate::study::sweep::{self, SweepError};
+use crate::study::sweep;
 use eframe::egui;
 use std::time::Duration;
 
@@ -47,20 +48,6 @@ const PLOTS: [(&str, &str, &[Line]); 3] = [
     ),
 ];
 
-/// The range a sweep of `key` starts from when it is picked: its slider's span.
-fn default_range(key: &str) -> (f64, f64, bool) {
-    match find(BUILDING_SETTINGS, key).map(|s| s.kind) {
-        Some(Kind::Number { slider, log, .. } | Kind::List { slider, log, .. }) => {
-            (slider.0, slider.1, log)
-        }
-        Some(Kind::Count { min, max }) => {
-            let (lo, hi) = (min.max(1) as f64, max.min(1_000_000) as f64);
-            (lo, hi, hi / lo > 100.0)
-        }
-        _ => (0.5, 2.0, false),
-    }
-}
-
 struct Running {
     job: Background<Result<Vec<BuildingPoint>, Cancelled>>,
     param: String,
@@ -94,7 +81,7 @@ impl BuildingStudy {
         let param = crate::model::settings::building::YIELD_FORCES
             .key_of(0)
             .into_owned();
-        let (a, b, log) = default_range(&param);
+        let (a, b, log) = default_range(BUILDING_SETTINGS, &param);
         BuildingStudy {
             base,
             param,
@@ -134,12 +121,7 @@ impl BuildingStudy {
     }
 
     fn prepare(&self) -> Result<(Vec<BuildingSetup>, Vec<f64>), String> {
-        let number = |name: &str, text: &str| {
-            text.trim()
-                .parse::<f64>()
-                .map_err(|_| format!("{name}: '{}' is not a number", text.trim()))
-        };
-        let (from, to) = (number("from", &self.from)?, number("to", &self.to)?);
+        let (from, to) = sweep_panel::ends(&self.from, &self.to)?;
         building_sweep::check(&self.param, from, to, self.count, self.log).map_err(fielded)?;
         let values = sweep::values(from, to, self.count, self.log);
         let setups = building_sweep::setups(&self.base, &self.param, &values).map_err(fielded)?;
@@ -157,17 +139,7 @@ impl BuildingStudy {
             Ok(Ok(points)) => {
                 let failed = points.iter().filter(|p| p.error.is_some()).count();
                 self.status = Some((
-                    format!(
-                        "{} solves in {} on {} threads{}",
-                        points.len(),
-                        super::ms(elapsed.as_secs_f64(), 1),
-                        rayon::current_num_threads(),
-                        if failed > 0 {
-                            format!("; {failed} points without a result (listed below)")
-                        } else {
-                            String::new()
-                        }
-                    ),
+                    sweep_panel::finished_status(points.len(), failed, elapsed, "listed below"),
                     false,
                 ));
                 self.finished = Some(Finished {
@@ -202,59 +174,31 @@ impl BuildingStudy {
     pub fn params_ui(&mut self, ui: &mut egui::Ui) {
         ui.label("Sweeps one setting of the Building pounding scene (its settings and record are the base), with its contact element.");
         ui.add_space(4.0);
-        let label = ui.label("swept setting").id;
-        let before = self.param.clone();
-        egui::ComboBox::from_id_salt("building-study-param")
-            .selected_text(&self.param)
-            .height(400.0)
-            .show_ui(ui, |ui| {
-                for k in building_sweep::numeric_keys() {
-                    ui.selectable_value(&mut self.param, k.clone(), k);
-                }
-            })
-            .response
-            .labelled_by(label);
-        if self.param != before {
-            let (a, b, log) = default_range(&self.param);
-            (self.from, self.to, self.log) = (format_value(a), format_value(b), log);
+        sweep_panel::param_ui(
+            ui,
+            "building-study-param",
+            BUILDING_SETTINGS,
+            building_sweep::numeric_keys(),
+            &mut self.param,
+            &mut self.from,
+            &mut self.to,
+            &mut self.log,
+        );
+        sweep_panel::range_ui(
+            ui,
+            &mut self.from,
+            &mut self.to,
+            &mut self.count,
+            &mut self.log,
+        );
+        let job = self.running.as_ref().map(|r| &r.job);
+        let pressed = sweep_panel::run_ui(ui, self.busy(), job, self.status.as_ref());
+        if pressed.run {
+            self.start();
         }
-        for (name, text) in [("from", &mut self.from), ("to", &mut self.to)] {
-            ui.horizontal(|ui| {
-                let label = ui.label(name).id;
-                ui.add(egui::TextEdit::singleline(text).desired_width(120.0))
-                    .labelled_by(label)
-                    .on_hover_text("typed values are checked when the study runs");
-            });
+        if pressed.cancel {
+            self.cancel();
         }
-        ui.horizontal(|ui| {
-            let label = ui.label("points").id;
-            ui.add(egui::DragValue::new(&mut self.count).range(2..=10_000))
-                .labelled_by(label)
-                .on_hover_text("values swept, ends included (2 to 10000)");
-        });
-        ui.checkbox(&mut self.log, "geometric spacing")
-            .on_hover_text("equal ratios between values (from and to > 0)");
-        ui.add_space(6.0);
-        ui.horizontal(|ui| {
-            if ui
-                .button("Run")
-                .on_hover_text("solve every point on every core")
-                .clicked()
-            {
-                self.start();
-            }
-            if ui
-                .add_enabled(self.busy(), egui::Button::new("Cancel"))
-                .on_hover_text("stop: finished points are dropped")
-                .clicked()
-            {
-                self.cancel();
-            }
-        });
-        if let Some(r) = &self.running {
-            r.job.progress_ui(ui);
-        }
-        super::params::status_ui(ui, self.status.as_ref());
     }
 
     pub fn main_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
@@ -293,32 +237,14 @@ impl BuildingStudy {
             self.shown[k] = plot_view::draw(ui, ("building-study", k), &plot, h, link);
             exporter.buttons(ui, &self.shown[k], PLOT_NAMES[k]);
         }
-        let failed: Vec<&BuildingPoint> = f.points.iter().filter(|p| p.error.is_some()).collect();
-        if !failed.is_empty() {
-            ui.collapsing(format!("{} points without a result", failed.len()), |ui| {
-                for p in failed.iter().take(50) {
-                    ui.label(format!(
-                        "{} = {}: {}",
-                        f.param,
-                        format_value(p.value),
-                        p.error.as_deref().unwrap_or_default()
-                    ));
-                }
-            });
-        }
+        let failed: Vec<(f64, String)> = f
+            .points
+            .iter()
+            .filter(|p| p.error.is_some())
+            .map(|p| (p.value, p.error.as_deref().unwrap_or_default().to_string()))
+            .collect();
+        sweep_panel::failed_ui(ui, &f.param, &failed);
     }
-}
-
-/// A sweep's error, phrased with the panel's field at fault.
-fn fielded(e: SweepError) -> String {
-    let field = match e.part() {
-        sweep::Part::Param => "swept setting: ",
-        sweep::Part::Count => "points: ",
-        sweep::Part::Range => "from/to: ",
-        sweep::Part::Spacing => "geometric spacing: ",
-        sweep::Part::Value => "",
-    };
-    format!("{field}{e}")
 }
 
 #[cfg(test)]

@@ -44,19 +44,18 @@ fn storey(d: &BuildingDrawing, side: usize, j: usize) -> Storey {
         .map(|(u, f)| [u * 1e3, f * 1e-3])
         .collect();
     let sc = &d.setup.scenario;
-    let law = [&sc.left, &sc.right][side].storey_laws()[j];
+    let law = [&sc.left, &sc.right][side].storey_law(j);
     let (lo, hi) = drift
         .iter()
         .fold((0.0f64, 0.0f64), |(a, b), &u| (a.min(u), b.max(u)));
     let reach = (hi - lo).max(law.yield_drift_m()) * 0.1;
     let ends = [lo - reach, hi + reach];
-    let bounds = law.bounding_shears_n(0.0).map(|_| {
-        std::array::from_fn(|side_of_band| {
+    let at_ends: Option<Vec<[f64; 2]>> = ends.iter().map(|&u| law.bounding_shears_n(u)).collect();
+    let bounds = at_ends.map(|f| {
+        std::array::from_fn(|band| {
             ends.iter()
-                .map(|&u| {
-                    let f = law.bounding_shears_n(u).expect("a yielding law")[side_of_band];
-                    [u * 1e3, f * 1e-3]
-                })
+                .zip(&f)
+                .map(|(u, f)| [u * 1e3, f[band] * 1e-3])
                 .collect()
         })
     });

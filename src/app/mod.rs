@@ -32,6 +32,7 @@ mod series;
 mod slots;
 mod status;
 mod study_scene;
+mod sweep_panel;
 mod visibility;
 pub mod worker;
 mod xt_view;

@@ -7,9 +7,9 @@
 use super::background::Background;
 use super::export::{Exporter, ShownPlot};
 use super::paper_figures::PaperFigures;
-use super::params::format_value;
 use super::playback::Playback;
 use super::plot_view;
+use super::sweep_panel::{self, fielded};
 use crate::export::plot::{LinePlot, Series};
 use crate::io::settings::ImpactSetup;
 use crate::model::impact::ModelKind;
@@ -18,34 +18,6 @@ use crate::study::Cancelled;
 use crate::study::sweep::{self, Point};
 use eframe::egui;
 use std::time::Duration;
-
-/// The range a sweep of `key` starts from when it is picked: (from, to, geometric), the span of
-/// the key's slider in the settings table (the one place its ranges are written).
-fn default_range(key: &str) -> (f64, f64, bool) {
-    use crate::model::settings::{IMPACT_SETTINGS, Kind, find};
-    match find(IMPACT_SETTINGS, key).map(|s| s.kind) {
-        Some(Kind::Number { slider, log, .. } | Kind::List { slider, log, .. }) => {
-            (slider.0, slider.1, log)
-        }
-        Some(Kind::Count { min, max }) => {
-            let (lo, hi) = ((min.max(1)) as f64, max.min(1_000_000) as f64);
-            (lo, hi, hi / lo > 100.0)
-        }
-        _ => (0.5, 2.0, false),
-    }
-}
-
-/// A sweep's error, phrased with the panel's field at fault.
-fn fielded(e: sweep::SweepError) -> String {
-    let field = match e.part() {
-        sweep::Part::Param => "swept setting: ",
-        sweep::Part::Count => "points: ",
-        sweep::Part::Range => "from/to: ",
-        sweep::Part::Spacing => "geometric spacing: ",
-        sweep::Part::Value => "",
-    };
-    format!("{field}{e}")
-}
 
 /// The sweep's plots by export name.
 const PLOT_NAMES: [&str; 3] = ["peak-force", "duration", "restitution"];
@@ -282,12 +254,7 @@ impl StudyScene {
     }
 
     fn prepare(&self) -> Result<Job, String> {
-        let number = |name: &str, text: &str| {
-            text.trim()
-                .parse::<f64>()
-                .map_err(|_| format!("{name}: '{}' is not a number", text.trim()))
-        };
-        let (from, to) = (number("from", &self.from)?, number("to", &self.to)?);
+        let (from, to) = sweep_panel::ends(&self.from, &self.to)?;
         sweep::check(&self.param, from, to, self.count, self.log).map_err(fielded)?;
         let models: Vec<ModelKind> = MODELS
             .iter()
@@ -330,16 +297,11 @@ impl StudyScene {
             Ok(points) => {
                 let failed = points.iter().filter(|p| p.error.is_some()).count();
                 self.status = Some((
-                    format!(
-                        "{} solves in {} on {} threads{}",
+                    sweep_panel::finished_status(
                         points.len(),
-                        super::ms(elapsed.as_secs_f64(), 1),
-                        rayon::current_num_threads(),
-                        if failed > 0 {
-                            format!("; {failed} points without a result (hover a plot's point)")
-                        } else {
-                            String::new()
-                        }
+                        failed,
+                        elapsed,
+                        "hover a plot's point",
                     ),
                     false,
                 ));
@@ -408,64 +370,36 @@ impl StudyScene {
             "Sweeps one setting of the Bar impact scene (its preset and values are the base).",
         );
         ui.add_space(4.0);
-        let label = ui.label("swept setting").id;
-        let before = self.param.clone();
-        egui::ComboBox::from_id_salt("study-param")
-            .selected_text(&self.param)
-            .height(400.0)
-            .show_ui(ui, |ui| {
-                for k in sweep::numeric_keys() {
-                    ui.selectable_value(&mut self.param, k.clone(), k);
-                }
-            })
-            .response
-            .labelled_by(label);
-        if self.param != before {
-            let (a, b, log) = default_range(&self.param);
-            (self.from, self.to, self.log) = (format_value(a), format_value(b), log);
-        }
-        for (name, text) in [("from", &mut self.from), ("to", &mut self.to)] {
-            ui.horizontal(|ui| {
-                let label = ui.label(name).id;
-                ui.add(egui::TextEdit::singleline(text).desired_width(120.0))
-                    .labelled_by(label)
-                    .on_hover_text("typed values are checked when the study runs");
-            });
-        }
-        ui.horizontal(|ui| {
-            let label = ui.label("points").id;
-            ui.add(egui::DragValue::new(&mut self.count).range(2..=10_000))
-                .labelled_by(label)
-                .on_hover_text("values swept, ends included (2 to 10000)");
-        });
-        ui.checkbox(&mut self.log, "geometric spacing")
-            .on_hover_text("equal ratios between values (from and to > 0)");
+        sweep_panel::param_ui(
+            ui,
+            "study-param",
+            IMPACT_SETTINGS,
+            sweep::numeric_keys(),
+            &mut self.param,
+            &mut self.from,
+            &mut self.to,
+            &mut self.log,
+        );
+        sweep_panel::range_ui(
+            ui,
+            &mut self.from,
+            &mut self.to,
+            &mut self.count,
+            &mut self.log,
+        );
         ui.add_space(4.0);
         ui.label("models");
         for (m, on) in MODELS.iter().zip(self.models.iter_mut()) {
             ui.checkbox(on, m.name());
         }
-        ui.add_space(6.0);
-        ui.horizontal(|ui| {
-            if ui
-                .button("Run")
-                .on_hover_text("solve every point on every core")
-                .clicked()
-            {
-                self.start();
-            }
-            if ui
-                .add_enabled(self.busy(), egui::Button::new("Cancel"))
-                .on_hover_text("stop: finished points are dropped")
-                .clicked()
-            {
-                self.cancel();
-            }
-        });
-        if let Some(r) = &self.running {
-            r.job.progress_ui(ui);
+        let job = self.running.as_ref().map(|r| &r.job);
+        let pressed = sweep_panel::run_ui(ui, self.busy(), job, self.status.as_ref());
+        if pressed.run {
+            self.start();
         }
-        super::params::status_ui(ui, self.status.as_ref());
+        if pressed.cancel {
+            self.cancel();
+        }
     }
 
     pub fn main_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
@@ -527,20 +461,18 @@ impl StudyScene {
             self.shown[k] = plot_view::draw(ui, ("study", k), &plot, h, link);
             exporter.buttons(ui, &self.shown[k], PLOT_NAMES[k]);
         }
-        let failed: Vec<&Point> = f.points.iter().filter(|p| p.error.is_some()).collect();
-        if !failed.is_empty() {
-            ui.collapsing(format!("{} points without a result", failed.len()), |ui| {
-                for p in failed.iter().take(50) {
-                    ui.label(format!(
-                        "{} = {}: {}: {}",
-                        f.param,
-                        format_value(p.value),
-                        p.model,
-                        p.error.as_deref().unwrap_or_default()
-                    ));
-                }
-            });
-        }
+        let failed: Vec<(f64, String)> = f
+            .points
+            .iter()
+            .filter(|p| p.error.is_some())
+            .map(|p| {
+                (
+                    p.value,
+                    format!("{}: {}", p.model, p.error.as_deref().unwrap_or_default()),
+                )
+            })
+            .collect();
+        sweep_panel::failed_ui(ui, &f.param, &failed);
     }
 }
 

@@ -111,17 +111,10 @@ fn table(r: &BuildingSweepReport, out: &mut dyn Write) -> anyhow::Result<()> {
             cell(p.max_ductility_right, 1.0),
             cell(p.hysteretic_energy_j, 1.0),
             cell(p.max_residual_drift_m, 1e3),
-            p.error
-                .as_ref()
-                .map_or(String::new(), |e| format!("  error: {e}"))
+            super::sweep::error_note(p.error.as_deref())
         )?;
     }
-    writeln!(
-        out,
-        "{} solves in {:.3} s on {} threads",
-        r.solves, r.wall_time_s, r.threads
-    )?;
-    Ok(())
+    super::sweep::solves_line(out, r.solves, r.wall_time_s, r.threads)
 }
 
 fn csv(r: &BuildingSweepReport) -> String {

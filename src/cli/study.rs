@@ -237,10 +237,5 @@ fn summary(r: &Report, out: &mut dyn Write) -> anyhow::Result<()> {
                 .map_or("-".into(), |p| p.display().to_string())
         )?;
     }
-    writeln!(
-        out,
-        "{} solves in {:.3} s on {} threads",
-        r.solves, r.wall_time_s, r.threads
-    )?;
-    Ok(())
+    super::sweep::solves_line(out, r.solves, r.wall_time_s, r.threads)
 }

@@ -125,6 +125,25 @@ pub(super) fn flagged(e: sweep::SweepError) -> anyhow::Error {
     anyhow!("{flag}{e}{hint}")
 }
 
+/// A point's error after its row, if it has one.
+pub(super) fn error_note(error: Option<&str>) -> String {
+    error.map_or(String::new(), |e| format!("  error: {e}"))
+}
+
+/// The last line of a sweep's table: how many solves, how long, on how many threads.
+pub(super) fn solves_line(
+    out: &mut dyn Write,
+    solves: usize,
+    wall_time_s: f64,
+    threads: usize,
+) -> anyhow::Result<()> {
+    writeln!(
+        out,
+        "{solves} solves in {wall_time_s:.3} s on {threads} threads"
+    )?;
+    Ok(())
+}
+
 fn opt(v: Option<f64>, scale: f64) -> String {
     v.map_or("-".into(), |x| format!("{:.6e}", x * scale))
 }
@@ -150,17 +169,10 @@ fn table(r: &SweepReport, out: &mut dyn Write) -> anyhow::Result<()> {
             opt(p.contact_duration_s, 1e3),
             p.restitution.map_or("-".into(), |e| format!("{e:.4}")),
             p.contacts.map_or("-".into(), |c| c.to_string()),
-            p.error
-                .as_ref()
-                .map_or(String::new(), |e| format!("  error: {e}"))
+            error_note(p.error.as_deref())
         )?;
     }
-    writeln!(
-        out,
-        "{} solves in {:.3} s on {} threads",
-        r.solves, r.wall_time_s, r.threads
-    )?;
-    Ok(())
+    solves_line(out, r.solves, r.wall_time_s, r.threads)
 }
 
 fn write_csv(r: &SweepReport, path: &std::path::Path, out: &mut dyn Write) -> anyhow::Result<()> {

@@ -25,11 +25,12 @@ pub fn write_building_history(
     r: &crate::model::building::BuildingResult,
 ) -> std::io::Result<()> {
     // A side whose storeys yield adds each storey's drift and shear: its hysteresis loops.
-    let mut loops: Vec<(String, Vec<f64>)> = Vec::new();
+    let mut loops: Vec<(String, std::borrow::Cow<[f64]>)> = Vec::new();
     for (s, name) in ["left", "right"].into_iter().enumerate() {
         for (j, shear) in r.storey_shear_n[s].iter().enumerate() {
-            loops.push((format!("drift_{name}_{}_m", j + 1), r.storey_drift_m(s, j)));
-            loops.push((format!("shear_{name}_{}_n", j + 1), shear.clone()));
+            let drift = r.storey_drift_m(s, j).into();
+            loops.push((format!("drift_{name}_{}_m", j + 1), drift));
+            loops.push((format!("shear_{name}_{}_n", j + 1), shear.as_slice().into()));
         }
     }
     write!(

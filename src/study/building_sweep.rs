@@ -2,7 +2,7 @@
 //! the ductility demand and the energy the storeys dissipated against it. The command line's
 //! `pounding sweep --buildings` and the window's Parameter study run this.
 
-use super::sweep::{SweepError, check_range};
+use super::sweep::{SweepError, check_range, each_value};
 use super::{Cancelled, Control, par_map};
 use crate::io::building_settings::BuildingSetup;
 use crate::model::building::solve_summary;
@@ -61,20 +61,10 @@ pub fn setups(
     param: &str,
     values: &[f64],
 ) -> Result<Vec<BuildingSetup>, SweepError> {
-    values
-        .iter()
-        .map(|v| {
-            let mut s = base.clone();
-            s.apply_assignment(&format!("{param}={v}"))
-                .and_then(|()| s.scenario.validate())
-                .map(|()| s)
-                .map_err(|source| SweepError::Value {
-                    param: param.to_string(),
-                    value: *v,
-                    source,
-                })
-        })
-        .collect()
+    each_value(base, param, values, |s, assignment| {
+        s.apply_assignment(assignment)
+            .and_then(|()| s.scenario.validate())
+    })
 }
 
 /// Every point solved in parallel (each its own record, read or generated once per point: a

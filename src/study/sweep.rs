@@ -126,12 +126,25 @@ pub fn setups(
     param: &str,
     values: &[f64],
 ) -> Result<Vec<ImpactSetup>, SweepError> {
+    each_value(base, param, values, |s, assignment| {
+        s.apply_assignment(assignment)
+            .and_then(|()| s.scenario.validate())
+    })
+}
+
+/// `base` with `param` set to each value by `apply` (which also validates the result); the
+/// first value refused names itself.
+pub(super) fn each_value<S: Clone>(
+    base: &S,
+    param: &str,
+    values: &[f64],
+    apply: impl Fn(&mut S, &str) -> Result<(), InputError>,
+) -> Result<Vec<S>, SweepError> {
     values
         .iter()
         .map(|v| {
-            let mut s = *base;
-            s.apply_assignment(&format!("{param}={v}"))
-                .and_then(|()| s.scenario.validate())
+            let mut s = base.clone();
+            apply(&mut s, &format!("{param}={v}"))
                 .map(|()| s)
                 .map_err(|source| SweepError::Value {
                     param: param.to_string(),

@@ -152,15 +152,17 @@ impl Building {
     }
     /// Every storey's spring law, bottom first.
     pub fn storey_laws(&self) -> Vec<StoreyLaw> {
-        (0..self.storeys)
-            .map(|j| StoreyLaw {
-                kind: self.hysteresis,
-                stiffness_n_m: self.stiffness(j),
-                yield_force_n: self.yield_force(j),
-                hardening: self.hardening,
-                bouc_wen_n: self.bouc_wen_n,
-            })
-            .collect()
+        (0..self.storeys).map(|j| self.storey_law(j)).collect()
+    }
+    /// Storey j's law (lowest 0).
+    pub fn storey_law(&self, j: usize) -> StoreyLaw {
+        StoreyLaw {
+            kind: self.hysteresis,
+            stiffness_n_m: self.stiffness(j),
+            yield_force_n: self.yield_force(j),
+            hardening: self.hardening,
+            bouc_wen_n: self.bouc_wen_n,
+        }
     }
     /// Whether any storey yields (its law is not elastic).
     pub fn yields(&self) -> bool {

@@ -70,11 +70,7 @@ impl Stepper<'_> {
         self.newmark = false;
         // A whole number of fine steps reuses its integrals; another length (up to an event
         // inside a step) needs its own.
-        let steps = len / self.grid.h;
-        let whole = steps.round();
-        let j = ((steps - whole).abs() <= 1e-9 * steps.max(1.0))
-            .then_some(whole as usize)
-            .filter(|j| (1..=self.grid.per_free_step).contains(j));
+        let j = self.grid.whole_steps(len);
         for s in 0..2 {
             let side = &mut self.sides[s];
             if let Some(j) = j

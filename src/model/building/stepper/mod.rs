@@ -61,6 +61,19 @@ pub(super) struct Grid {
     pub yield_piece: usize,
 }
 
+impl Grid {
+    /// How many fine steps `len` is, where it is a whole number of them within a free step
+    /// (whose exact maps and integrals the run keeps); `None` for another length (up to an
+    /// event inside a step).
+    pub fn whole_steps(&self, len: f64) -> Option<usize> {
+        let steps = len / self.h;
+        let whole = steps.round();
+        ((steps - whole).abs() <= 1e-9 * steps.max(1.0))
+            .then_some(whole as usize)
+            .filter(|j| (1..=self.per_free_step).contains(j))
+    }
+}
+
 /// One building in modal coordinates, with its precomputed exact steps.
 struct Side {
     omega: Vec<f64>,

@@ -383,11 +383,8 @@ impl Stepper<'_> {
     /// The fine steps' exact maps for a piece of length `len`, when it is a whole number of
     /// them within a free step (the maps the run made once).
     fn grid_maps(&self, s: usize, len: f64) -> Option<&[Propagator]> {
-        let steps = len / self.grid.h;
-        let j = steps.round();
-        ((steps - j).abs() <= 1e-9 * steps.max(1.0) && j >= 1.0)
-            .then(|| self.sides[s].sub.get(j as usize - 1).map(Vec::as_slice))
-            .flatten()
+        let j = self.grid.whole_steps(len)?;
+        self.sides[s].sub.get(j - 1).map(Vec::as_slice)
     }
 
     /// Plans a free step of length `len` from now: each side's corrections at its end, by the
