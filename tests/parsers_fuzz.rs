@@ -4,6 +4,7 @@
 
 mod common;
 
+use pounding::io::bridge_settings::BridgeSetup;
 use pounding::io::building_settings::BuildingSetup;
 use pounding::io::motion::{Units, parse};
 use pounding::io::preset::{EMBEDDED, PresetError, apply_text, scene};
@@ -119,10 +120,10 @@ fn names_a_line(line: Option<usize>, text: &str) -> bool {
 }
 
 fn check_preset(original: &str, text: &str) -> Result<(), String> {
-    let outcome: Result<(), PresetError> = if scene(original) == "buildings" {
-        apply_text(&mut BuildingSetup::default(), text, "mutated.toml")
-    } else {
-        apply_text(&mut ImpactSetup::default(), text, "mutated.toml")
+    let outcome: Result<(), PresetError> = match scene(original).as_str() {
+        "buildings" => apply_text(&mut BuildingSetup::default(), text, "mutated.toml"),
+        "bridge" => apply_text(&mut BridgeSetup::default(), text, "mutated.toml"),
+        _ => apply_text(&mut ImpactSetup::default(), text, "mutated.toml"),
     };
     match outcome {
         Ok(()) => Ok(()),

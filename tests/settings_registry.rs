@@ -2,11 +2,14 @@
 //! tables has its entry, a value set through a key reads back through the same key, and a saved
 //! scene reads back to the same setup whichever key was changed.
 
+use pounding::io::bridge_settings::{BRIDGE, BridgeSetup};
 use pounding::io::building_settings::{BUILDINGS, BuildingSetup};
-use pounding::io::preset::{self, apply_text, buildings_to_toml, impact_to_toml};
+use pounding::io::preset::{self, apply_text, bridge_to_toml, buildings_to_toml, impact_to_toml};
 use pounding::io::registry::Registry;
 use pounding::io::settings::{IMPACT, ImpactSetup, SettingValue};
-use pounding::model::settings::{BUILDING_SETTINGS, IMPACT_SETTINGS, Kind, Setting};
+use pounding::model::settings::{
+    BRIDGE_SETTINGS, BUILDING_SETTINGS, IMPACT_SETTINGS, Kind, Setting,
+};
 
 fn sci(x: f64) -> String {
     format!("{x:e}")
@@ -52,9 +55,13 @@ fn every_row_of_each_table_has_one_entry_in_its_registry_in_the_same_order() {
     let buildings: Vec<&str> = BUILDINGS.settings().map(|s| s.key).collect();
     let table: Vec<&str> = BUILDING_SETTINGS.iter().map(|s| s.key).collect();
     assert_eq!(buildings, table);
+    let bridge: Vec<&str> = BRIDGE.settings().map(|s| s.key).collect();
+    let table: Vec<&str> = BRIDGE_SETTINGS.iter().map(|s| s.key).collect();
+    assert_eq!(bridge, table);
     for (registry, table) in [
         (IMPACT.settings().collect::<Vec<_>>(), IMPACT_SETTINGS),
         (BUILDINGS.settings().collect(), BUILDING_SETTINGS),
+        (BRIDGE.settings().collect(), BRIDGE_SETTINGS),
     ] {
         for (entry, row) in registry.iter().zip(table) {
             assert_eq!(
@@ -112,6 +119,28 @@ fn a_saved_building_scene_reads_back_identically_whichever_key_was_changed() {
 }
 
 #[test]
+fn a_saved_bridge_scene_reads_back_identically_whichever_key_was_changed() {
+    let ran = round_trips(&BRIDGE, bridge_to_toml);
+    assert!(ran > 60, "only {ran} round trips");
+}
+
+#[test]
+fn every_shipped_bridge_preset_reads_back_identically() {
+    let mut read = 0;
+    for (name, text) in preset::EMBEDDED {
+        if preset::scene(text) != "bridge" {
+            continue;
+        }
+        let setup: BridgeSetup = preset::load_for(name, "bridge").unwrap();
+        let mut back = BridgeSetup::default();
+        apply_text(&mut back, &bridge_to_toml(&setup), "saved").unwrap();
+        assert_eq!(back, setup, "{name}");
+        read += 1;
+    }
+    assert_eq!(read, 3);
+}
+
+#[test]
 fn every_shipped_building_preset_reads_back_identically() {
     for (name, text) in preset::EMBEDDED {
         if preset::scene(text) != "buildings" {
@@ -154,6 +183,7 @@ fn set_numbers_read_back<S: Default>(registry: &Registry<S>) {
 fn a_number_set_through_a_key_reads_back_through_it() {
     set_numbers_read_back(&IMPACT);
     set_numbers_read_back(&BUILDINGS);
+    set_numbers_read_back(&BRIDGE);
 }
 
 #[test]

@@ -148,6 +148,26 @@ pub struct BuildingErrorJson {
     pub estimate_time_s: f64,
 }
 
+impl MotionJson {
+    /// The record's name, size and intensity.
+    pub fn of(motion: &GroundMotion) -> Self {
+        let s = motion.stats();
+        MotionJson {
+            name: motion.name.clone(),
+            points: s.points,
+            dt_s: motion.dt_s,
+            duration_s: s.duration_s,
+            pga_m_s2: s.pga_m_s2,
+            pga_g: s.pga_m_s2 / G,
+            pgv_m_s: s.pgv_m_s,
+            arias_m_s: s.arias_m_s,
+            significant_duration_s: s.significant_duration_s,
+            predominant_period_s: s.predominant_period_s,
+            peak_spectral_accel_m_s2: s.peak_spectral_accel_m_s2,
+        }
+    }
+}
+
 fn level_json(setup: &BuildingSetup, l: &Level) -> LevelJson {
     let fraction = |a: &pounding::model::building::Attachment| match a {
         pounding::model::building::Attachment::Column { s, .. } => Some(*s),
@@ -180,24 +200,11 @@ impl BuildingReport {
         baseline: &BuildingResult,
         est: Option<&BuildingErrorEstimate>,
     ) -> Self {
-        let s = motion.stats();
         let sc = &setup.scenario;
         BuildingReport {
             preset: preset.to_string(),
             contact_model: r.contact.name(),
-            motion: MotionJson {
-                name: motion.name.clone(),
-                points: s.points,
-                dt_s: motion.dt_s,
-                duration_s: s.duration_s,
-                pga_m_s2: s.pga_m_s2,
-                pga_g: s.pga_m_s2 / G,
-                pgv_m_s: s.pgv_m_s,
-                arias_m_s: s.arias_m_s,
-                significant_duration_s: s.significant_duration_s,
-                predominant_period_s: s.predominant_period_s,
-                peak_spectral_accel_m_s2: s.peak_spectral_accel_m_s2,
-            },
+            motion: MotionJson::of(motion),
             storeys_left: sc.left.storeys,
             storeys_right: sc.right.storeys,
             periods_left_s: r.modes[0].periods_s(),
@@ -379,7 +386,7 @@ pub fn summary(
 }
 
 /// The record and the numbers that describe it.
-fn motion_line(motion: &GroundMotion) -> String {
+pub(super) fn motion_line(motion: &GroundMotion) -> String {
     let s = motion.stats();
     format!(
         "  motion: {} | {} points at {} s, {:.2} s | PGA {:.4} g at {:.2} s | PGV {:.3} m/s | Arias {:.3} m/s | 5-95% duration {:.2} s | 5% spectrum peaks at {:.2} s ({:.3} g)",

@@ -1,6 +1,8 @@
 //! The command-line front end: `pounding impact ...`.
 
 pub mod accuracy;
+pub mod bridge;
+pub mod bridge_report;
 pub mod building_report;
 pub mod building_sweep;
 pub mod buildings;
@@ -30,6 +32,10 @@ pub enum Command {
     Impact(impact::ImpactArgs),
     /// Two buildings under a ground motion, pounding (the paper's Section 4 when given nothing).
     Buildings(buildings::BuildingArgs),
+    /// A bridge's girders pounding at their joints under a ground motion, uniform or travelling
+    /// along the bridge: joint forces, openings against the seats, required gaps
+    /// (`bridge-3-span` when given nothing).
+    Bridge(bridge::BridgeArgs),
     /// Error against run time: every model on a ladder of steps (FE: meshes) against a much finer
     /// solve, with the observed order; a table, CSV and a work-precision plot.
     Accuracy(accuracy::AccuracyArgs),
@@ -124,6 +130,7 @@ fn dispatch(cli: Cli, out: &mut dyn std::io::Write) -> anyhow::Result<()> {
     match cli.command {
         Some(Command::Impact(args)) => impact::run(&args, out),
         Some(Command::Buildings(args)) => buildings::run(&args, out),
+        Some(Command::Bridge(args)) => bridge::run(&args, out),
         Some(Command::Accuracy(args)) => accuracy::run(&args, out),
         Some(Command::Sweep(args)) => sweep::run(&args, out),
         Some(Command::Study(args)) => study::run(&args, out),

@@ -3,7 +3,7 @@
 
 pub use super::motion::MotionSpec;
 
-use super::motion::Units;
+use super::motion_settings::{self, WithMotion};
 use super::registry::{Entry, Registry, Target, number, put, uniform, word};
 use super::settings::SettingValue;
 use crate::model::building::{
@@ -13,8 +13,7 @@ use crate::model::error::InputError;
 use crate::model::hysteresis::Hysteresis;
 use crate::model::settings::building as setting;
 
-/// The `motion.file` value that asks for the seeded synthetic record.
-pub const SYNTHETIC: &str = "synthetic";
+pub use super::motion_settings::SYNTHETIC;
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct BuildingSetup {
@@ -28,6 +27,15 @@ impl Default for BuildingSetup {
             scenario: BuildingScenario::paper(),
             motion: MotionSpec::default(),
         }
+    }
+}
+
+impl WithMotion for BuildingSetup {
+    fn motion(&self) -> &MotionSpec {
+        &self.motion
+    }
+    fn motion_mut(&mut self) -> &mut MotionSpec {
+        &mut self.motion
     }
 }
 
@@ -95,34 +103,6 @@ fn set_rayleigh_modes(
     s.building_mut(t.owner).damping = DampingModel::Rayleigh {
         modes: [m[0] as usize, m[1] as usize],
     };
-    Ok(())
-}
-
-/// A factor on the record: 0 would erase it.
-fn set_motion_scale(s: &mut BuildingSetup, t: &Target, v: &SettingValue) -> Result<(), InputError> {
-    let x = t.checked(v)?;
-    if x == 0.0 {
-        return Err(InputError::new(
-            t.key,
-            "0 is not allowed: a factor in [-100, 100] other than 0 (negative flips the record)",
-        ));
-    }
-    s.motion.scale = x;
-    Ok(())
-}
-
-fn set_motion_seed(s: &mut BuildingSetup, t: &Target, v: &SettingValue) -> Result<(), InputError> {
-    let x = t.checked(v)?;
-    if x.fract() != 0.0 || x < 0.0 {
-        return Err(InputError::new(
-            t.key,
-            format!(
-                "{} is not a whole number; the seed is a whole number >= 0",
-                crate::model::settings::shown(x)
-            ),
-        ));
-    }
-    s.motion.synthetic.seed = x as u64;
     Ok(())
 }
 
@@ -309,51 +289,14 @@ pub static BUILDINGS: Registry<BuildingSetup> = Registry {
             |s, _| number(s.scenario.merge_gap_s),
             |s, t, v| put(&mut s.scenario.merge_gap_s, t.number(v)),
         ),
-        E::new(
-            &setting::MOTION_FILE,
-            |s, _| word(s.motion.file.as_deref().unwrap_or(SYNTHETIC)),
-            |s, t, v| {
-                let name = t.text(v)?;
-                s.motion
-                    .set_source(name)
-                    .map_err(|e| InputError::new(t.key, e))
-            },
-        ),
-        E::new(
-            &setting::MOTION_UNITS,
-            |s, _| word(s.motion.units.name()),
-            |s, t, v| put(&mut s.motion.units, t.choice(v, Units::from_name)),
-        ),
-        E::new(
-            &setting::MOTION_SCALE,
-            |s, _| number(s.motion.scale),
-            set_motion_scale,
-        ),
-        E::new(
-            &setting::MOTION_DURATION,
-            |s, _| s.motion.duration_s.and_then(number),
-            |s, t, v| put(&mut s.motion.duration_s, t.checked(v).map(Some)),
-        ),
-        E::new(
-            &setting::MOTION_DT,
-            |s, _| s.motion.dt_s.and_then(number),
-            |s, t, v| put(&mut s.motion.dt_s, t.checked(v).map(Some)),
-        ),
-        E::new(
-            &setting::MOTION_PGA,
-            |s, _| number(s.motion.synthetic.pga_g),
-            |s, t, v| put(&mut s.motion.synthetic.pga_g, t.checked(v)),
-        ),
-        E::new(
-            &setting::MOTION_SEED,
-            |s, _| number(s.motion.synthetic.seed as f64),
-            set_motion_seed,
-        ),
-        E::new(
-            &setting::MOTION_LENGTH,
-            |s, _| number(s.motion.synthetic.duration_s),
-            |s, t, v| put(&mut s.motion.synthetic.duration_s, t.checked(v)),
-        ),
+        motion_settings::file_entry(),
+        motion_settings::units_entry(),
+        motion_settings::scale_entry(),
+        motion_settings::duration_entry(),
+        motion_settings::dt_entry(),
+        motion_settings::pga_entry(),
+        motion_settings::seed_entry(),
+        motion_settings::length_entry(),
         E::new(
             &setting::MOTION_SETTLE,
             |s, _| number(s.motion.settle_s),

@@ -19,6 +19,40 @@ pub fn write_impact_history(
     Ok(())
 }
 
+/// The bridge run's histories as CSV: time, then each joint's force and opening, each girder's
+/// and pier top's displacement relative to its ground.
+pub fn write_bridge_history(
+    out: &mut (impl Write + ?Sized),
+    r: &crate::model::bridge::BridgeResult,
+) -> std::io::Result<()> {
+    let mut columns: Vec<(String, &[f64])> = Vec::new();
+    for (j, f) in r.joint_force_n.iter().enumerate() {
+        columns.push((format!("force_joint_{j}_n"), f));
+    }
+    for (j, o) in r.joint_opening_m.iter().enumerate() {
+        columns.push((format!("opening_joint_{j}_m"), o));
+    }
+    for (i, u) in r.girder_displacement_m.iter().enumerate() {
+        columns.push((format!("u_girder_{}_m", i + 1), u));
+    }
+    for (i, u) in r.pier_displacement_m.iter().enumerate() {
+        columns.push((format!("u_pier_{}_m", i + 1), u));
+    }
+    write!(out, "time_s")?;
+    for (name, _) in &columns {
+        write!(out, ",{name}")?;
+    }
+    writeln!(out)?;
+    for (i, t) in r.time_s.iter().enumerate() {
+        write!(out, "{t:.9e}")?;
+        for (_, c) in &columns {
+            write!(out, ",{:.9e}", c[i])?;
+        }
+        writeln!(out)?;
+    }
+    Ok(())
+}
+
 /// Writes the building histories, one row per solver step.
 pub fn write_building_history(
     out: &mut (impl Write + ?Sized),

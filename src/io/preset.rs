@@ -46,6 +46,18 @@ pub const EMBEDDED: &[(&str, &str)] = &[
         "mdof-unequal",
         include_str!("../../assets/presets/mdof-unequal.toml"),
     ),
+    (
+        "bridge-3-span",
+        include_str!("../../assets/presets/bridge-3-span.toml"),
+    ),
+    (
+        "bridge-3-span-passage",
+        include_str!("../../assets/presets/bridge-3-span-passage.toml"),
+    ),
+    (
+        "bridge-3-span-unseating",
+        include_str!("../../assets/presets/bridge-3-span-unseating.toml"),
+    ),
 ];
 
 /// The default scene.
@@ -231,6 +243,16 @@ impl Configurable for super::building_settings::BuildingSetup {
     }
 }
 
+impl Configurable for super::bridge_settings::BridgeSetup {
+    fn apply_setting(
+        &mut self,
+        key: &str,
+        value: &SettingValue,
+    ) -> Result<(), crate::model::error::InputError> {
+        self.apply(key, value)
+    }
+}
+
 /// Loads a preset by name or path onto a fresh default setup.
 pub fn load<S: Configurable + Default>(name_or_path: &str) -> Result<S, PresetError> {
     let (text, source) = find(name_or_path)?;
@@ -304,6 +326,12 @@ pub fn load_for<S: Configurable + Default>(
 /// and what the window keeps between sessions.
 pub fn impact_to_toml(setup: &ImpactSetup) -> String {
     super::settings::IMPACT.to_toml(setup, "name = \"saved scene\"\nscene = \"impact\"\n")
+}
+
+/// The bridge scene written back as a preset.
+pub fn bridge_to_toml(setup: &super::bridge_settings::BridgeSetup) -> String {
+    super::bridge_settings::BRIDGE
+        .to_toml(setup, "name = \"saved bridge scene\"\nscene = \"bridge\"\n")
 }
 
 /// The building scene written back as a preset.

@@ -11,9 +11,11 @@ use super::error::InputError;
 use std::borrow::Cow;
 use std::fmt;
 
+pub mod bridge;
 pub mod building;
 pub mod impact;
 
+pub use bridge::BRIDGE_SETTINGS;
 pub use building::BUILDING_SETTINGS;
 pub use impact::{IMPACT_MAX_STEPS, IMPACT_SETTINGS};
 
@@ -229,7 +231,7 @@ impl Setting {
                 None => format!("{range}{unit}"),
             },
             Kind::List { range, .. } => {
-                format!("{range}{unit}; one value for every storey, or one each, by commas")
+                format!("{range}{unit}; one value for all, or one each, by commas")
             }
             Kind::Count { min, max } => format!("a whole number in [{min}, {max}]"),
             Kind::Choice(options) => options.join("|"),
@@ -474,7 +476,7 @@ mod tests {
 
     #[test]
     fn every_key_is_listed_once() {
-        for table in [IMPACT_SETTINGS, BUILDING_SETTINGS] {
+        for table in [IMPACT_SETTINGS, BUILDING_SETTINGS, BRIDGE_SETTINGS] {
             let mut keys: Vec<&str> = table.iter().map(|s| s.key).collect();
             keys.sort();
             let n = keys.len();

@@ -1,0 +1,223 @@
+//! A girder's elastic (wave) response to the forces at both its ends, for the Sears contact.
+//!
+//! The girder is a free-free bar carrying its frame's girder mass (rho~ = m / (A L)), so its
+//! rigid-body response is already the frame's. What a joint needs on top of the frame's girder
+//! displacement is the elastic part at each end: d'Alembert's response less the rigid-body one.
+//! A force F pushing into one end (the buildings' slab kernel, with the law read at the end):
+//!   at that end      e_own(t) = (1/Z) [Q(t) + r Q(t - T)] - B(t)/m,
+//!   at the far end   e_far(t) = (2/Z) r_h Q(t - T/2) - B(t)/m,
+//! with T = 2L/c, A(t) = int exp(-(t-s)/t_d) F(s) ds, Q(t) = A(t) + r Q(t - T),
+//! B(t) = int (t-s) exp(-(t-s)/t_d) F(s) ds, r = exp(-T/t_d), r_h = exp(-T/(2 t_d)) and
+//! t_d = T / (2 pi zeta) (zeta the damping of the girder's fundamental axial mode; with none,
+//! Q is the history sum Psi and B the double integral of F). The far end sees the first
+//! arrival after L/c and then every round trip; the own end sees the force at once and its
+//! echoes every round trip. The left end's force pushes +x and the right end's -x, so
+//!   w_left  = e_own[F_left] - e_far[F_right],   w_right = e_far[F_left] - e_own[F_right]:
+//! the waves from the two ends meet in the girder and each end feels both.
+//!
+//! Over a step the force is linear in time, and A and B are integrated exactly for it; a
+//! lag is read from the stored Q by a cubic through four samples (the step is at most a
+//! sixteenth of a round trip, so every lag reaches samples already known).
+
+use super::scenario::Girder;
+
+/// Q at the grid points, the newest a round trip and a few steps deep.
+#[derive(Debug, Clone)]
+struct Ring {
+    data: Vec<f64>,
+    mask: usize,
+    next: usize,
+}
+
+impl Ring {
+    fn new(reach: usize) -> Self {
+        let cap = (reach + 8).next_power_of_two();
+        Ring {
+            data: vec![0.0; cap],
+            mask: cap - 1,
+            next: 0,
+        }
+    }
+
+    fn push(&mut self, x: f64) {
+        self.data[self.next & self.mask] = x;
+        self.next += 1;
+    }
+
+    /// Sample `i` (zero before the first).
+    fn get(&self, i: isize) -> f64 {
+        if i < 0 {
+            0.0
+        } else {
+            self.data[i as usize & self.mask]
+        }
+    }
+}
+
+/// A look-up a fixed lag back from the newest step's end: the four samples from `back` steps
+/// before the sample pushed next, and their cubic Lagrange weights.
+#[derive(Debug, Clone, Copy)]
+struct Lag {
+    back: usize,
+    w: [f64; 4],
+}
+
+impl Lag {
+    /// Lag `lag_s` from t_{n+1} on a grid of `h`: t_{n+1} - lag = t_{i0 + f}, samples i0 - 1
+    /// to i0 + 2, where i0 = n + 1 - back.
+    fn new(lag_s: f64, h: f64) -> Self {
+        let steps = lag_s / h;
+        let whole = steps.ceil();
+        let f = whole - steps;
+        let back = whole as usize;
+        let w = [
+            -f * (f - 1.0) * (f - 2.0) / 6.0,
+            (f + 1.0) * (f - 1.0) * (f - 2.0) / 2.0,
+            -(f + 1.0) * f * (f - 2.0) / 2.0,
+            (f + 1.0) * f * (f - 1.0) / 6.0,
+        ];
+        Lag { back, w }
+    }
+
+    /// The value at the lag from the newest step's end (`next` is n + 1).
+    fn read(&self, ring: &Ring) -> f64 {
+        let i0 = ring.next as isize - self.back as isize;
+        self.w[0] * ring.get(i0 - 1)
+            + self.w[1] * ring.get(i0)
+            + self.w[2] * ring.get(i0 + 1)
+            + self.w[3] * ring.get(i0 + 2)
+    }
+}
+
+/// One end's force history: A and B now, Q on the grid.
+#[derive(Debug, Clone)]
+struct End {
+    a: f64,
+    b: f64,
+    q: Ring,
+    /// What the step being taken knows without its new force.
+    a_star: f64,
+    b_star: f64,
+    q_lag: f64,
+}
+
+/// The waves of one girder.
+#[derive(Debug, Clone)]
+pub struct GirderWaves {
+    inv_z: f64,
+    inv_m: f64,
+    r: f64,
+    r_half: f64,
+    decay: f64,
+    /// Weights of F_n and F_{n+1} in A's update, and in B's.
+    wa: [f64; 2],
+    wb: [f64; 2],
+    h: f64,
+    round_trip: Lag,
+    half_trip: Lag,
+    ends: [End; 2],
+}
+
+/// The known parts of the two ends' elastic displacements at the step's end, before the new
+/// forces: w_left = left + (s - b) F_left + b F_right, w_right = right - b F_left - (s - b) F_right.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Predicted {
+    /// Known part at the left end [m].
+    pub left: f64,
+    /// Known part at the right end [m].
+    pub right: f64,
+}
+
+/// int_0^h u^k exp(-lam u) du for k = 0, 1, 2: by its series where lam h is small (the closed
+/// form cancels there), else in closed form.
+fn moments(lam: f64, h: f64) -> [f64; 3] {
+    let x = lam * h;
+    if x < 0.1 {
+        std::array::from_fn(|k| {
+            let mut term = 1.0;
+            let mut sum = 0.0;
+            for m in 0..14 {
+                sum += term / (k + m + 1) as f64;
+                term *= -x / (m + 1) as f64;
+            }
+            sum * h.powi(k as i32 + 1)
+        })
+    } else {
+        let e = (-x).exp();
+        [
+            (1.0 - e) / lam,
+            (1.0 - e * (1.0 + x)) / (lam * lam),
+            (2.0 - e * (2.0 + 2.0 * x + x * x)) / (lam * lam * lam),
+        ]
+    }
+}
+
+impl GirderWaves {
+    /// The waves of `girder` damped by `zeta`, stepped by `h` (at most a sixteenth of its round
+    /// trip).
+    pub fn new(girder: &Girder, zeta: f64, h: f64) -> Self {
+        let t = girder.round_trip_s();
+        let lam = 2.0 * std::f64::consts::PI * zeta / t;
+        let [i0, i1, i2] = moments(lam, h);
+        let round_trip = Lag::new(t, h);
+        let end = End {
+            a: 0.0,
+            b: 0.0,
+            q: Ring::new(round_trip.back + 4),
+            a_star: 0.0,
+            b_star: 0.0,
+            q_lag: 0.0,
+        };
+        GirderWaves {
+            inv_z: 1.0 / girder.impedance_n_s_m(),
+            inv_m: 1.0 / girder.mass_kg,
+            r: (-lam * t).exp(),
+            r_half: (-0.5 * lam * t).exp(),
+            decay: (-lam * h).exp(),
+            // A gains int_0^h e^(-lam u) F(h - u) du, F linear from F_n to F_{n+1}.
+            wa: [i1 / h, i0 - i1 / h],
+            wb: [i2 / h, i1 - i2 / h],
+            h,
+            round_trip,
+            half_trip: Lag::new(0.5 * t, h),
+            ends: [end.clone(), end],
+        }
+    }
+
+    /// The own end's instantaneous compliance s = (weight of F_{n+1} in A) / Z [m/N].
+    pub fn own_compliance(&self) -> f64 {
+        self.wa[1] * self.inv_z
+    }
+
+    /// The rigid-body part taken out, b = (weight of F_{n+1} in B) / m [m/N].
+    pub fn rigid_compliance(&self) -> f64 {
+        self.wb[1] * self.inv_m
+    }
+
+    /// The known parts at the next step's end, from the forces now (`forces[0]` at the left end).
+    pub fn predict(&mut self, forces: [f64; 2]) -> Predicted {
+        let mut own = [0.0; 2];
+        let mut far = [0.0; 2];
+        for (i, e) in self.ends.iter_mut().enumerate() {
+            e.a_star = self.decay * e.a + self.wa[0] * forces[i];
+            e.b_star = self.decay * (e.b + self.h * e.a) + self.wb[0] * forces[i];
+            e.q_lag = self.round_trip.read(&e.q);
+            let rigid = e.b_star * self.inv_m;
+            own[i] = self.inv_z * (e.a_star + 2.0 * self.r * e.q_lag) - rigid;
+            far[i] = 2.0 * self.inv_z * self.r_half * self.half_trip.read(&e.q) - rigid;
+        }
+        Predicted {
+            left: own[0] - far[1],
+            right: far[0] - own[1],
+        }
+    }
+
+    /// Takes the step with its new end forces.
+    pub fn commit(&mut self, forces: [f64; 2]) {
+        for (i, e) in self.ends.iter_mut().enumerate() {
+            e.a = e.a_star + self.wa[1] * forces[i];
+            e.b = e.b_star + self.wb[1] * forces[i];
+            e.q.push(e.a + self.r * e.q_lag);
+        }
+    }
+}

@@ -1,0 +1,79 @@
+//! The ground under a bridge: one record with its linear baseline removed (see
+//! `motion::baseline`), reaching each support when the travelling wave gets there. Its
+//! acceleration is linear between samples, so its velocity and displacement are exact cubics
+//! between them; before the wave arrives and after the record has passed the ground is at rest
+//! (the correction makes the end velocity and displacement zero).
+
+use crate::model::motion::GroundMotion;
+use crate::model::motion::baseline::Baseline;
+
+/// The corrected record, with its exact velocity and displacement at every sample.
+#[derive(Debug, Clone)]
+pub struct Ground {
+    /// The record less its baseline.
+    pub corrected: GroundMotion,
+    /// The baseline removed.
+    pub baseline: Baseline,
+    velocity: Vec<f64>,
+    displacement: Vec<f64>,
+}
+
+/// Acceleration, velocity and displacement of the ground at one support and instant.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct GroundState {
+    /// [m/s^2]
+    pub accel: f64,
+    /// [m/s]
+    pub velocity: f64,
+    /// [m]
+    pub displacement: f64,
+}
+
+impl Ground {
+    /// The ground of `motion`, baseline corrected.
+    pub fn new(motion: &GroundMotion) -> Self {
+        let (corrected, baseline) = motion.baseline_corrected();
+        let (velocity, displacement) = corrected.integrated().unzip();
+        Ground {
+            corrected,
+            baseline,
+            velocity,
+            displacement,
+        }
+    }
+
+    /// The record's length [s].
+    pub fn duration_s(&self) -> f64 {
+        self.corrected.duration_s()
+    }
+
+    /// The ground at a support the motion reaches `delay_s` late, at time `t_s`.
+    pub fn at(&self, t_s: f64, delay_s: f64) -> GroundState {
+        let a = &self.corrected.accel_m_s2;
+        let t = t_s - delay_s;
+        if t <= 0.0 || a.len() < 2 {
+            return GroundState::default();
+        }
+        let h = self.corrected.dt_s;
+        let p = t / h;
+        let i = p as usize;
+        if i + 1 >= a.len() {
+            let last = a.len() - 1;
+            return GroundState {
+                accel: if p == last as f64 { a[last] } else { 0.0 },
+                velocity: self.velocity[last],
+                displacement: self.displacement[last],
+            };
+        }
+        let s = t - i as f64 * h;
+        let slope = (a[i + 1] - a[i]) / h;
+        GroundState {
+            accel: a[i] + slope * s,
+            velocity: self.velocity[i] + a[i] * s + 0.5 * slope * s * s,
+            displacement: self.displacement[i]
+                + self.velocity[i] * s
+                + 0.5 * a[i] * s * s
+                + slope * s * s * s / 6.0,
+        }
+    }
+}

@@ -1,0 +1,798 @@
+//! The bridge run: every frame's two modes propagated exactly over each step (forcing linear in
+//! time: its ground's acceleration and the joint forces on its girder), the joint forces at the
+//! step's end solved together, the girders' waves (Sears) stepped with them.
+//!
+//! At the step's end each girder end's displacement is a known part plus the new joint forces
+//! times the step's compliances: the frame's (the girder row of its modal step) and, under
+//! Sears, the end's own wave compliance. A joint's overlap is thus
+//!   delta_j = K_j - S_j F_j + p_(j-1) F_(j-1) + p_j F_(j+1),
+//! each joint's element law closing it: a scalar implicit equation per joint (the elements'
+//! `solve_step`), swept joint by joint until the forces agree (the coupling p / S is of the
+//! order of h^2 k / m, tiny where the step resolves the contact).
+
+use super::girder::GirderWaves;
+use super::ground::Ground;
+use super::result::{BridgeEnergy, BridgeResult, BridgeStats, Unseating};
+use super::scenario::{BridgeScenario, Joint, Member};
+use crate::model::building::ContactModel;
+use crate::model::building::elements::Element;
+use crate::model::building::modal::{Propagator, propagator};
+use crate::model::building::result::{RawContact, group_impacts};
+use crate::model::control::Control;
+use crate::model::error::SolveError;
+use crate::model::motion::GroundMotion;
+
+/// Samples a history keeps at most (the step is strided to it).
+const MAX_SAMPLES: usize = 20_000;
+/// Sweeps over the joints before the forces are taken as they are.
+const MAX_SWEEPS: usize = 100;
+
+/// One frame: its modes and state, relative to its own ground.
+#[derive(Debug, Clone)]
+struct Frame {
+    omega: [f64; 2],
+    zeta: [f64; 2],
+    /// Mode shapes at the pier top and at the girder.
+    pier: [f64; 2],
+    girder: [f64; 2],
+    gamma: [f64; 2],
+    step: [Propagator; 2],
+    q: [f64; 2],
+    v: [f64; 2],
+    /// The modal forcing now.
+    g: [f64; 2],
+    delay_s: f64,
+    /// The girder's compliance to its net joint force over a step [m/N].
+    compliance: f64,
+    /// The girder's inverse effective mass, sum of phi^2 [1/kg].
+    inverse_mass: f64,
+    /// The girder's displacement at the step's end without the new joint forces.
+    u_star: f64,
+    a_next: f64,
+}
+
+impl Frame {
+    fn new(sc: &BridgeScenario, i: usize, h: f64) -> Self {
+        let modes = sc.frame_modes(i);
+        let m = sc.frame_masses(i);
+        let two = |f: &dyn Fn(usize) -> f64| [f(0), f(1)];
+        let omega = two(&|k| modes.omega_rad_s[k]);
+        let zeta = two(&|k| modes.damping[k]);
+        let step = [
+            propagator(omega[0], zeta[0], h),
+            propagator(omega[1], zeta[1], h),
+        ];
+        let girder = two(&|k| modes.shapes[k][1]);
+        let compliance = (0..2)
+            .map(|k| girder[k] * girder[k] * step[k].q[3] / h)
+            .sum();
+        let v0 = sc.initial_velocity(i);
+        // An initial velocity of the girder alone: q' = Phi^T M v.
+        let v = two(&|k| modes.shapes[k][1] * m[1] * v0);
+        Frame {
+            omega,
+            zeta,
+            pier: two(&|k| modes.shapes[k][0]),
+            girder,
+            gamma: two(&|k| modes.participation[k]),
+            step,
+            q: [0.0; 2],
+            v,
+            g: [0.0; 2],
+            delay_s: sc.delay_s(sc.frame_position_m(i)),
+            compliance,
+            inverse_mass: girder[0] * girder[0] + girder[1] * girder[1],
+            u_star: 0.0,
+            a_next: 0.0,
+        }
+    }
+
+    fn girder_u(&self) -> f64 {
+        self.girder[0] * self.q[0] + self.girder[1] * self.q[1]
+    }
+    fn girder_v(&self) -> f64 {
+        self.girder[0] * self.v[0] + self.girder[1] * self.v[1]
+    }
+    fn pier_u(&self) -> f64 {
+        self.pier[0] * self.q[0] + self.pier[1] * self.q[1]
+    }
+    fn energy(&self) -> f64 {
+        (0..2)
+            .map(|k| 0.5 * (self.v[k] * self.v[k] + (self.omega[k] * self.q[k]).powi(2)))
+            .sum()
+    }
+    /// The power its damping takes, and the power its ground puts in.
+    fn powers(&self, accel: f64) -> (f64, f64) {
+        let mut damping = 0.0;
+        let mut input = 0.0;
+        for k in 0..2 {
+            damping += 2.0 * self.zeta[k] * self.omega[k] * self.v[k] * self.v[k];
+            input -= accel * self.gamma[k] * self.v[k];
+        }
+        (damping, input)
+    }
+
+    /// The girder's displacement at the step's end before the joint forces.
+    fn predict(&mut self, accel_next: f64, h: f64) {
+        self.a_next = accel_next;
+        let mut u = 0.0;
+        for k in 0..2 {
+            let g1 = -self.gamma[k] * accel_next;
+            let y = [self.q[k], self.v[k], self.g[k], (g1 - self.g[k]) / h];
+            u += self.girder[k] * self.step[k].apply(&y).0;
+        }
+        self.u_star = u;
+    }
+
+    /// Takes the step with the net joint force on the girder at its end.
+    fn commit(&mut self, net_force: f64, h: f64) {
+        for k in 0..2 {
+            let g1 = self.girder[k] * net_force - self.gamma[k] * self.a_next;
+            let y = [self.q[k], self.v[k], self.g[k], (g1 - self.g[k]) / h];
+            let (q, v) = self.step[k].apply(&y);
+            self.q[k] = q;
+            self.v[k] = v;
+            self.g[k] = g1;
+        }
+    }
+
+    /// A velocity jump of the girder by an impulse on it.
+    fn kick(&mut self, impulse: f64) {
+        for k in 0..2 {
+            self.v[k] += self.girder[k] * impulse;
+        }
+    }
+}
+
+/// One joint's state.
+#[derive(Debug, Clone)]
+struct JointState {
+    joint: Joint,
+    element: Element,
+    force: f64,
+    delta: f64,
+    rate: f64,
+    v0: f64,
+    /// The contact now open: its index in the list.
+    open: Option<usize>,
+    max_force: f64,
+    max_closing: f64,
+    max_opening: f64,
+    unseated: Option<f64>,
+    /// Integrals for the ledger: F d(delta), F d(ground difference).
+    work_delta: f64,
+    work_ground: f64,
+    /// Known part and coefficients of the overlap at the step's end.
+    k_star: f64,
+    s: f64,
+}
+
+/// A member's end, as a joint sees it: (absolute displacement, rigid velocity).
+fn end_state(
+    member: Member,
+    right_end: bool,
+    frames: &[Frame],
+    waves: &[[f64; 2]],
+    ground: &Ground,
+    t: f64,
+    delay_abutment: [f64; 2],
+) -> (f64, f64) {
+    match member {
+        Member::Abutment => {
+            let g = ground.at(t, delay_abutment[usize::from(!right_end)]);
+            (g.displacement, g.velocity)
+        }
+        Member::Girder(i) => {
+            let f = &frames[i];
+            let g = ground.at(t, f.delay_s);
+            (
+                g.displacement + f.girder_u() + waves[i][usize::from(right_end)],
+                g.velocity + f.girder_v(),
+            )
+        }
+    }
+}
+
+/// The run.
+struct Run<'a> {
+    sc: &'a BridgeScenario,
+    ground: Ground,
+    h: f64,
+    frames: Vec<Frame>,
+    girders: Vec<Option<GirderWaves>>,
+    /// Each girder's elastic displacement at its ends now.
+    waves: Vec<[f64; 2]>,
+    joints: Vec<JointState>,
+    abutment_delay: [f64; 2],
+    /// The girders' end waves known before the step's new forces.
+    predicted: Vec<[f64; 2]>,
+    contacts: Vec<RawContact>,
+    energy: BridgeEnergy,
+    contact_steps: usize,
+}
+
+impl<'a> Run<'a> {
+    fn new(sc: &'a BridgeScenario, motion: &GroundMotion, h: f64) -> Self {
+        let frames: Vec<Frame> = (0..sc.spans).map(|i| Frame::new(sc, i, h)).collect();
+        let girders = (0..sc.spans)
+            .map(|i| {
+                (sc.contact == ContactModel::Sears)
+                    .then(|| GirderWaves::new(&sc.girder(i), sc.girder_damping, h))
+            })
+            .collect();
+        let joints = sc
+            .joints()
+            .into_iter()
+            .map(|joint| JointState {
+                element: Element::new(
+                    sc.contact,
+                    sc.joint_stiffness(&joint),
+                    sc.restitution,
+                    sc.joint_effective_mass(&joint),
+                ),
+                joint,
+                force: 0.0,
+                delta: -joint.gap_m,
+                rate: 0.0,
+                v0: 0.0,
+                open: None,
+                max_force: 0.0,
+                max_closing: f64::NEG_INFINITY,
+                max_opening: f64::NEG_INFINITY,
+                unseated: None,
+                work_delta: 0.0,
+                work_ground: 0.0,
+                k_star: 0.0,
+                s: 0.0,
+            })
+            .collect();
+        let energy = BridgeEnergy {
+            initial_j: frames.iter().map(Frame::energy).sum(),
+            ..Default::default()
+        };
+        let mut run = Run {
+            sc,
+            ground: Ground::new(motion),
+            h,
+            frames,
+            girders,
+            waves: vec![[0.0; 2]; sc.spans],
+            joints,
+            abutment_delay: [0.0, sc.delay_s(sc.length_m())],
+            predicted: vec![[0.0; 2]; sc.spans],
+            contacts: Vec::new(),
+            energy,
+            contact_steps: 0,
+        };
+        run.read_joints(0.0);
+        run
+    }
+
+    /// Closing (left member minus right member, absolute) and rigid closing rate of joint j.
+    fn closing(&self, j: usize, t: f64) -> (f64, f64) {
+        let joint = &self.joints[j].joint;
+        let (xl, vl) = end_state(
+            joint.left,
+            true,
+            &self.frames,
+            &self.waves,
+            &self.ground,
+            t,
+            self.abutment_delay,
+        );
+        let (xr, vr) = end_state(
+            joint.right,
+            false,
+            &self.frames,
+            &self.waves,
+            &self.ground,
+            t,
+            self.abutment_delay,
+        );
+        (xl - xr, vl - vr)
+    }
+
+    /// Ground displacement difference across joint j (left member's support minus right's).
+    fn ground_difference(&self, j: usize, t: f64) -> f64 {
+        let joint = &self.joints[j].joint;
+        let at = |m: Member, right_end: bool| match m {
+            Member::Abutment => {
+                self.ground
+                    .at(t, self.abutment_delay[usize::from(!right_end)])
+                    .displacement
+            }
+            Member::Girder(i) => self.ground.at(t, self.frames[i].delay_s).displacement,
+        };
+        at(joint.left, true) - at(joint.right, false)
+    }
+
+    /// The joints' overlaps, rates, openings and seats at time t.
+    fn read_joints(&mut self, t: f64) {
+        for j in 0..self.joints.len() {
+            let (closing, rate) = self.closing(j, t);
+            let seat = self.sc.seat_length_m;
+            let js = &mut self.joints[j];
+            js.delta = closing - js.joint.gap_m;
+            js.rate = rate;
+            js.max_closing = js.max_closing.max(closing);
+            js.max_opening = js.max_opening.max(-closing);
+            if js.unseated.is_none() && -closing > seat {
+                js.unseated = Some(t);
+            }
+        }
+    }
+
+    /// The known parts of every joint's overlap at the step's end, and their compliances.
+    fn predict(&mut self, t1: f64) {
+        let h = self.h;
+        for i in 0..self.frames.len() {
+            let a = self.ground.at(t1, self.frames[i].delay_s).accel;
+            self.frames[i].predict(a, h);
+        }
+        for (i, g) in self.girders.iter_mut().enumerate() {
+            if let Some(g) = g {
+                let forces = [self.joints[i].force, self.joints[i + 1].force];
+                let p = g.predict(forces);
+                self.predicted[i] = [p.left, p.right];
+            }
+        }
+        for j in 0..self.joints.len() {
+            let joint = self.joints[j].joint;
+            let mut k = -joint.gap_m;
+            let mut s = 0.0;
+            for (member, right_end, sign) in [(joint.left, true, 1.0), (joint.right, false, -1.0)] {
+                match member {
+                    Member::Abutment => {
+                        let d = self.abutment_delay[usize::from(!right_end)];
+                        k += sign * self.ground.at(t1, d).displacement;
+                    }
+                    Member::Girder(i) => {
+                        let f = &self.frames[i];
+                        k += sign
+                            * (self.ground.at(t1, f.delay_s).displacement
+                                + f.u_star
+                                + self.predicted[i][usize::from(right_end)]);
+                        s += f.compliance + self.own_wave_compliance(i);
+                        s -= self.rigid_wave_compliance(i);
+                    }
+                }
+            }
+            self.joints[j].k_star = k;
+            self.joints[j].s = s;
+        }
+    }
+
+    fn own_wave_compliance(&self, i: usize) -> f64 {
+        self.girders[i].as_ref().map_or(0.0, |g| g.own_compliance())
+    }
+
+    fn rigid_wave_compliance(&self, i: usize) -> f64 {
+        self.girders[i]
+            .as_ref()
+            .map_or(0.0, |g| g.rigid_compliance())
+    }
+
+    /// The coupling p of girder i: how its far joint's force moves this joint's overlap.
+    fn coupling(&self, i: usize) -> f64 {
+        self.frames[i].compliance - self.rigid_wave_compliance(i)
+    }
+
+    /// Every joint's force at the step's end, swept joint by joint until they agree.
+    fn solve_forces(&self) -> Vec<(f64, f64)> {
+        let n = self.joints.len();
+        let mut out: Vec<(f64, f64)> = self.joints.iter().map(|js| (js.k_star, 0.0)).collect();
+        let h = self.h;
+        for _ in 0..MAX_SWEEPS {
+            let mut change: f64 = 0.0;
+            let mut largest: f64 = 0.0;
+            for j in 0..n {
+                let js = &self.joints[j];
+                let mut rhs = js.k_star;
+                if j > 0 {
+                    rhs += self.coupling(j - 1) * out[j - 1].1;
+                }
+                if j + 1 < n {
+                    rhs += self.coupling(j) * out[j + 1].1;
+                }
+                let e = &js.element;
+                let v0 = if js.open.is_some() { js.v0 } else { js.rate };
+                let delta = e.solve_step(js.s, rhs, h, js.delta, js.rate, v0);
+                let rate = e.rate(h, delta, js.delta, js.rate);
+                let force = e.force(delta, rate, v0);
+                change = change.max((force - out[j].1).abs());
+                largest = largest.max(force);
+                out[j] = (delta, force);
+            }
+            if change <= 1e-12 * largest {
+                break;
+            }
+        }
+        out
+    }
+}
+
+/// What one step's bookkeeping needs from before it.
+struct Before {
+    forces: Vec<f64>,
+    deltas: Vec<f64>,
+    rates: Vec<f64>,
+    grounds: Vec<f64>,
+    waves: Vec<[f64; 2]>,
+    damping_power: f64,
+    input_power: f64,
+}
+
+impl Run<'_> {
+    fn powers(&self, t: f64) -> (f64, f64) {
+        self.frames.iter().fold((0.0, 0.0), |(d, i), f| {
+            let (pd, pi) = f.powers(self.ground.at(t, f.delay_s).accel);
+            (d + pd, i + pi)
+        })
+    }
+
+    fn before(&self, t0: f64) -> Before {
+        let (damping_power, input_power) = self.powers(t0);
+        Before {
+            forces: self.joints.iter().map(|j| j.force).collect(),
+            deltas: self.joints.iter().map(|j| j.delta).collect(),
+            rates: self.joints.iter().map(|j| j.rate).collect(),
+            grounds: (0..self.joints.len())
+                .map(|j| self.ground_difference(j, t0))
+                .collect(),
+            waves: self.waves.clone(),
+            damping_power,
+            input_power,
+        }
+    }
+
+    /// One step from t0 = n h.
+    fn step(&mut self, n: usize) {
+        let h = self.h;
+        let (t0, t1) = (n as f64 * h, (n + 1) as f64 * h);
+        let before = self.before(t0);
+        let forces: Vec<f64> =
+            if matches!(self.sc.contact, ContactModel::None | ContactModel::Stereo) {
+                vec![0.0; self.joints.len()]
+            } else {
+                self.predict(t1);
+                self.solve_forces().into_iter().map(|(_, f)| f).collect()
+            };
+        if matches!(self.sc.contact, ContactModel::None | ContactModel::Stereo) {
+            for i in 0..self.frames.len() {
+                let a = self.ground.at(t1, self.frames[i].delay_s).accel;
+                self.frames[i].predict(a, h);
+            }
+        }
+        for i in 0..self.frames.len() {
+            self.frames[i].commit(forces[i] - forces[i + 1], h);
+            if let Some(g) = self.girders[i].as_mut() {
+                let (fl, fr) = (forces[i], forces[i + 1]);
+                g.commit([fl, fr]);
+                let (s, b) = (g.own_compliance(), g.rigid_compliance());
+                let p = self.predicted[i];
+                self.waves[i] = [p[0] + (s - b) * fl + b * fr, p[1] - b * fl - (s - b) * fr];
+            }
+        }
+        for (js, f) in self.joints.iter_mut().zip(&forces) {
+            js.force = *f;
+        }
+        self.read_joints(t1);
+        if self.sc.contact == ContactModel::Stereo {
+            self.exchange(t1);
+        }
+        self.account(&before, t0, t1);
+    }
+
+    /// Stereomechanics: every joint still approaching while overlapped reverses its rigid
+    /// closing rate with restitution e, at once (neighbours in turn, until none approaches).
+    fn exchange(&mut self, t: f64) {
+        for _ in 0..50 {
+            let mut any = false;
+            for j in 0..self.joints.len() {
+                let (delta, rate) = (self.joints[j].delta, self.joints[j].rate);
+                if delta <= 0.0 || rate <= 0.0 {
+                    continue;
+                }
+                any = true;
+                let joint = self.joints[j].joint;
+                let inverse = |m: Member| match m {
+                    Member::Girder(i) => self.frames[i].inverse_mass,
+                    Member::Abutment => 0.0,
+                };
+                let w = inverse(joint.left) + inverse(joint.right);
+                let impulse = (1.0 + self.sc.restitution) * rate / w;
+                let energy: f64 = self.frames.iter().map(Frame::energy).sum();
+                if let Member::Girder(i) = joint.left {
+                    self.frames[i].kick(-impulse);
+                }
+                if let Member::Girder(i) = joint.right {
+                    self.frames[i].kick(impulse);
+                }
+                self.energy.contact_j +=
+                    energy - self.frames.iter().map(Frame::energy).sum::<f64>();
+                self.contacts.push(RawContact {
+                    level: j,
+                    start_s: t,
+                    end_s: t,
+                    peak_force_n: 0.0,
+                    impulse_ns: impulse,
+                    approach_velocity_m_s: rate,
+                });
+                for k in 0..self.joints.len() {
+                    let (_, r) = self.closing(k, t);
+                    self.joints[k].rate = r;
+                }
+            }
+            if !any {
+                break;
+            }
+        }
+    }
+
+    /// The ledger's integrals and the contacts over the step just taken.
+    fn account(&mut self, before: &Before, t0: f64, t1: f64) {
+        let h = self.h;
+        let (damping_power, input_power) = self.powers(t1);
+        self.energy.damping_j += 0.5 * h * (before.damping_power + damping_power);
+        self.energy.input_j += 0.5 * h * (before.input_power + input_power);
+        for i in 0..self.waves.len() {
+            let (fl, fr) = (
+                0.5 * (before.forces[i] + self.joints[i].force),
+                0.5 * (before.forces[i + 1] + self.joints[i + 1].force),
+            );
+            self.energy.girder_waves_j += fl * (self.waves[i][0] - before.waves[i][0])
+                - fr * (self.waves[i][1] - before.waves[i][1]);
+        }
+        let mut in_contact = false;
+        for j in 0..self.joints.len() {
+            let ground = self.ground_difference(j, t1);
+            let js = &mut self.joints[j];
+            let (f0, f1) = (before.forces[j], js.force);
+            let (d0, d1) = (before.deltas[j], js.delta);
+            js.work_delta += 0.5 * (f0 + f1) * (d1 - d0);
+            js.work_ground += 0.5 * (f0 + f1) * (ground - before.grounds[j]);
+            js.max_force = js.max_force.max(f1);
+            in_contact |= f1 > 0.0;
+            if f0 <= 0.0 && f1 > 0.0 {
+                let start = if d0 < 0.0 && d1 > 0.0 {
+                    t0 + h * (-d0) / (d1 - d0)
+                } else {
+                    t0
+                };
+                js.v0 = before.rates[j];
+                js.open = Some(self.contacts.len());
+                self.contacts.push(RawContact {
+                    level: j,
+                    start_s: start,
+                    end_s: t1,
+                    peak_force_n: 0.0,
+                    impulse_ns: 0.0,
+                    approach_velocity_m_s: js.v0,
+                });
+            }
+            if let Some(c) = js.open {
+                let c = &mut self.contacts[c];
+                c.peak_force_n = c.peak_force_n.max(f1);
+                c.impulse_ns += 0.5 * (f0 + f1) * h;
+                c.end_s = if f1 > 0.0 {
+                    t1
+                } else if d0 > 0.0 && d1 <= 0.0 {
+                    t0 + h * d0 / (d0 - d1)
+                } else {
+                    t1
+                };
+                if f1 <= 0.0 {
+                    js.open = None;
+                }
+            }
+        }
+        if in_contact {
+            self.contact_steps += 1;
+        }
+    }
+}
+
+/// The histories, kept every `stride` steps.
+#[derive(Default)]
+struct Histories {
+    time_s: Vec<f64>,
+    force: Vec<Vec<f64>>,
+    opening: Vec<Vec<f64>>,
+    girder: Vec<Vec<f64>>,
+    pier: Vec<Vec<f64>>,
+    absolute: Vec<Vec<f64>>,
+}
+
+impl Histories {
+    fn new(joints: usize, spans: usize) -> Self {
+        Histories {
+            force: vec![Vec::new(); joints],
+            opening: vec![Vec::new(); joints],
+            girder: vec![Vec::new(); spans],
+            pier: vec![Vec::new(); spans],
+            absolute: vec![Vec::new(); spans],
+            ..Default::default()
+        }
+    }
+
+    fn push(&mut self, run: &Run, t: f64) {
+        self.time_s.push(t);
+        for (j, js) in run.joints.iter().enumerate() {
+            self.force[j].push(js.force);
+            self.opening[j].push(-(js.delta + js.joint.gap_m));
+        }
+        for (i, f) in run.frames.iter().enumerate() {
+            self.girder[i].push(f.girder_u());
+            self.pier[i].push(f.pier_u());
+            self.absolute[i].push(f.girder_u() + run.ground.at(t, f.delay_s).displacement);
+        }
+    }
+}
+
+/// Peaks of each frame over the run.
+struct Peaks {
+    girder: Vec<f64>,
+    pier: Vec<f64>,
+    bearing: Vec<f64>,
+}
+
+impl Peaks {
+    fn read(&mut self, frames: &[Frame]) {
+        for (i, f) in frames.iter().enumerate() {
+            let (g, p) = (f.girder_u(), f.pier_u());
+            self.girder[i] = self.girder[i].max(g.abs());
+            self.pier[i] = self.pier[i].max(p.abs());
+            self.bearing[i] = self.bearing[i].max((g - p).abs());
+        }
+    }
+}
+
+/// The step of a run of `sc` on a record sampled at `dt`: the target step, shortened to a
+/// whole fraction of the record's step so that uniformly excited frames meet every sample.
+pub fn step_s(sc: &BridgeScenario, dt: f64) -> f64 {
+    let target = sc.target_step_s();
+    if dt.is_nan() || dt <= 0.0 {
+        return target;
+    }
+    dt / (dt / target).ceil().max(1.0)
+}
+
+/// Solves the bridge under `motion`.
+pub fn solve(sc: &BridgeScenario, motion: &GroundMotion) -> Result<BridgeResult, SolveError> {
+    solve_with(sc, motion, Control::never())
+}
+
+/// [`solve`], reporting its progress to `control` and stopping when it is cancelled.
+pub fn solve_with(
+    sc: &BridgeScenario,
+    motion: &GroundMotion,
+    control: &Control,
+) -> Result<BridgeResult, SolveError> {
+    sc.validate()?;
+    let start = std::time::Instant::now();
+    let h = step_s(sc, motion.dt_s);
+    let duration = motion.duration_s() + sc.delay_s(sc.length_m()).max(0.0);
+    let steps = (duration / h).ceil() as usize;
+    if steps > sc.max_steps {
+        return Err(SolveError::Budget {
+            max_steps: sc.max_steps,
+            dt_s: h,
+            reached_s: 0.0,
+        });
+    }
+    let mut run = Run::new(sc, motion, h);
+    let stride = steps.div_ceil(MAX_SAMPLES).max(1);
+    let mut hist = Histories::new(run.joints.len(), sc.spans);
+    let mut peaks = Peaks {
+        girder: vec![0.0; sc.spans],
+        pier: vec![0.0; sc.spans],
+        bearing: vec![0.0; sc.spans],
+    };
+    hist.push(&run, 0.0);
+    peaks.read(&run.frames);
+    for n in 0..steps {
+        if n % 4096 == 0 {
+            control.report(n as f64 / steps as f64)?;
+        }
+        run.step(n);
+        peaks.read(&run.frames);
+        if (n + 1) % stride == 0 || n + 1 == steps {
+            hist.push(&run, (n + 1) as f64 * h);
+        }
+        if !run
+            .frames
+            .iter()
+            .all(|f| f.q.iter().chain(&f.v).all(|x| x.is_finite()))
+        {
+            return Err(SolveError::Diverged {
+                at_s: (n + 1) as f64 * h,
+                why: "the frames' motion is no longer finite; lower solver.max_step or the contact stiffness".into(),
+            });
+        }
+    }
+    Ok(finish(run, hist, peaks, duration, steps, start))
+}
+
+fn finish(
+    mut run: Run,
+    hist: Histories,
+    peaks: Peaks,
+    duration: f64,
+    steps: usize,
+    start: std::time::Instant,
+) -> BridgeResult {
+    let sc = run.sc;
+    let mut energy = run.energy;
+    energy.final_j = run.frames.iter().map(Frame::energy).sum();
+    for js in &run.joints {
+        let stored = if js.force > 0.0 {
+            js.element.stored_energy(js.delta.max(0.0))
+        } else {
+            0.0
+        };
+        energy.stored_contact_j += stored;
+        energy.contact_j += js.work_delta - stored;
+        energy.differential_j += js.work_ground;
+    }
+    // Work on the frames by the joints = differential - waves - element work; the element
+    // work was counted as contact (less what is stored), the waves as girder waves.
+    let unseating: Vec<Unseating> = run
+        .joints
+        .iter()
+        .enumerate()
+        .filter_map(|(j, js)| {
+            js.unseated.map(|t| Unseating {
+                joint: j,
+                time_s: t,
+            })
+        })
+        .collect();
+    let mut warnings: Vec<String> = unseating
+        .iter()
+        .map(|u| {
+            format!(
+                "joint {} unseated at {:.3} s: it opened further than the seat length {} m",
+                u.joint, u.time_s, sc.seat_length_m
+            )
+        })
+        .collect();
+    if energy.balance_error().abs() > 1e-3 {
+        warnings.push(format!(
+            "the energy ledger misses {:.2e} of the input: refine solver.steps_per_scale",
+            energy.balance_error()
+        ));
+    }
+    let contacts = std::mem::take(&mut run.contacts);
+    let impacts = group_impacts(&contacts, sc.merge_gap_s);
+    let max_force_by_joint_n: Vec<f64> = run.joints.iter().map(|j| j.max_force).collect();
+    BridgeResult {
+        contact: sc.contact,
+        joints: run.joints.iter().map(|j| j.joint).collect(),
+        time_s: hist.time_s,
+        joint_force_n: hist.force,
+        joint_opening_m: hist.opening,
+        girder_displacement_m: hist.girder,
+        pier_displacement_m: hist.pier,
+        girder_absolute_m: hist.absolute,
+        contacts,
+        impacts,
+        max_pounding_force_n: max_force_by_joint_n.iter().copied().fold(0.0, f64::max),
+        max_force_by_joint_n,
+        max_closing_m: run.joints.iter().map(|j| j.max_closing).collect(),
+        max_opening_m: run.joints.iter().map(|j| j.max_opening).collect(),
+        unseating,
+        peak_girder_displacement_m: peaks.girder,
+        peak_pier_displacement_m: peaks.pier,
+        peak_bearing_displacement_m: peaks.bearing,
+        energy,
+        stats: BridgeStats {
+            steps,
+            contact_steps: run.contact_steps,
+            step_s: run.h,
+            steps_per_scale: sc.steps_per_scale(),
+            wall_time_s: start.elapsed().as_secs_f64(),
+        },
+        duration_s: duration,
+        warnings,
+    }
+}
