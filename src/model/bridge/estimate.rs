@@ -32,7 +32,12 @@ pub fn refined(sc: &BridgeScenario, factor: f64) -> BridgeScenario {
     BridgeScenario {
         steps_per_scale: Some(sc.steps_per_scale() * factor),
         max_step_s: sc.max_step_s / factor,
-        max_steps: sc.max_steps.saturating_mul(factor.ceil() as usize),
+        // The refined run needs the steps the run had room for, times the factor (within the
+        // budget's range).
+        max_steps: sc
+            .max_steps
+            .saturating_mul(factor.ceil() as usize)
+            .min(100_000_000),
         ..sc.clone()
     }
 }

@@ -76,4 +76,36 @@ impl Ground {
                 + slope * s * s * s / 6.0,
         }
     }
+
+    /// Where `t` (time since the wave arrived) lies against the record's ends, to within
+    /// round-off of a step: -1 at or before its start, 1 at or after its end, 0 inside.
+    fn side(&self, t: f64, at_start: bool, at_end: bool) -> Option<f64> {
+        let a = &self.corrected.accel_m_s2;
+        let eps = 1e-9 * self.corrected.dt_s;
+        let end = self.duration_s();
+        if a.is_empty() || t < -eps || t > end + eps {
+            return Some(0.0);
+        }
+        if t.abs() <= eps {
+            return Some(if at_start { a[0] } else { 0.0 });
+        }
+        if (t - end).abs() <= eps {
+            return Some(if at_end { a[a.len() - 1] } else { 0.0 });
+        }
+        None
+    }
+
+    /// The acceleration just after `t_s` (its right limit): the record's first sample at the
+    /// instant the wave arrives, zero at its end.
+    pub fn accel_after(&self, t_s: f64, delay_s: f64) -> f64 {
+        self.side(t_s - delay_s, true, false)
+            .unwrap_or_else(|| self.at(t_s, delay_s).accel)
+    }
+
+    /// The acceleration just before `t_s` (its left limit): zero at the instant the wave
+    /// arrives, the record's last sample at its end.
+    pub fn accel_before(&self, t_s: f64, delay_s: f64) -> f64 {
+        self.side(t_s - delay_s, false, true)
+            .unwrap_or_else(|| self.at(t_s, delay_s).accel)
+    }
 }

@@ -358,6 +358,9 @@ impl BridgeScenario {
     pub fn target_step_s(&self) -> f64 {
         let mut h = match self.contact_scale_s() {
             Some(scale) => (scale / self.steps_per_scale()).min(self.max_step_s),
+            // An exchange is placed at its located instant, but the motion around it is first
+            // order in the step: stereomechanics steps ten times finer than the free motion.
+            None if self.contact == ContactModel::Stereo => self.max_step_s / 10.0,
             None => self.max_step_s,
         };
         if self.contact == ContactModel::Sears {

@@ -16,7 +16,7 @@ use super::result::{BridgeEnergy, BridgeResult, BridgeStats, Unseating};
 use super::scenario::{BridgeScenario, Joint, Member};
 use crate::model::building::ContactModel;
 use crate::model::building::elements::Element;
-use crate::model::building::modal::{Propagator, propagator};
+use crate::model::building::modal::{Propagator, evaluate, propagator};
 use crate::model::building::result::{RawContact, group_impacts};
 use crate::model::control::Control;
 use crate::model::error::SolveError;
@@ -48,7 +48,24 @@ struct Frame {
     inverse_mass: f64,
     /// The girder's displacement at the step's end without the new joint forces.
     u_star: f64,
+    /// The ground acceleration the forcing `g` holds, and the one the step ends with.
+    a_now: f64,
     a_next: f64,
+    /// The net joint force `g` holds.
+    f_now: f64,
+    /// Where the ground's acceleration breaks inside the step being taken.
+    jump: Option<Jump>,
+}
+
+/// A break in the ground's acceleration inside a step: a record sample (a kink), or where the
+/// wave arrives (a jump from zero to the record's first sample) or the record ends (from its
+/// last sample back to zero).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Jump {
+    /// Time from the step's start [s].
+    at: f64,
+    before: f64,
+    after: f64,
 }
 
 impl Frame {
@@ -83,7 +100,10 @@ impl Frame {
             compliance,
             inverse_mass: girder[0] * girder[0] + girder[1] * girder[1],
             u_star: 0.0,
+            a_now: 0.0,
             a_next: 0.0,
+            f_now: 0.0,
+            jump: None,
         }
     }
 
@@ -112,34 +132,59 @@ impl Frame {
         (damping, input)
     }
 
-    /// The girder's displacement at the step's end before the joint forces.
-    fn predict(&mut self, accel_next: f64, h: f64) {
+    /// The girder's displacement at the step's end before the joint forces, the ground's
+    /// acceleration going from `accel` (its value just after the step's start) to `accel_next`
+    /// (just before its end), exactly: a jump at a boundary by these limits, a record sample
+    /// or a jump inside the step by splitting it there.
+    fn predict(&mut self, [accel, accel_next]: [f64; 2], jump: Option<Jump>, h: f64) {
         self.a_next = accel_next;
-        let mut u = 0.0;
+        self.jump = jump;
         for k in 0..2 {
-            let g1 = -self.gamma[k] * accel_next;
-            let y = [self.q[k], self.v[k], self.g[k], (g1 - self.g[k]) / h];
-            u += self.girder[k] * self.step[k].apply(&y).0;
+            // The forcing just after the start: the same joint force, the ground's right limit.
+            self.g[k] += self.gamma[k] * (self.a_now - accel);
         }
+        let u = (0..2)
+            .map(|k| self.girder[k] * self.advance(k, 0.0, h).0)
+            .sum();
         self.u_star = u;
+    }
+
+    /// Mode k's state at the step's end with the net joint force `net_force` there.
+    fn advance(&self, k: usize, net_force: f64, h: f64) -> (f64, f64) {
+        let g1 = self.girder[k] * net_force - self.gamma[k] * self.a_next;
+        let Some(j) = self.jump else {
+            let y = [self.q[k], self.v[k], self.g[k], (g1 - self.g[k]) / h];
+            return self.step[k].apply(&y);
+        };
+        // The joint force stays linear across the split; the ground goes from j.before to
+        // j.after at j.at.
+        let f_mid = self.f_now + (net_force - self.f_now) * j.at / h;
+        let before = self.girder[k] * f_mid - self.gamma[k] * j.before;
+        let after = self.girder[k] * f_mid - self.gamma[k] * j.after;
+        let (w, z) = (self.omega[k], self.zeta[k]);
+        let y = [self.q[k], self.v[k], self.g[k], (before - self.g[k]) / j.at];
+        let (q, v) = evaluate(w, z, &y, j.at);
+        let rest = h - j.at;
+        evaluate(w, z, &[q, v, after, (g1 - after) / rest], rest)
     }
 
     /// Takes the step with the net joint force on the girder at its end.
     fn commit(&mut self, net_force: f64, h: f64) {
         for k in 0..2 {
-            let g1 = self.girder[k] * net_force - self.gamma[k] * self.a_next;
-            let y = [self.q[k], self.v[k], self.g[k], (g1 - self.g[k]) / h];
-            let (q, v) = self.step[k].apply(&y);
+            let (q, v) = self.advance(k, net_force, h);
             self.q[k] = q;
             self.v[k] = v;
-            self.g[k] = g1;
+            self.g[k] = self.girder[k] * net_force - self.gamma[k] * self.a_next;
         }
+        self.a_now = self.a_next;
+        self.f_now = net_force;
     }
 
-    /// A velocity jump of the girder by an impulse on it.
-    fn kick(&mut self, impulse: f64) {
+    /// A velocity jump of the girder by an impulse on it `since` seconds ago.
+    fn kick(&mut self, impulse: f64, since: f64) {
         for k in 0..2 {
             self.v[k] += self.girder[k] * impulse;
+            self.q[k] += self.girder[k] * impulse * since;
         }
     }
 }
@@ -323,12 +368,8 @@ impl<'a> Run<'a> {
     }
 
     /// The known parts of every joint's overlap at the step's end, and their compliances.
-    fn predict(&mut self, t1: f64) {
-        let h = self.h;
-        for i in 0..self.frames.len() {
-            let a = self.ground.at(t1, self.frames[i].delay_s).accel;
-            self.frames[i].predict(a, h);
-        }
+    fn predict(&mut self, t0: f64, t1: f64) {
+        self.predict_frames(t0, t1);
         for (i, g) in self.girders.iter_mut().enumerate() {
             if let Some(g) = g {
                 let forces = [self.joints[i].force, self.joints[i + 1].force];
@@ -359,6 +400,30 @@ impl<'a> Run<'a> {
             }
             self.joints[j].k_star = k;
             self.joints[j].s = s;
+        }
+    }
+
+    /// Every frame's girder before the joint forces, over the step from t0 to t1.
+    fn predict_frames(&mut self, t0: f64, t1: f64) {
+        let h = self.h;
+        let eps = 1e-9 * h;
+        let dt = self.ground.corrected.dt_s;
+        let last = (self.ground.corrected.accel_m_s2.len() as f64 - 1.0).max(0.0);
+        for f in self.frames.iter_mut() {
+            let accel = [
+                self.ground.accel_after(t0, f.delay_s),
+                self.ground.accel_before(t1, f.delay_s),
+            ];
+            // The record's samples are its acceleration's kinks, and its first and last are
+            // where it jumps from and back to rest: at most one lies inside a step (h <= dt).
+            let m = ((t0 + eps - f.delay_s) / dt).ceil().max(0.0);
+            let t = f.delay_s + m * dt;
+            let jump = (m <= last && t > t0 + eps && t < t1 - eps).then(|| Jump {
+                at: t - t0,
+                before: self.ground.accel_before(t, f.delay_s),
+                after: self.ground.accel_after(t, f.delay_s),
+            });
+            f.predict(accel, jump, h);
         }
     }
 
@@ -454,14 +519,11 @@ impl Run<'_> {
             if matches!(self.sc.contact, ContactModel::None | ContactModel::Stereo) {
                 vec![0.0; self.joints.len()]
             } else {
-                self.predict(t1);
+                self.predict(t0, t1);
                 self.solve_forces().into_iter().map(|(_, f)| f).collect()
             };
         if matches!(self.sc.contact, ContactModel::None | ContactModel::Stereo) {
-            for i in 0..self.frames.len() {
-                let a = self.ground.at(t1, self.frames[i].delay_s).accel;
-                self.frames[i].predict(a, h);
-            }
+            self.predict_frames(t0, t1);
         }
         for i in 0..self.frames.len() {
             self.frames[i].commit(forces[i] - forces[i + 1], h);
@@ -477,18 +539,24 @@ impl Run<'_> {
             js.force = *f;
         }
         self.read_joints(t1);
+        // The powers at the step's end are those the step arrived with: an exchange after it
+        // is a jump whose loss the exchange counts itself.
+        let powers = self.powers(t1);
         if self.sc.contact == ContactModel::Stereo {
-            self.exchange(t1);
+            self.exchange(t1, &before.deltas);
         }
-        self.account(&before, t0, t1);
+        self.account(&before, powers, t0, t1);
     }
 
     /// Stereomechanics: every joint still approaching while overlapped reverses its rigid
     /// closing rate with restitution e, at once (neighbours in turn, until none approaches).
-    fn exchange(&mut self, t: f64) {
+    /// The exchange belongs where the overlap crossed zero inside the step (by its linear
+    /// interpolation), so the girders are moved on by their velocity change over the time
+    /// since then: without it the contact would be first order in the step.
+    fn exchange(&mut self, t: f64, deltas_before: &[f64]) {
         for _ in 0..50 {
             let mut any = false;
-            for j in 0..self.joints.len() {
+            for (j, &d0) in deltas_before.iter().enumerate() {
                 let (delta, rate) = (self.joints[j].delta, self.joints[j].rate);
                 if delta <= 0.0 || rate <= 0.0 {
                     continue;
@@ -501,26 +569,33 @@ impl Run<'_> {
                 };
                 let w = inverse(joint.left) + inverse(joint.right);
                 let impulse = (1.0 + self.sc.restitution) * rate / w;
+                let since = if d0 < 0.0 {
+                    self.h * delta / (delta - d0)
+                } else {
+                    0.0
+                };
                 let energy: f64 = self.frames.iter().map(Frame::energy).sum();
                 if let Member::Girder(i) = joint.left {
-                    self.frames[i].kick(-impulse);
+                    self.frames[i].kick(-impulse, since);
                 }
                 if let Member::Girder(i) = joint.right {
-                    self.frames[i].kick(impulse);
+                    self.frames[i].kick(impulse, since);
                 }
                 self.energy.contact_j +=
                     energy - self.frames.iter().map(Frame::energy).sum::<f64>();
                 self.contacts.push(RawContact {
                     level: j,
-                    start_s: t,
-                    end_s: t,
+                    start_s: t - since,
+                    end_s: t - since,
                     peak_force_n: 0.0,
                     impulse_ns: impulse,
                     approach_velocity_m_s: rate,
                 });
                 for k in 0..self.joints.len() {
-                    let (_, r) = self.closing(k, t);
-                    self.joints[k].rate = r;
+                    let (closing, r) = self.closing(k, t);
+                    let js = &mut self.joints[k];
+                    js.delta = closing - js.joint.gap_m;
+                    js.rate = r;
                 }
             }
             if !any {
@@ -530,9 +605,14 @@ impl Run<'_> {
     }
 
     /// The ledger's integrals and the contacts over the step just taken.
-    fn account(&mut self, before: &Before, t0: f64, t1: f64) {
+    fn account(
+        &mut self,
+        before: &Before,
+        (damping_power, input_power): (f64, f64),
+        t0: f64,
+        t1: f64,
+    ) {
         let h = self.h;
-        let (damping_power, input_power) = self.powers(t1);
         self.energy.damping_j += 0.5 * h * (before.damping_power + damping_power);
         self.energy.input_j += 0.5 * h * (before.input_power + input_power);
         for i in 0..self.waves.len() {
