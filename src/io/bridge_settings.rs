@@ -31,13 +31,7 @@ impl BridgeSetup {
     }
 
     pub fn apply_assignment(&mut self, assignment: &str) -> Result<(), InputError> {
-        let (key, value) = assignment.split_once('=').ok_or_else(|| {
-            InputError::new(
-                assignment,
-                "expected KEY=VALUE (for example motion.apparent_velocity=500)",
-            )
-        })?;
-        self.apply(key.trim(), &SettingValue::from_cli(value))
+        BRIDGE.apply_assignment(self, assignment, "motion.apparent_velocity=500")
     }
 }
 

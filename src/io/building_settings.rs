@@ -45,13 +45,7 @@ impl BuildingSetup {
     }
 
     pub fn apply_assignment(&mut self, assignment: &str) -> Result<(), InputError> {
-        let (key, value) = assignment.split_once('=').ok_or_else(|| {
-            InputError::new(
-                assignment,
-                "expected KEY=VALUE (for example left.damping_ratio=0.02)",
-            )
-        })?;
-        self.apply(key.trim(), &SettingValue::from_cli(value))
+        BUILDINGS.apply_assignment(self, assignment, "left.damping_ratio=0.02")
     }
 
     /// Building `i` (0: the left one).

@@ -155,6 +155,23 @@ impl<S> Registry<S> {
         (entry.set)(setup, &target, value)
     }
 
+    /// Sets one `KEY=VALUE` from the command line; `example` is a valid assignment the error
+    /// shows where the `=` is missing.
+    pub fn apply_assignment(
+        &self,
+        setup: &mut S,
+        assignment: &str,
+        example: &str,
+    ) -> Result<(), InputError> {
+        let (key, value) = assignment.split_once('=').ok_or_else(|| {
+            InputError::new(
+                assignment,
+                format!("expected KEY=VALUE (for example {example})"),
+            )
+        })?;
+        self.apply(setup, key.trim(), &SettingValue::from_cli(value))
+    }
+
     fn unknown(&self, key: &str) -> InputError {
         let known: Vec<&str> = self.settings().map(|s| s.key).collect();
         InputError::new(

@@ -80,10 +80,7 @@ impl ImpactSetup {
 
     /// Applies `KEY=VALUE` text from the command line.
     pub fn apply_assignment(&mut self, assignment: &str) -> Result<(), InputError> {
-        let (key, value) = assignment.split_once('=').ok_or_else(|| {
-            InputError::new(assignment, "expected KEY=VALUE (for example bar1.length=2)")
-        })?;
-        self.apply(key.trim(), &SettingValue::from_cli(value))
+        IMPACT.apply_assignment(self, assignment, "bar1.length=2")
     }
 
     /// Bar `i` (0: bar1, the left one).

@@ -29,6 +29,7 @@ pub mod hysteresis;
 pub mod impact;
 pub mod material;
 pub mod motion;
+pub(crate) mod ring;
 pub mod root;
 pub mod scenario;
 pub mod settings;

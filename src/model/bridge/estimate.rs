@@ -4,6 +4,7 @@
 //! difference bounds the run's error.
 
 use super::{BridgeResult, BridgeScenario};
+use crate::model::building::estimate::impact_time_change;
 use crate::model::control::Control;
 use crate::model::error::SolveError;
 use crate::model::impact::estimate::rel;
@@ -81,15 +82,7 @@ pub fn compare(r: &BridgeResult, reference: &BridgeResult) -> BridgeErrorEstimat
         &r.peak_bearing_displacement_m,
         &reference.peak_bearing_displacement_m,
     ));
-    let impact_time = if r.impacts.len() == reference.impacts.len() {
-        r.impacts
-            .iter()
-            .zip(&reference.impacts)
-            .map(|(a, b)| rel(a.start_s, b.start_s))
-            .fold(0.0, f64::max)
-    } else {
-        0.0
-    };
+    let impact_time = impact_time_change(&r.impacts, &reference.impacts);
     BridgeErrorEstimate {
         max_force: rel(r.max_pounding_force_n, reference.max_pounding_force_n),
         peak_displacement: peak,

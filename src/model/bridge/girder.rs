@@ -16,78 +16,13 @@
 //! the waves from the two ends meet in the girder and each end feels both.
 //!
 //! Over a step the force is linear in time, and A and B are integrated exactly for it; a
-//! lag is read from the stored Q by a cubic through four samples (the step is at most a
-//! sixteenth of a round trip, so every lag reaches samples already known).
+//! lag is read from the stored Q (a ring a round trip deep) by a [`Tap`]'s cubic through four
+//! samples (the step is at most a sixteenth of a round trip, so every lag reaches samples
+//! already known).
 
 use super::scenario::Girder;
-
-/// Q at the grid points, the newest a round trip and a few steps deep.
-#[derive(Debug, Clone)]
-struct Ring {
-    data: Vec<f64>,
-    mask: usize,
-    next: usize,
-}
-
-impl Ring {
-    fn new(reach: usize) -> Self {
-        let cap = (reach + 8).next_power_of_two();
-        Ring {
-            data: vec![0.0; cap],
-            mask: cap - 1,
-            next: 0,
-        }
-    }
-
-    fn push(&mut self, x: f64) {
-        self.data[self.next & self.mask] = x;
-        self.next += 1;
-    }
-
-    /// Sample `i` (zero before the first).
-    fn get(&self, i: isize) -> f64 {
-        if i < 0 {
-            0.0
-        } else {
-            self.data[i as usize & self.mask]
-        }
-    }
-}
-
-/// A look-up a fixed lag back from the newest step's end: the four samples from `back` steps
-/// before the sample pushed next, and their cubic Lagrange weights.
-#[derive(Debug, Clone, Copy)]
-struct Lag {
-    back: usize,
-    w: [f64; 4],
-}
-
-impl Lag {
-    /// Lag `lag_s` from t_{n+1} on a grid of `h`: t_{n+1} - lag = t_{i0 + f}, samples i0 - 1
-    /// to i0 + 2, where i0 = n + 1 - back.
-    fn new(lag_s: f64, h: f64) -> Self {
-        let steps = lag_s / h;
-        let whole = steps.ceil();
-        let f = whole - steps;
-        let back = whole as usize;
-        let w = [
-            -f * (f - 1.0) * (f - 2.0) / 6.0,
-            (f + 1.0) * (f - 1.0) * (f - 2.0) / 2.0,
-            -(f + 1.0) * f * (f - 2.0) / 2.0,
-            (f + 1.0) * f * (f - 1.0) / 6.0,
-        ];
-        Lag { back, w }
-    }
-
-    /// The value at the lag from the newest step's end (`next` is n + 1).
-    fn read(&self, ring: &Ring) -> f64 {
-        let i0 = ring.next as isize - self.back as isize;
-        self.w[0] * ring.get(i0 - 1)
-            + self.w[1] * ring.get(i0)
-            + self.w[2] * ring.get(i0 + 1)
-            + self.w[3] * ring.get(i0 + 2)
-    }
-}
+use crate::model::history::Tap;
+use crate::model::ring::{Look, Ring};
 
 /// One end's force history: A and B now, Q on the grid.
 #[derive(Debug, Clone)]
@@ -113,8 +48,8 @@ pub struct GirderWaves {
     wa: [f64; 2],
     wb: [f64; 2],
     h: f64,
-    round_trip: Lag,
-    half_trip: Lag,
+    round_trip: Look,
+    half_trip: Look,
     ends: [End; 2],
 }
 
@@ -159,11 +94,11 @@ impl GirderWaves {
         let t = girder.round_trip_s();
         let lam = 2.0 * std::f64::consts::PI * zeta / t;
         let [i0, i1, i2] = moments(lam, h);
-        let round_trip = Lag::new(t, h);
+        let round_trip = Look::of(Tap::new(t, h));
         let end = End {
             a: 0.0,
             b: 0.0,
-            q: Ring::new(round_trip.back + 4),
+            q: Ring::new(round_trip.reach()),
             a_star: 0.0,
             b_star: 0.0,
             q_lag: 0.0,
@@ -179,7 +114,7 @@ impl GirderWaves {
             wb: [i2 / h, i1 - i2 / h],
             h,
             round_trip,
-            half_trip: Lag::new(0.5 * t, h),
+            half_trip: Look::of(Tap::new(0.5 * t, h)),
             ends: [end.clone(), end],
         }
     }
@@ -201,10 +136,10 @@ impl GirderWaves {
         for (i, e) in self.ends.iter_mut().enumerate() {
             e.a_star = self.decay * e.a + self.wa[0] * forces[i];
             e.b_star = self.decay * (e.b + self.h * e.a) + self.wb[0] * forces[i];
-            e.q_lag = self.round_trip.read(&e.q);
+            e.q_lag = e.q.known(&self.round_trip);
             let rigid = e.b_star * self.inv_m;
             own[i] = self.inv_z * (e.a_star + 2.0 * self.r * e.q_lag) - rigid;
-            far[i] = 2.0 * self.inv_z * self.r_half * self.half_trip.read(&e.q) - rigid;
+            far[i] = 2.0 * self.inv_z * self.r_half * e.q.known(&self.half_trip) - rigid;
         }
         Predicted {
             left: own[0] - far[1],

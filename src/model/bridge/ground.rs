@@ -77,8 +77,10 @@ impl Ground {
         }
     }
 
-    /// Where `t` (time since the wave arrived) lies against the record's ends, to within
-    /// round-off of a step: -1 at or before its start, 1 at or after its end, 0 inside.
+    /// The acceleration at `t` (time since the wave arrived) where that is at one of the
+    /// record's ends or outside it, to within round-off of a step: at its start the first
+    /// sample if `at_start` (the right limit) else 0, at its end the last sample if `at_end`
+    /// (the left limit) else 0, and 0 outside; `None` inside, where the record is continuous.
     fn side(&self, t: f64, at_start: bool, at_end: bool) -> Option<f64> {
         let a = &self.corrected.accel_m_s2;
         let eps = 1e-9 * self.corrected.dt_s;

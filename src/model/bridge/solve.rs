@@ -207,35 +207,12 @@ struct JointState {
     /// Integrals for the ledger: F d(delta), F d(ground difference).
     work_delta: f64,
     work_ground: f64,
-    /// Known part and coefficients of the overlap at the step's end.
+    /// The ground displacement across the joint now (left member's support less right's).
+    ground_difference: f64,
+    /// The known part of the overlap at the step's end, and its compliance to the joint's own
+    /// force (the same every step).
     k_star: f64,
     s: f64,
-}
-
-/// A member's end, as a joint sees it: (absolute displacement, rigid velocity).
-fn end_state(
-    member: Member,
-    right_end: bool,
-    frames: &[Frame],
-    waves: &[[f64; 2]],
-    ground: &Ground,
-    t: f64,
-    delay_abutment: [f64; 2],
-) -> (f64, f64) {
-    match member {
-        Member::Abutment => {
-            let g = ground.at(t, delay_abutment[usize::from(!right_end)]);
-            (g.displacement, g.velocity)
-        }
-        Member::Girder(i) => {
-            let f = &frames[i];
-            let g = ground.at(t, f.delay_s);
-            (
-                g.displacement + f.girder_u() + waves[i][usize::from(right_end)],
-                g.velocity + f.girder_v(),
-            )
-        }
-    }
 }
 
 /// The run.
@@ -251,6 +228,13 @@ struct Run<'a> {
     abutment_delay: [f64; 2],
     /// The girders' end waves known before the step's new forces.
     predicted: Vec<[f64; 2]>,
+    /// Each girder's coupling p: how the force at one of its ends moves the other end over a
+    /// step (the same every step).
+    coupling: Vec<f64>,
+    /// The step's joint overlaps and forces, solved.
+    solved: Vec<(f64, f64)>,
+    /// The state before the step being taken, kept for its bookkeeping.
+    before: Before,
     contacts: Vec<RawContact>,
     energy: BridgeEnergy,
     contact_steps: usize,
@@ -287,6 +271,7 @@ impl<'a> Run<'a> {
                 unseated: None,
                 work_delta: 0.0,
                 work_ground: 0.0,
+                ground_difference: 0.0,
                 k_star: 0.0,
                 s: 0.0,
             })
@@ -305,50 +290,79 @@ impl<'a> Run<'a> {
             joints,
             abutment_delay: [0.0, sc.delay_s(sc.length_m())],
             predicted: vec![[0.0; 2]; sc.spans],
+            coupling: Vec::new(),
+            solved: Vec::new(),
+            before: Before::default(),
             contacts: Vec::new(),
             energy,
             contact_steps: 0,
         };
+        run.compliances();
         run.read_joints(0.0);
+        for j in 0..run.joints.len() {
+            run.joints[j].ground_difference = run.ground_difference(j, 0.0);
+        }
         run
+    }
+
+    /// The joints' own compliances S and the girders' couplings p, fixed by the step.
+    fn compliances(&mut self) {
+        let rigid = |g: &Option<GirderWaves>| g.as_ref().map_or(0.0, |g| g.rigid_compliance());
+        let own = |g: &Option<GirderWaves>| g.as_ref().map_or(0.0, |g| g.own_compliance());
+        for j in 0..self.joints.len() {
+            let joint = self.joints[j].joint;
+            let mut s = 0.0;
+            for member in [joint.left, joint.right] {
+                if let Member::Girder(i) = member {
+                    s += self.frames[i].compliance + own(&self.girders[i]);
+                    s -= rigid(&self.girders[i]);
+                }
+            }
+            self.joints[j].s = s;
+        }
+        self.coupling = (0..self.frames.len())
+            .map(|i| self.frames[i].compliance - rigid(&self.girders[i]))
+            .collect();
+    }
+
+    /// The delay of a member's support: its frame's, or an abutment's (the left one where the
+    /// abutment is on a joint's left).
+    fn delay(&self, member: Member, on_left: bool) -> f64 {
+        match member {
+            Member::Girder(i) => self.frames[i].delay_s,
+            Member::Abutment => self.abutment_delay[usize::from(!on_left)],
+        }
+    }
+
+    /// A member's end at a joint: (absolute displacement, rigid velocity, its ground's
+    /// displacement).
+    fn member_end(&self, member: Member, on_left: bool, t: f64) -> (f64, f64, f64) {
+        let g = self.ground.at(t, self.delay(member, on_left));
+        match member {
+            Member::Abutment => (g.displacement, g.velocity, g.displacement),
+            Member::Girder(i) => {
+                let f = &self.frames[i];
+                (
+                    g.displacement + f.girder_u() + self.waves[i][usize::from(on_left)],
+                    g.velocity + f.girder_v(),
+                    g.displacement,
+                )
+            }
+        }
     }
 
     /// Closing (left member minus right member, absolute) and rigid closing rate of joint j.
     fn closing(&self, j: usize, t: f64) -> (f64, f64) {
         let joint = &self.joints[j].joint;
-        let (xl, vl) = end_state(
-            joint.left,
-            true,
-            &self.frames,
-            &self.waves,
-            &self.ground,
-            t,
-            self.abutment_delay,
-        );
-        let (xr, vr) = end_state(
-            joint.right,
-            false,
-            &self.frames,
-            &self.waves,
-            &self.ground,
-            t,
-            self.abutment_delay,
-        );
+        let (xl, vl, _) = self.member_end(joint.left, true, t);
+        let (xr, vr, _) = self.member_end(joint.right, false, t);
         (xl - xr, vl - vr)
     }
 
     /// Ground displacement difference across joint j (left member's support minus right's).
     fn ground_difference(&self, j: usize, t: f64) -> f64 {
         let joint = &self.joints[j].joint;
-        let at = |m: Member, right_end: bool| match m {
-            Member::Abutment => {
-                self.ground
-                    .at(t, self.abutment_delay[usize::from(!right_end)])
-                    .displacement
-            }
-            Member::Girder(i) => self.ground.at(t, self.frames[i].delay_s).displacement,
-        };
-        at(joint.left, true) - at(joint.right, false)
+        self.member_end(joint.left, true, t).2 - self.member_end(joint.right, false, t).2
     }
 
     /// The joints' overlaps, rates, openings and seats at time t.
@@ -367,9 +381,8 @@ impl<'a> Run<'a> {
         }
     }
 
-    /// The known parts of every joint's overlap at the step's end, and their compliances.
-    fn predict(&mut self, t0: f64, t1: f64) {
-        self.predict_frames(t0, t1);
+    /// The known parts of every joint's overlap at the step's end (the frames predicted).
+    fn predict_joints(&mut self, t1: f64) {
         for (i, g) in self.girders.iter_mut().enumerate() {
             if let Some(g) = g {
                 let forces = [self.joints[i].force, self.joints[i + 1].force];
@@ -380,26 +393,17 @@ impl<'a> Run<'a> {
         for j in 0..self.joints.len() {
             let joint = self.joints[j].joint;
             let mut k = -joint.gap_m;
-            let mut s = 0.0;
-            for (member, right_end, sign) in [(joint.left, true, 1.0), (joint.right, false, -1.0)] {
-                match member {
-                    Member::Abutment => {
-                        let d = self.abutment_delay[usize::from(!right_end)];
-                        k += sign * self.ground.at(t1, d).displacement;
-                    }
-                    Member::Girder(i) => {
-                        let f = &self.frames[i];
-                        k += sign
-                            * (self.ground.at(t1, f.delay_s).displacement
-                                + f.u_star
-                                + self.predicted[i][usize::from(right_end)]);
-                        s += f.compliance + self.own_wave_compliance(i);
-                        s -= self.rigid_wave_compliance(i);
-                    }
-                }
+            for (member, on_left, sign) in [(joint.left, true, 1.0), (joint.right, false, -1.0)] {
+                let ground = self.ground.at(t1, self.delay(member, on_left)).displacement;
+                k += sign
+                    * match member {
+                        Member::Abutment => ground,
+                        Member::Girder(i) => {
+                            ground + self.frames[i].u_star + self.predicted[i][usize::from(on_left)]
+                        }
+                    };
             }
             self.joints[j].k_star = k;
-            self.joints[j].s = s;
         }
     }
 
@@ -427,25 +431,12 @@ impl<'a> Run<'a> {
         }
     }
 
-    fn own_wave_compliance(&self, i: usize) -> f64 {
-        self.girders[i].as_ref().map_or(0.0, |g| g.own_compliance())
-    }
-
-    fn rigid_wave_compliance(&self, i: usize) -> f64 {
-        self.girders[i]
-            .as_ref()
-            .map_or(0.0, |g| g.rigid_compliance())
-    }
-
-    /// The coupling p of girder i: how its far joint's force moves this joint's overlap.
-    fn coupling(&self, i: usize) -> f64 {
-        self.frames[i].compliance - self.rigid_wave_compliance(i)
-    }
-
     /// Every joint's force at the step's end, swept joint by joint until they agree.
-    fn solve_forces(&self) -> Vec<(f64, f64)> {
+    fn solve_forces(&mut self) {
         let n = self.joints.len();
-        let mut out: Vec<(f64, f64)> = self.joints.iter().map(|js| (js.k_star, 0.0)).collect();
+        let mut out = std::mem::take(&mut self.solved);
+        out.clear();
+        out.extend(self.joints.iter().map(|js| (js.k_star, 0.0)));
         let h = self.h;
         for _ in 0..MAX_SWEEPS {
             let mut change: f64 = 0.0;
@@ -454,10 +445,10 @@ impl<'a> Run<'a> {
                 let js = &self.joints[j];
                 let mut rhs = js.k_star;
                 if j > 0 {
-                    rhs += self.coupling(j - 1) * out[j - 1].1;
+                    rhs += self.coupling[j - 1] * out[j - 1].1;
                 }
                 if j + 1 < n {
-                    rhs += self.coupling(j) * out[j + 1].1;
+                    rhs += self.coupling[j] * out[j + 1].1;
                 }
                 let e = &js.element;
                 let v0 = if js.open.is_some() { js.v0 } else { js.rate };
@@ -472,16 +463,16 @@ impl<'a> Run<'a> {
                 break;
             }
         }
-        out
+        self.solved = out;
     }
 }
 
-/// What one step's bookkeeping needs from before it.
+/// What one step's bookkeeping needs from before it (buffers kept between steps).
+#[derive(Debug, Clone, Default)]
 struct Before {
     forces: Vec<f64>,
     deltas: Vec<f64>,
     rates: Vec<f64>,
-    grounds: Vec<f64>,
     waves: Vec<[f64; 2]>,
     damping_power: f64,
     input_power: f64,
@@ -495,57 +486,54 @@ impl Run<'_> {
         })
     }
 
-    fn before(&self, t0: f64) -> Before {
+    /// Keeps the state at t0 for the step's bookkeeping.
+    fn keep_before(&mut self, t0: f64) {
         let (damping_power, input_power) = self.powers(t0);
-        Before {
-            forces: self.joints.iter().map(|j| j.force).collect(),
-            deltas: self.joints.iter().map(|j| j.delta).collect(),
-            rates: self.joints.iter().map(|j| j.rate).collect(),
-            grounds: (0..self.joints.len())
-                .map(|j| self.ground_difference(j, t0))
-                .collect(),
-            waves: self.waves.clone(),
-            damping_power,
-            input_power,
-        }
+        let b = &mut self.before;
+        b.forces.clear();
+        b.forces.extend(self.joints.iter().map(|j| j.force));
+        b.deltas.clear();
+        b.deltas.extend(self.joints.iter().map(|j| j.delta));
+        b.rates.clear();
+        b.rates.extend(self.joints.iter().map(|j| j.rate));
+        b.waves.clear();
+        b.waves.extend_from_slice(&self.waves);
+        b.damping_power = damping_power;
+        b.input_power = input_power;
     }
 
     /// One step from t0 = n h.
     fn step(&mut self, n: usize) {
         let h = self.h;
         let (t0, t1) = (n as f64 * h, (n + 1) as f64 * h);
-        let before = self.before(t0);
-        let forces: Vec<f64> =
-            if matches!(self.sc.contact, ContactModel::None | ContactModel::Stereo) {
-                vec![0.0; self.joints.len()]
-            } else {
-                self.predict(t0, t1);
-                self.solve_forces().into_iter().map(|(_, f)| f).collect()
-            };
-        if matches!(self.sc.contact, ContactModel::None | ContactModel::Stereo) {
-            self.predict_frames(t0, t1);
+        self.keep_before(t0);
+        self.predict_frames(t0, t1);
+        let forces_act = !matches!(self.sc.contact, ContactModel::None | ContactModel::Stereo);
+        if forces_act {
+            self.predict_joints(t1);
+            self.solve_forces();
+        }
+        for j in 0..self.joints.len() {
+            self.joints[j].force = if forces_act { self.solved[j].1 } else { 0.0 };
         }
         for i in 0..self.frames.len() {
-            self.frames[i].commit(forces[i] - forces[i + 1], h);
+            let (fl, fr) = (self.joints[i].force, self.joints[i + 1].force);
+            self.frames[i].commit(fl - fr, h);
             if let Some(g) = self.girders[i].as_mut() {
-                let (fl, fr) = (forces[i], forces[i + 1]);
                 g.commit([fl, fr]);
                 let (s, b) = (g.own_compliance(), g.rigid_compliance());
                 let p = self.predicted[i];
                 self.waves[i] = [p[0] + (s - b) * fl + b * fr, p[1] - b * fl - (s - b) * fr];
             }
         }
-        for (js, f) in self.joints.iter_mut().zip(&forces) {
-            js.force = *f;
-        }
         self.read_joints(t1);
         // The powers at the step's end are those the step arrived with: an exchange after it
         // is a jump whose loss the exchange counts itself.
         let powers = self.powers(t1);
         if self.sc.contact == ContactModel::Stereo {
-            self.exchange(t1, &before.deltas);
+            self.exchange(t1);
         }
-        self.account(&before, powers, t0, t1);
+        self.account(powers, t0, t1);
     }
 
     /// Stereomechanics: every joint still approaching while overlapped reverses its rigid
@@ -553,10 +541,11 @@ impl Run<'_> {
     /// The exchange belongs where the overlap crossed zero inside the step (by its linear
     /// interpolation), so the girders are moved on by their velocity change over the time
     /// since then: without it the contact would be first order in the step.
-    fn exchange(&mut self, t: f64, deltas_before: &[f64]) {
+    fn exchange(&mut self, t: f64) {
         for _ in 0..50 {
             let mut any = false;
-            for (j, &d0) in deltas_before.iter().enumerate() {
+            for j in 0..self.joints.len() {
+                let d0 = self.before.deltas[j];
                 let (delta, rate) = (self.joints[j].delta, self.joints[j].rate);
                 if delta <= 0.0 || rate <= 0.0 {
                     continue;
@@ -605,14 +594,9 @@ impl Run<'_> {
     }
 
     /// The ledger's integrals and the contacts over the step just taken.
-    fn account(
-        &mut self,
-        before: &Before,
-        (damping_power, input_power): (f64, f64),
-        t0: f64,
-        t1: f64,
-    ) {
+    fn account(&mut self, (damping_power, input_power): (f64, f64), t0: f64, t1: f64) {
         let h = self.h;
+        let before = std::mem::take(&mut self.before);
         self.energy.damping_j += 0.5 * h * (before.damping_power + damping_power);
         self.energy.input_j += 0.5 * h * (before.input_power + input_power);
         for i in 0..self.waves.len() {
@@ -630,7 +614,8 @@ impl Run<'_> {
             let (f0, f1) = (before.forces[j], js.force);
             let (d0, d1) = (before.deltas[j], js.delta);
             js.work_delta += 0.5 * (f0 + f1) * (d1 - d0);
-            js.work_ground += 0.5 * (f0 + f1) * (ground - before.grounds[j]);
+            js.work_ground += 0.5 * (f0 + f1) * (ground - js.ground_difference);
+            js.ground_difference = ground;
             js.max_force = js.max_force.max(f1);
             in_contact |= f1 > 0.0;
             if f0 <= 0.0 && f1 > 0.0 {
@@ -669,6 +654,7 @@ impl Run<'_> {
         if in_contact {
             self.contact_steps += 1;
         }
+        self.before = before;
     }
 }
 

@@ -34,97 +34,7 @@
 use super::Slab;
 use crate::model::field::{BarWaves, History, HistorySegment};
 use crate::model::history::Tap;
-
-/// A fixed-lag look-up into a [`Ring`]: the same stencil a [`Tap`] reads from a series.
-#[derive(Debug, Clone, Copy)]
-struct Look {
-    first: isize,
-    stored: usize,
-    w: [f64; 4],
-    newest: f64,
-}
-
-impl Look {
-    fn of(tap: Tap) -> Self {
-        let (first, stored, w) = tap.stencil();
-        Look {
-            first,
-            stored,
-            w,
-            newest: tap.newest_weight(),
-        }
-    }
-
-    fn reach(&self) -> usize {
-        (-self.first) as usize
-    }
-}
-
-/// The newest samples of a history on the grid, by absolute index (zero before index 0).
-#[derive(Debug, Clone)]
-struct Ring {
-    data: Vec<f64>,
-    mask: usize,
-    /// The index the next sample will have.
-    next: usize,
-}
-
-impl Ring {
-    fn new(reach: usize) -> Self {
-        let cap = (reach + 8).next_power_of_two();
-        Ring {
-            data: vec![0.0; cap],
-            mask: cap - 1,
-            next: 0,
-        }
-    }
-
-    #[inline]
-    fn push(&mut self, v: f64) {
-        self.data[self.next & self.mask] = v;
-        self.next += 1;
-    }
-
-    #[inline]
-    fn at(&self, i: isize) -> f64 {
-        if i < 0 { 0.0 } else { self.masked(i as usize) }
-    }
-
-    /// The sample at index i (at or after 0, within the ring's reach).
-    #[inline(always)]
-    fn masked(&self, i: usize) -> f64 {
-        // SAFETY: the mask is the length less one, a power of two less one, so the index is
-        // within the data.
-        unsafe { *self.data.get_unchecked(i & self.mask) }
-    }
-
-    /// The look-up's part from stored samples, for the sample about to be pushed.
-    #[inline]
-    fn known(&self, l: &Look) -> f64 {
-        let base = self.next as isize + l.first;
-        let w = &l.w;
-        if base >= 0 && l.stored == 4 {
-            // The common case, without a branch per sample: four stored samples, all at or after
-            // index 0.
-            let b = base as usize;
-            return (w[0] * self.masked(b) + w[1] * self.masked(b + 1))
-                + (w[2] * self.masked(b + 2) + w[3] * self.masked(b + 3));
-        }
-        if l.stored == 3 {
-            w[0] * self.at(base) + w[1] * self.at(base + 1) + w[2] * self.at(base + 2)
-        } else {
-            (w[0] * self.at(base) + w[1] * self.at(base + 1))
-                + (w[2] * self.at(base + 2) + w[3] * self.at(base + 3))
-        }
-    }
-
-    /// The `len` newest samples, oldest first, into `out`.
-    fn newest(&self, len: usize, out: &mut Vec<f64>) {
-        out.clear();
-        let next = self.next as isize;
-        out.extend((next - len as isize..next).map(|i| self.at(i)));
-    }
-}
+use crate::model::ring::{Look, Ring};
 
 /// The slab's state frozen when it fell quiet: its last samples, from which every later instant
 /// is read until the next contact.
@@ -489,18 +399,11 @@ impl SlabWaves {
                 *b = v;
             }
         }
-        // Each look-up as four weights on four samples from a fixed offset before the sample
-        // being made (a stencil of three stored samples reads that sample, still zero, with
-        // weight zero): the window holds every sample the deepest look-up reaches.
-        let four = |l: &Look| -> (usize, [f64; 4]) {
-            let w = if l.stored == 3 {
-                [l.w[0], l.w[1], l.w[2], 0.0]
-            } else {
-                l.w
-            };
-            ((-l.first) as usize, w)
-        };
-        let (recur, near, far) = (four(&self.recur), four(&self.near), four(&self.far));
+        let (recur, near, far) = (
+            self.recur.stored_four(),
+            self.near.stored_four(),
+            self.far.stored_four(),
+        );
         debug_assert!(recur.0.max(near.0).max(far.0) <= len);
         let read = |buf: &[f64], at: usize, (back, w): (usize, [f64; 4])| {
             let s = &buf[at - back..at - back + 4];
