@@ -469,3 +469,126 @@ fn extreme_values_of_every_key_end_in_a_result_or_a_named_refusal() {
     }
     assert!(runs > 80, "only {runs}");
 }
+
+/// Three free girders (bearings and piers of negligible stiffness), the outer two thrown at the
+/// middle one at `v` and `-v` across equal joints, stiff contact, no damping: each joint is an
+/// impact of two equal bars.
+fn middle_girder_struck_at_both_ends(v: f64) -> (BridgeScenario, GroundMotion) {
+    let sc = BridgeScenario {
+        spans: 3,
+        contact: ContactModel::Sears,
+        stiffness: Some(1e12),
+        pier_stiffness_n_m: vec![1e-3],
+        bearing_stiffness_n_m: vec![1e-3],
+        span_velocity_m_s: vec![v, 0.0, -v],
+        joint_gaps_m: vec![10.0, 1e-3, 1e-3, 10.0],
+        girder_damping: 0.0,
+        damping_ratio: 0.0,
+        ..BridgeScenario::three_span()
+    };
+    let still = GroundMotion {
+        name: "rest".into(),
+        dt_s: 0.01,
+        accel_m_s2: vec![0.0; 5],
+    };
+    (sc, still)
+}
+
+#[test]
+fn stress_fronts_from_both_ends_of_a_girder_meet_and_add_as_wave_theory_says() {
+    // Wave theory for two equal bars meeting at w = 1 m/s: a compressive front of Z w / (2 A)
+    // runs into each from the contact at c, and the particles behind it move at w / 2 towards
+    // the other bar. The middle girder takes one front from each end: they meet at its middle
+    // after L / (2c) and add to Z w / A there; its middle is at rest.
+    let v = 1.0;
+    let (sc, still) = middle_girder_struck_at_both_ends(v);
+    let r = solve(&sc, &still).unwrap();
+    assert_eq!(r.girder_waves.len(), 3);
+    let g = sc.girder(1);
+    let (l, c) = (g.length_m, g.wave_speed_m_s());
+    let front = g.impedance_n_s_m() * v / (2.0 * g.area_m2);
+    let t0 = 1e-3;
+    let first = r.contacts.iter().map(|c| c.start_s).fold(f64::MAX, f64::min);
+    assert!((first - t0).abs() < 1e-6, "first contact at {first}");
+    // After L / (4c) each front is a quarter of the way in.
+    let t = t0 + 0.25 * l / c;
+    let near_left = r.girder_stress_pa(1, 0.125 * l, t);
+    let near_right = r.girder_stress_pa(1, 0.875 * l, t);
+    let middle = r.girder_stress_pa(1, 0.5 * l, t);
+    assert!(rel(near_left, -front) < 0.02, "{near_left} against {}", -front);
+    assert!(rel(near_right, -front) < 0.02, "{near_right} against {}", -front);
+    assert!(middle.abs() < 0.02 * front, "ahead of the fronts: {middle}");
+    // Behind the left front the girder moves right at w/2, behind the right front left.
+    let v_left = r.girder_wave_velocity_m_s(1, 0.125 * l, t);
+    let v_right = r.girder_wave_velocity_m_s(1, 0.875 * l, t);
+    assert!((v_left - 0.5 * v).abs() < 0.02 * v, "{v_left}");
+    assert!((v_right + 0.5 * v).abs() < 0.02 * v, "{v_right}");
+    // Three quarters: the fronts have passed each other in the middle and add.
+    let t = t0 + 0.75 * l / c;
+    let met = r.girder_stress_pa(1, 0.5 * l, t);
+    assert!(rel(met, -2.0 * front) < 0.02, "{met} against {}", -2.0 * front);
+    let still_middle = r.girder_wave_velocity_m_s(1, 0.5 * l, t);
+    assert!(still_middle.abs() < 0.02 * v, "{still_middle}");
+    // The struck end of an outer girder carries its joint's force: stress -F / A there.
+    let k = r.time_s.partition_point(|&s| s < t0 + 0.5 * l / c);
+    let (t, f) = (r.time_s[k], r.joint_force_n[1][k]);
+    let end = r.girder_stress_pa(0, l, t);
+    assert!(rel(end, -f / g.area_m2) < 1e-6, "{end} against {}", -f / g.area_m2);
+}
+
+#[test]
+fn a_girder_that_rebounds_from_an_abutment_leaves_it_free_of_stress() {
+    // Wave theory: a bar that hits a rigid face at v is compressed to Z v / A as the front runs
+    // in, and after the round trip of contact leaves at -v with no stress left in it.
+    let sc = BridgeScenario {
+        spans: 1,
+        contact: ContactModel::Sears,
+        stiffness: Some(1e12),
+        pier_stiffness_n_m: vec![1e-3],
+        bearing_stiffness_n_m: vec![1e-3],
+        span_velocity_m_s: vec![-1.0],
+        joint_gaps_m: vec![1e-3, 10.0],
+        girder_damping: 0.0,
+        damping_ratio: 0.0,
+        ..BridgeScenario::three_span()
+    };
+    let still = GroundMotion {
+        name: "rest".into(),
+        dt_s: 0.01,
+        accel_m_s2: vec![0.0; 5],
+    };
+    let r = solve(&sc, &still).unwrap();
+    let g = sc.girder(0);
+    let (l, c) = (g.length_m, g.wave_speed_m_s());
+    let full = g.impedance_n_s_m() / g.area_m2;
+    let t0 = r.contacts[0].start_s;
+    let t = t0 + 0.5 * l / c;
+    let behind = r.girder_stress_pa(0, 0.25 * l, t);
+    let ahead = r.girder_stress_pa(0, 0.75 * l, t);
+    assert!(rel(behind, -full) < 0.02, "{behind} against {}", -full);
+    assert!(ahead.abs() < 0.02 * full, "{ahead}");
+    // A quarter round trip after the contact, at points whose arrivals left the end away from
+    // its last instants (where the force falls over its rise time, a sliver of the picture).
+    let after = r.contacts[0].end_s + 0.5 * l / c;
+    for x in [0.15, 0.35, 0.65, 0.85] {
+        let s = r.girder_stress_pa(0, x * l, after);
+        assert!(s.abs() < 0.02 * full, "at {x} L after the rebound: {s}");
+    }
+}
+
+#[test]
+fn girders_without_waves_have_none_to_draw() {
+    let (sc, still) = middle_girder_struck_at_both_ends(1.0);
+    let r = solve(
+        &BridgeScenario {
+            contact: ContactModel::Linear,
+            stiffness: Some(1e10),
+            ..sc
+        },
+        &still,
+    )
+    .unwrap();
+    assert!(r.impacts.len() >= 2);
+    assert!(r.girder_waves.is_empty());
+    assert_eq!(r.girder_stress_pa(1, 20.0, 0.01), 0.0);
+}

@@ -10,7 +10,8 @@
 //! arrival by exp(-tau / t_d), tau its travel time: then H(t) = F(t) + r H(t - T) with
 //! r = exp(-T / t_d), and each term above carries exp(-x / (c t_d)) or exp(-(2l - x) / (c t_d)).
 
-use super::history::sample_at;
+use super::history::{Tap, sample_at};
+use super::ring::{Look, Ring};
 
 /// How a history is stored.
 #[derive(Debug, Clone, PartialEq)]
@@ -95,7 +96,80 @@ pub struct BarWaves {
     pub decay_per_s: f64,
 }
 
+/// What a bar's waves need besides its force history: its geometry, material and damping, and
+/// which way the force pushes it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BarBody {
+    /// [m]
+    pub length_m: f64,
+    /// Cross-section area [m^2].
+    pub area_m2: f64,
+    /// [m/s]
+    pub wave_speed_m_s: f64,
+    /// Z = rho A c [N s/m].
+    pub impedance_n_s_m: f64,
+    /// Material damping 1 / t_d [1/s].
+    pub decay_per_s: f64,
+    /// +1 when the force pushes the bar towards +x.
+    pub push_direction: f64,
+}
+
 impl BarWaves {
+    /// The waves of a bar whose end force was recorded over stretches of a grid of step `h`
+    /// (each stretch: the index of its first sample, and the force at it and after; no force
+    /// between stretches): H = F + r H(t - T) over each stretch, repeated round trip by round
+    /// trip (attenuated by r) between them. `end_s` is the run's end.
+    pub fn from_stretches(
+        body: BarBody,
+        h: f64,
+        stretches: &[(usize, Vec<f64>)],
+        end_s: f64,
+    ) -> Self {
+        let t = 2.0 * body.length_m / body.wave_speed_m_s;
+        let round_steps = t / h;
+        let tap = Look::of(Tap::new(t, h));
+        let r = (-t * body.decay_per_s).exp();
+        let gain = 1.0 / (1.0 - r * tap.newest);
+        // Each stretch starts a round trip early (the previous stretch's ringing): folding past
+        // its end reads its last round trip, which must be stored whatever the contact's length.
+        let lead = round_steps.ceil() as usize + tap.reach() + 4;
+        let mut segments: Vec<HistorySegment> = Vec::with_capacity(stretches.len());
+        let mut ring = Ring::new(tap.reach());
+        for (first, forces) in stretches {
+            // The samples before the stretch: the previous stretch's ringing, or rest.
+            let start = first.saturating_sub(lead);
+            ring.next = start;
+            for i in start..*first {
+                let v = segments.last().map_or(0.0, |s: &HistorySegment| {
+                    s.value_at(i as f64, round_steps, r)
+                });
+                ring.push(v);
+            }
+            let mut values: Vec<f64> = (start..*first).map(|i| ring.at(i as isize)).collect();
+            for &f in forces {
+                let v = (f + r * ring.known(&tap)) * gain;
+                ring.push(v);
+                values.push(v);
+            }
+            segments.push(HistorySegment {
+                first: start,
+                values,
+            });
+        }
+        BarWaves {
+            body_length_m: body.length_m,
+            zone_length_m: 0.0,
+            wave_speed_m_s: body.wave_speed_m_s,
+            area_m2: body.area_m2,
+            impedance_n_s_m: body.impedance_n_s_m,
+            initial_velocity_m_s: 0.0,
+            push_direction: body.push_direction,
+            end_s,
+            history: History::Segments { dt_s: h, segments },
+            decay_per_s: body.decay_per_s,
+        }
+    }
+
     /// The body's round trip 2 L / c [s].
     pub fn round_trip_s(&self) -> f64 {
         2.0 * self.body_length_m / self.wave_speed_m_s

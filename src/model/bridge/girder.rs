@@ -21,6 +21,7 @@
 //! already known).
 
 use super::scenario::Girder;
+use crate::model::field::{BarBody, BarWaves};
 use crate::model::history::Tap;
 use crate::model::ring::{Look, Ring};
 
@@ -51,6 +52,12 @@ pub struct GirderWaves {
     round_trip: Look,
     half_trip: Look,
     ends: [End; 2],
+    /// Steps committed: the grid index of the newest forces.
+    n: usize,
+    /// Each end's force over the stretches it was loaded (the grid index of the first sample,
+    /// the forces), for its stress waves.
+    stretches: [Vec<(usize, Vec<f64>)>; 2],
+    body: BarBody,
 }
 
 /// The known parts of the two ends' elastic displacements at the step's end, before the new
@@ -116,6 +123,16 @@ impl GirderWaves {
             round_trip,
             half_trip: Look::of(Tap::new(0.5 * t, h)),
             ends: [end.clone(), end],
+            n: 0,
+            stretches: [Vec::new(), Vec::new()],
+            body: BarBody {
+                length_m: girder.length_m,
+                area_m2: girder.area_m2,
+                wave_speed_m_s: girder.wave_speed_m_s(),
+                impedance_n_s_m: girder.impedance_n_s_m(),
+                decay_per_s: lam,
+                push_direction: 1.0,
+            },
         }
     }
 
@@ -154,5 +171,38 @@ impl GirderWaves {
             e.b = e.b_star + self.wb[1] * forces[i];
             e.q.push(e.a + self.r * e.q_lag);
         }
+        self.n += 1;
+        for (stretches, f) in self.stretches.iter_mut().zip(forces) {
+            record(stretches, self.n, f);
+        }
+    }
+
+    /// The stress waves from each end over the run (`[0]` from the left end, pushed towards
+    /// +x; `[1]` from the right end, pushed towards -x); the field anywhere in the girder is
+    /// their sum, the right end's read at the distance from that end. `end_s` is the run's end.
+    pub fn waves(&self, end_s: f64) -> [BarWaves; 2] {
+        std::array::from_fn(|i| {
+            let body = BarBody {
+                push_direction: if i == 0 { 1.0 } else { -1.0 },
+                ..self.body
+            };
+            BarWaves::from_stretches(body, self.h, &self.stretches[i], end_s)
+        })
+    }
+}
+
+/// Keeps the force `f` at grid index `n` where it belongs: a stretch opens a sample before the
+/// first nonzero force (the rest it starts from), and closes after two zero forces (the waves
+/// then only ring, which the history reads without samples).
+fn record(stretches: &mut Vec<(usize, Vec<f64>)>, n: usize, f: f64) {
+    match stretches.last_mut() {
+        Some((first, v)) if *first + v.len() == n => {
+            let quiet = v.len() >= 2 && v[v.len() - 1] == 0.0 && v[v.len() - 2] == 0.0;
+            if f != 0.0 || !quiet {
+                v.push(f);
+            }
+        }
+        _ if f != 0.0 => stretches.push((n - 1, vec![0.0, f])),
+        _ => {}
     }
 }

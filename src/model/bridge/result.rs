@@ -4,6 +4,7 @@
 use super::scenario::Joint;
 use crate::model::building::ContactModel;
 use crate::model::building::result::{ImpactEvent, RawContact};
+use crate::model::field::BarWaves;
 
 /// A joint that opened further than its seat: when it first did.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -111,6 +112,10 @@ pub struct BridgeResult {
     pub peak_pier_displacement_m: Vec<f64>,
     /// Each bearing's peak |u_girder - u_pier| [m].
     pub peak_bearing_displacement_m: Vec<f64>,
+    /// Under Sears, each girder's stress waves from its left end and from its right end (see
+    /// [`super::girder::GirderWaves::waves`]); empty for the other elements, whose girders are
+    /// rigid.
+    pub girder_waves: Vec<[BarWaves; 2]>,
     /// Where the energy went.
     pub energy: BridgeEnergy,
     /// What the run cost.
@@ -119,4 +124,22 @@ pub struct BridgeResult {
     pub duration_s: f64,
     /// What the reader must know besides the numbers.
     pub warnings: Vec<String>,
+}
+
+impl BridgeResult {
+    /// Axial stress in girder `i` at distance `x_m` from its left end at time `t_s` [Pa],
+    /// tension positive: the waves from both ends added (zero for rigid girders).
+    pub fn girder_stress_pa(&self, i: usize, x_m: f64, t_s: f64) -> f64 {
+        self.girder_waves.get(i).map_or(0.0, |[left, right]| {
+            left.stress_pa(x_m, t_s) + right.stress_pa(left.body_length_m - x_m, t_s)
+        })
+    }
+
+    /// The waves' particle velocity in girder `i` at `x_m` from its left end [m/s], on top of
+    /// the girder's rigid motion (its frame's), positive to the right.
+    pub fn girder_wave_velocity_m_s(&self, i: usize, x_m: f64, t_s: f64) -> f64 {
+        self.girder_waves.get(i).map_or(0.0, |[left, right]| {
+            left.velocity_m_s(x_m, t_s) + right.velocity_m_s(left.body_length_m - x_m, t_s)
+        })
+    }
 }

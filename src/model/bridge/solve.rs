@@ -850,6 +850,12 @@ fn finish(
         peak_girder_displacement_m: peaks.girder,
         peak_pier_displacement_m: peaks.pier,
         peak_bearing_displacement_m: peaks.bearing,
+        girder_waves: run
+            .girders
+            .iter()
+            .flatten()
+            .map(|g| g.waves(steps as f64 * run.h))
+            .collect(),
         energy,
         stats: BridgeStats {
             steps,

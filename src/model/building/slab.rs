@@ -32,7 +32,7 @@
 //! over each stretch of contact and repeated, attenuated, between them).
 
 use super::Slab;
-use crate::model::field::{BarWaves, History, HistorySegment};
+use crate::model::field::{BarBody, BarWaves};
 use crate::model::history::Tap;
 use crate::model::ring::{Look, Ring};
 
@@ -123,19 +123,9 @@ pub struct SlabWaves {
     spare: Quiet,
     /// Stretches of forces while stepping: (index of the first, the forces).
     forces: Vec<(usize, Vec<f64>)>,
-    geometry: Geometry,
+    geometry: BarBody,
 }
 
-/// What [`SlabWaves::waves`] needs to describe the bar.
-#[derive(Debug, Clone, Copy)]
-struct Geometry {
-    length_m: f64,
-    area_m2: f64,
-    wave_speed_m_s: f64,
-    impedance_n_s_m: f64,
-    decay_per_s: f64,
-    push_direction: f64,
-}
 
 /// A saved state to return to after one trial step.
 #[derive(Debug, Clone, Copy)]
@@ -214,7 +204,7 @@ impl SlabWaves {
             }),
             spare: Quiet::default(),
             forces: Vec::new(),
-            geometry: Geometry {
+            geometry: BarBody {
                 length_m: slab.length_m,
                 area_m2: slab.area_m2(),
                 wave_speed_m_s: c,
@@ -546,51 +536,6 @@ impl SlabWaves {
     /// them, read as any bar's (stress from the contact end to the free end). `end_s` is the
     /// run's end.
     pub fn waves(&self, end_s: f64) -> BarWaves {
-        let g = self.geometry;
-        let t = 2.0 * g.length_m / g.wave_speed_m_s;
-        let tap = Look::of(Tap::new(t, self.h));
-        let r = self.round_decay;
-        let gain = 1.0 / (1.0 - r * tap.newest);
-        // Each stretch starts a round trip early (the previous stretch's ringing): folding past
-        // its end reads its last round trip, which must be stored whatever the contact's length.
-        let lead = self.round_steps.ceil() as usize + tap.reach() + 4;
-        let mut segments: Vec<HistorySegment> = Vec::with_capacity(self.forces.len());
-        let mut ring = Ring::new(tap.reach());
-        for (first, forces) in &self.forces {
-            // The samples before the stretch: the previous stretch's ringing, or rest.
-            let start = first.saturating_sub(lead);
-            ring.next = start;
-            for i in start..*first {
-                let v = segments.last().map_or(0.0, |s: &HistorySegment| {
-                    s.value_at(i as f64, self.round_steps, r)
-                });
-                ring.push(v);
-            }
-            let mut values: Vec<f64> = (start..*first).map(|i| ring.at(i as isize)).collect();
-            for &f in forces {
-                let v = (f + r * ring.known(&tap)) * gain;
-                ring.push(v);
-                values.push(v);
-            }
-            segments.push(HistorySegment {
-                first: start,
-                values,
-            });
-        }
-        BarWaves {
-            body_length_m: g.length_m,
-            zone_length_m: 0.0,
-            wave_speed_m_s: g.wave_speed_m_s,
-            area_m2: g.area_m2,
-            impedance_n_s_m: g.impedance_n_s_m,
-            initial_velocity_m_s: 0.0,
-            push_direction: g.push_direction,
-            end_s,
-            history: History::Segments {
-                dt_s: self.h,
-                segments,
-            },
-            decay_per_s: g.decay_per_s,
-        }
+        BarWaves::from_stretches(self.geometry, self.h, &self.forces, end_s)
     }
 }
