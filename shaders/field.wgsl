@@ -7,6 +7,9 @@
 // and in a massless contact zone ahead of the body (collocated reading) N = F(t) = H(t) - H(t - T).
 // A lumped body (kind 1) is its uniform-stress equivalent: the history holds F(t), and a second
 // one, at aux_offset, the impulse J(t): N = F everywhere, v = v0 + push J / m.
+// A bar loaded at both ends (kind 2, a bridge girder) holds the history of its end x = 0 and,
+// at aux_offset on the same grid, that of its far end: the field is the sum of the two ends'
+// d'Alembert fields, the far end's read at the distance from it and pushing the other way.
 
 struct Bar {
     origin_x: f32,          // world x of the impacting end
@@ -29,8 +32,8 @@ struct Bar {
     initial_velocity: f32,  // m/s, lab frame
     push_direction: f32,    // +1 when the contact pushes the bar towards +x
     inv_velocity_scale: f32, // s/m: velocity that saturates the colour map
-    kind: u32,              // 0: d'Alembert bar, 1: lumped body (uniform stress)
-    aux_offset: u32,        // kind 1: the impulse history
+    kind: u32,              // 0: d'Alembert bar, 1: lumped body, 2: loaded at both ends
+    aux_offset: u32,        // kind 1: the impulse history; kind 2: the far end's history
     inv_mass: f32,          // kind 1: 1/kg
     _pad: f32,
 };
@@ -70,9 +73,10 @@ fn sample(b: Bar, offset: u32, t: f32) -> f32 {
     return mix(history[offset + i], history[offset + i + 1u], f);
 }
 
-// H(t): zero before the impact; after the simulated span each round trip repeats the last,
-// attenuated by the damping. One look-up: the work per pixel does not grow with the history.
-fn history_at(b: Bar, t_in: f32) -> f32 {
+// H(t) of the history at `offset`: zero before the impact; after the simulated span each round
+// trip repeats the last, attenuated by the damping. One look-up: the work per pixel does not
+// grow with the history.
+fn history_from(b: Bar, offset: u32, t_in: f32) -> f32 {
     var t = t_in;
     var weight = 1.0;
     if (t < 0.0) {
@@ -86,7 +90,23 @@ fn history_at(b: Bar, t_in: f32) -> f32 {
             return 0.0;
         }
     }
-    return weight * sample(b, b.offset, t);
+    return weight * sample(b, offset, t);
+}
+
+fn history_at(b: Bar, t: f32) -> f32 {
+    return history_from(b, b.offset, t);
+}
+
+// The arrivals at distance x into the body from the end whose history is at `offset`: direct
+// (H(t - x/c)) and reflected from the other end (H(t - (2L - x)/c)), each attenuated.
+fn arrivals(b: Bar, offset: u32, x: f32, t: f32) -> vec2<f32> {
+    let xs = clamp(x, 0.0, b.body_length);
+    let near = xs / b.wave_speed;
+    let far = (2.0 * b.body_length - xs) / b.wave_speed;
+    return vec2<f32>(
+        attenuation(b, near) * history_from(b, offset, t - near),
+        attenuation(b, far) * history_from(b, offset, t - far),
+    );
 }
 
 // Axial force at distance `d` from the impacting end (zone included), compression positive.
@@ -98,10 +118,13 @@ fn force_at(b: Bar, d: f32, t: f32) -> f32 {
     if (x < 0.0) {
         return history_at(b, t) - attenuation(b, b.round_trip) * history_at(b, t - b.round_trip);
     }
-    let xs = min(x, b.body_length);
-    let near = xs / b.wave_speed;
-    let far = (2.0 * b.body_length - xs) / b.wave_speed;
-    return attenuation(b, near) * history_at(b, t - near) - attenuation(b, far) * history_at(b, t - far);
+    let own = arrivals(b, b.offset, x, t);
+    var n = own.x - own.y;
+    if (b.kind == 2u) {
+        let other = arrivals(b, b.aux_offset, b.body_length - x, t);
+        n = n + other.x - other.y;
+    }
+    return n;
 }
 
 // Axial stress, tension positive [Pa].
@@ -114,10 +137,13 @@ fn velocity_at(b: Bar, d: f32, t: f32) -> f32 {
     if (b.kind == 1u) {
         return b.initial_velocity + b.push_direction * sample(b, b.aux_offset, t) * b.inv_mass;
     }
-    let xs = clamp(d - b.zone_length, 0.0, b.body_length);
-    let near = xs / b.wave_speed;
-    let far = (2.0 * b.body_length - xs) / b.wave_speed;
-    let g = attenuation(b, near) * history_at(b, t - near) + attenuation(b, far) * history_at(b, t - far);
+    let x = d - b.zone_length;
+    let own = arrivals(b, b.offset, x, t);
+    var g = own.x + own.y;
+    if (b.kind == 2u) {
+        let other = arrivals(b, b.aux_offset, b.body_length - x, t);
+        g = g - other.x - other.y;
+    }
     return b.initial_velocity + b.push_direction * g * b.inv_impedance;
 }
 

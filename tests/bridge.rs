@@ -508,15 +508,27 @@ fn stress_fronts_from_both_ends_of_a_girder_meet_and_add_as_wave_theory_says() {
     let (l, c) = (g.length_m, g.wave_speed_m_s());
     let front = g.impedance_n_s_m() * v / (2.0 * g.area_m2);
     let t0 = 1e-3;
-    let first = r.contacts.iter().map(|c| c.start_s).fold(f64::MAX, f64::min);
+    let first = r
+        .contacts
+        .iter()
+        .map(|c| c.start_s)
+        .fold(f64::MAX, f64::min);
     assert!((first - t0).abs() < 1e-6, "first contact at {first}");
     // After L / (4c) each front is a quarter of the way in.
     let t = t0 + 0.25 * l / c;
     let near_left = r.girder_stress_pa(1, 0.125 * l, t);
     let near_right = r.girder_stress_pa(1, 0.875 * l, t);
     let middle = r.girder_stress_pa(1, 0.5 * l, t);
-    assert!(rel(near_left, -front) < 0.02, "{near_left} against {}", -front);
-    assert!(rel(near_right, -front) < 0.02, "{near_right} against {}", -front);
+    assert!(
+        rel(near_left, -front) < 0.02,
+        "{near_left} against {}",
+        -front
+    );
+    assert!(
+        rel(near_right, -front) < 0.02,
+        "{near_right} against {}",
+        -front
+    );
     assert!(middle.abs() < 0.02 * front, "ahead of the fronts: {middle}");
     // Behind the left front the girder moves right at w/2, behind the right front left.
     let v_left = r.girder_wave_velocity_m_s(1, 0.125 * l, t);
@@ -526,14 +538,22 @@ fn stress_fronts_from_both_ends_of_a_girder_meet_and_add_as_wave_theory_says() {
     // Three quarters: the fronts have passed each other in the middle and add.
     let t = t0 + 0.75 * l / c;
     let met = r.girder_stress_pa(1, 0.5 * l, t);
-    assert!(rel(met, -2.0 * front) < 0.02, "{met} against {}", -2.0 * front);
+    assert!(
+        rel(met, -2.0 * front) < 0.02,
+        "{met} against {}",
+        -2.0 * front
+    );
     let still_middle = r.girder_wave_velocity_m_s(1, 0.5 * l, t);
     assert!(still_middle.abs() < 0.02 * v, "{still_middle}");
     // The struck end of an outer girder carries its joint's force: stress -F / A there.
     let k = r.time_s.partition_point(|&s| s < t0 + 0.5 * l / c);
     let (t, f) = (r.time_s[k], r.joint_force_n[1][k]);
     let end = r.girder_stress_pa(0, l, t);
-    assert!(rel(end, -f / g.area_m2) < 1e-6, "{end} against {}", -f / g.area_m2);
+    assert!(
+        rel(end, -f / g.area_m2) < 1e-6,
+        "{end} against {}",
+        -f / g.area_m2
+    );
 }
 
 #[test]

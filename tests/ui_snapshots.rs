@@ -111,3 +111,28 @@ fn lecture_mode_at_projector_size_matches_its_snapshot() {
         &SnapshotOptions::new().max_failed_pixels(MAX_FAILED_PIXELS),
     );
 }
+
+#[test]
+fn bridge_scene_matches_its_snapshot() {
+    // The travelling wave's preset while girders pound: fronts in the girders at joint 1.
+    snapshot_of(
+        SceneKind::Bridge,
+        "bridge-3-span-passage",
+        2.0,
+        "scene-bridge",
+        860.0,
+    );
+}
+
+#[test]
+fn an_unseated_joint_turns_its_seat_red_down_to_the_decks_space_time_diagram() {
+    // Past 2.52 s, when joint 2 has opened further than its 0.1 m seat: its seat is red, the
+    // table says when; tall enough for the impact list and the deck's x-t diagram.
+    snapshot_of(
+        SceneKind::Bridge,
+        "bridge-3-span-unseating",
+        2.6,
+        "scene-bridge-unseated",
+        1900.0,
+    );
+}

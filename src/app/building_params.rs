@@ -6,7 +6,7 @@ use super::params::{Fields, Spec};
 use crate::io::building_settings::{BUILDINGS, BuildingSetup};
 use crate::model::building::{Building, ContactModel, DampingModel, SlabReading};
 use crate::model::hysteresis::Hysteresis;
-use crate::model::settings::{Range, SIDES, Setting, building as setting};
+use crate::model::settings::{SIDES, Setting, building as setting};
 use eframe::egui;
 
 /// The row of a building setting of one side (0: left) or of the pair, through the registry.
@@ -180,7 +180,9 @@ pub fn ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup, pat
         .show(ui, |ui| contact_ui(ui, fields, setup));
     egui::CollapsingHeader::new("Ground motion")
         .default_open(true)
-        .show(ui, |ui| motion_ui(ui, fields, setup, path));
+        .show(ui, |ui| {
+            super::motion_params::ui(ui, fields, setup, &BUILDINGS, path)
+        });
 }
 
 fn contact_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup) {
@@ -214,82 +216,4 @@ fn contact_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup)
     row(ui, fields, &setting::SLAB_DAMPING, 0, setup);
     row(ui, fields, &setting::MERGE_GAP, 0, setup);
     row(ui, fields, &setting::TOLERANCE, 0, setup);
-}
-
-fn motion_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup, path: &mut String) {
-    let m = &mut setup.motion;
-    let built_in = crate::io::motion::BUILT_IN;
-    let shown = match &m.file {
-        None => "synthetic (Kanai-Tajimi)".to_string(),
-        Some(f) => built_in
-            .iter()
-            .find(|b| b.name == f)
-            .map_or_else(|| "file".to_string(), |b| b.title.to_string()),
-    };
-    ui.horizontal(|ui| {
-        let label = ui.label("record").id;
-        egui::ComboBox::from_id_salt("motion-record")
-            .selected_text(shown)
-            .show_ui(ui, |ui| {
-                for b in built_in {
-                    if ui
-                        .selectable_label(m.file.as_deref() == Some(b.name), b.title)
-                        .on_hover_text(b.about)
-                        .clicked()
-                    {
-                        m.file = Some(b.name.to_string());
-                    }
-                }
-                if ui
-                    .selectable_label(m.file.is_none(), "synthetic (Kanai-Tajimi)")
-                    .on_hover_text("A seeded synthetic record: PGA and seed below")
-                    .clicked()
-                {
-                    m.file = None;
-                }
-            })
-            .response
-            .labelled_by(label);
-    });
-    ui.horizontal(|ui| {
-        let label = ui.label("file").id;
-        ui.add(
-            egui::TextEdit::singleline(path)
-                .hint_text(".AT2 or text file (or drop one here)")
-                .desired_width(170.0),
-        )
-        .labelled_by(label);
-        if ui.button("Load").clicked() && !path.trim().is_empty() {
-            m.file = Some(path.trim().to_string());
-        }
-    });
-    // A factor of 0 is refused by the entry: the record keeps its last factor.
-    row(ui, fields, &setting::MOTION_SCALE, 0, setup);
-    row(ui, fields, &setting::MOTION_SETTLE, 0, setup);
-    let duration = BUILDINGS.entry(&setting::MOTION_DURATION);
-    // 0 here means the whole record.
-    let whole = Spec {
-        tooltip: "Use only the first seconds of the record (0: all of it)",
-        typed: Range::closed(0.0, 1e6),
-        ..Spec::of(duration.setting)
-    };
-    let mut d = setup.motion.duration_s.unwrap_or(0.0);
-    if fields.row(ui, &duration.setting.key_of(0), &whole, &mut d) {
-        if d > 0.0 {
-            let _ = duration.set_number(setup, 0, d);
-        } else {
-            setup.motion.duration_s = None;
-        }
-    }
-    if setup.motion.file.is_none() {
-        row(ui, fields, &setting::MOTION_PGA, 0, setup);
-        let seed = BUILDINGS.entry(&setting::MOTION_SEED);
-        // The table's span is every seed there is; a slider over it could not pick one.
-        let seeds = Spec {
-            max: 1e6,
-            ..Spec::of(seed.setting)
-        };
-        let value = setup.motion.synthetic.seed as f64;
-        fields.entry_row(ui, seed, 0, setup, &seeds, value);
-    }
 }

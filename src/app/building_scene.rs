@@ -116,16 +116,8 @@ impl BuildingScene {
 
     /// A dropped file becomes the ground motion.
     pub fn take_dropped(&mut self, ctx: &egui::Context) {
-        let dropped: Vec<_> = ctx.input(|i| {
-            i.raw
-                .dropped_files
-                .iter()
-                .map(|f| f.path().to_path_buf())
-                .filter(|p| !p.as_os_str().is_empty())
-                .collect()
-        });
-        if let Some(path) = dropped.first() {
-            self.load_motion(path.display().to_string());
+        if let Some(path) = dropped_path(ctx) {
+            self.load_motion(path);
         }
     }
 
@@ -600,6 +592,18 @@ impl BuildingScene {
             self.playback.speed = 1e-3;
         }
     }
+}
+
+/// The first file dropped on the window this frame, if any.
+pub(super) fn dropped_path(ctx: &egui::Context) -> Option<String> {
+    ctx.input(|i| {
+        i.raw
+            .dropped_files
+            .iter()
+            .map(|f| f.path().to_path_buf())
+            .find(|p| !p.as_os_str().is_empty())
+            .map(|p| p.display().to_string())
+    })
 }
 
 /// The gap that avoids pounding for this record, against the code rules.

@@ -10,30 +10,7 @@ use crate::app::worker::Landed;
 use crate::model::building::BuildingErrorEstimate;
 use std::time::Duration;
 
-/// A stage that comes after the run: on its way, landed, or not coming (its request ended
-/// without it; the error line says why).
-pub(super) enum Later<T> {
-    Pending,
-    Ready(T),
-    Missing,
-}
-
-impl<T> Later<T> {
-    pub(super) fn ready(&self) -> Option<&T> {
-        match self {
-            Later::Ready(t) => Some(t),
-            _ => None,
-        }
-    }
-
-    /// What a readout shows in place of the stage's value.
-    pub(super) fn absent(&self) -> &'static str {
-        match self {
-            Later::Missing => "not solved",
-            _ => "pending",
-        }
-    }
-}
+pub(super) use crate::app::later::Later;
 
 /// What is on screen: one request's run (whole, or as far as it has solved) and its later
 /// stages as they land. A stage joins only the run of its own request, so nothing shown mixes

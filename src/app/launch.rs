@@ -5,6 +5,7 @@ pub enum SceneKind {
     BarImpact,
     WaveVsLumped,
     Buildings,
+    Bridge,
     Study,
 }
 
@@ -14,6 +15,7 @@ impl SceneKind {
             SceneKind::BarImpact => "bar",
             SceneKind::WaveVsLumped => "compare",
             SceneKind::Buildings => "buildings",
+            SceneKind::Bridge => "bridge",
             SceneKind::Study => "study",
         }
     }
@@ -22,6 +24,7 @@ impl SceneKind {
             SceneKind::BarImpact,
             SceneKind::WaveVsLumped,
             SceneKind::Buildings,
+            SceneKind::Bridge,
             SceneKind::Study,
         ]
         .into_iter()

@@ -29,6 +29,10 @@ impl PoundingApp {
                 .on_hover_text("Sears, wave theory, lumped and FE models overlaid");
             ui.selectable_value(&mut self.scene, SceneKind::Buildings, "Building pounding")
                 .on_hover_text("Two buildings swaying in an earthquake, with and without pounding");
+            ui.selectable_value(&mut self.scene, SceneKind::Bridge, "Bridge pounding")
+                .on_hover_text(
+                    "Bridge girders pounding at their joints, stress waves in the deck, seats running out",
+                );
             ui.selectable_value(&mut self.scene, SceneKind::Study, "Parameter study")
                 .on_hover_text(
                     "One setting swept over a range: peak force, duration and e per model",
@@ -79,6 +83,8 @@ impl PoundingApp {
                         Err(e) => self.message = Some((e.to_string(), true)),
                     }
                 }
+            } else if self.scene == SceneKind::Bridge {
+                self.bridge_preset_ui(ui);
             } else {
                 self.preset_ui(ui);
             }
@@ -104,6 +110,41 @@ impl PoundingApp {
                 self.help = !self.help;
             }
         });
+    }
+
+    /// The bridge presets, and loading one into the Bridge pounding scene.
+    fn bridge_preset_ui(&mut self, ui: &mut egui::Ui) {
+        let label = ui.label("preset").id;
+        egui::ComboBox::from_id_salt("bridge-preset")
+            .selected_text(&self.bridge_preset)
+            .show_ui(ui, |ui| {
+                for (name, text) in EMBEDDED
+                    .iter()
+                    .filter(|(_, t)| preset::scene(t) == "bridge")
+                {
+                    ui.selectable_value(&mut self.bridge_preset, name.to_string(), *name)
+                        .on_hover_text(preset::description(text).unwrap_or_default());
+                }
+            })
+            .response
+            .labelled_by(label);
+        if ui
+            .button("Load preset")
+            .on_hover_text("Replace the bridge by the preset's")
+            .clicked()
+        {
+            match preset::load_for::<crate::io::bridge_settings::BridgeSetup>(
+                &self.bridge_preset,
+                "bridge",
+            ) {
+                Ok(s) => {
+                    self.bridge.setup = s;
+                    self.bridge.reset_fields();
+                    self.bridge.request();
+                }
+                Err(e) => self.message = Some((e.to_string(), true)),
+            }
+        }
     }
 
     fn lessons_menu(&mut self, ui: &mut egui::Ui) {
@@ -154,7 +195,8 @@ impl PoundingApp {
     }
 
     fn file_menu(&mut self, ui: &mut egui::Ui) {
-        if self.scene != SceneKind::Buildings {
+        let recorded = matches!(self.scene, SceneKind::Buildings | SceneKind::Bridge);
+        if !recorded {
             if ui.button("Open scene...").clicked() {
                 self.dialogs.ask(dialog::Purpose::OpenScene, &self.path);
                 ui.close();
@@ -341,6 +383,9 @@ impl PoundingApp {
             dialog::Purpose::ExportFolder => {
                 self.exporter.prefix = path.join("pounding").display().to_string();
                 self.message = Some((format!("exports go to {shown}"), false));
+            }
+            dialog::Purpose::Motion if self.scene == SceneKind::Bridge => {
+                self.bridge.load_motion(shown)
             }
             dialog::Purpose::Motion => self.buildings.load_motion(shown),
         }

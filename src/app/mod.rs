@@ -4,6 +4,11 @@
 mod background;
 mod bar_scene;
 mod bar_view;
+mod bridge_job;
+mod bridge_params;
+mod bridge_scene;
+pub(crate) mod bridge_view;
+mod bridge_xt;
 mod building_job;
 mod building_params;
 mod building_scene;
@@ -17,11 +22,13 @@ mod export_animation;
 mod hysteresis_view;
 mod impact_params;
 mod impact_scene;
+mod later;
 mod launch;
 mod lecture;
 mod lesson_panel;
 pub mod lesson_player;
 mod menus;
+mod motion_params;
 mod paper_figures;
 mod params;
 mod persistence;
@@ -40,6 +47,7 @@ mod xt_view;
 use crate::io::preset::{self, EMBEDDED};
 use crate::io::settings::ImpactSetup;
 use bar_scene::BarScene;
+use bridge_scene::BridgeScene;
 use building_scene::BuildingScene;
 use compare_scene::CompareScene;
 use eframe::egui;
@@ -50,7 +58,7 @@ pub use launch::{HIDE_TIMINGS, Launch, SceneKind};
 pub use lecture::ZOOM as LECTURE_ZOOM;
 pub use lesson_panel::reflow;
 pub use lesson_player::LessonPlayer;
-use persistence::{BUILDINGS_KEY, COMPARE_KEY, IMPACT_KEY, STUDY_KEY, UI_KEY, restore};
+use persistence::{BRIDGE_KEY, BUILDINGS_KEY, COMPARE_KEY, IMPACT_KEY, STUDY_KEY, UI_KEY, restore};
 use status::ms;
 use std::time::Instant;
 
@@ -59,11 +67,13 @@ pub struct PoundingApp {
     bar: BarScene,
     compare: CompareScene,
     buildings: BuildingScene,
+    bridge: BridgeScene,
     study: study_scene::StudyScene,
     dark: bool,
     help: bool,
     preset_choice: String,
     building_preset: String,
+    bridge_preset: String,
     path: String,
     message: Option<(String, bool)>,
     exporter: export::Exporter,
@@ -95,6 +105,7 @@ impl PoundingApp {
             bar: bar_setup,
             compare: compare_setup,
             buildings: building_setup,
+            bridge: bridge_setup,
             scene,
             dark,
             building_launch,
@@ -115,11 +126,13 @@ impl PoundingApp {
             },
         );
         let mut buildings = BuildingScene::new(ctx, building_setup);
+        let mut bridge = BridgeScene::new(ctx, bridge_setup);
         if let Some(t) = launch.time_s {
             for p in [
                 &mut bar.core.playback,
                 &mut compare.core.playback,
                 &mut buildings.playback,
+                &mut bridge.playback,
             ] {
                 p.playing = false;
                 p.t = t;
@@ -143,6 +156,7 @@ impl PoundingApp {
             bar,
             compare,
             buildings,
+            bridge,
             study,
             dark,
             help: false,
@@ -154,6 +168,15 @@ impl PoundingApp {
             building_preset: building_launch
                 .filter(|p| EMBEDDED.iter().any(|(n, _)| n == p))
                 .unwrap_or_else(|| "paper-buildings".into()),
+            bridge_preset: launch
+                .preset
+                .clone()
+                .filter(|p| {
+                    EMBEDDED
+                        .iter()
+                        .any(|(n, t)| n == p && preset::scene(t) == "bridge")
+                })
+                .unwrap_or_else(|| "bridge-3-span".into()),
             path: "scene.toml".into(),
             message: (!errors.is_empty()).then(|| (errors.join("; "), true)),
             exporter: export::Exporter::default(),
@@ -209,6 +232,7 @@ impl PoundingApp {
             SceneKind::BarImpact => self.bar.core.playback.t,
             SceneKind::WaveVsLumped => self.compare.core.playback.t,
             SceneKind::Buildings => self.buildings.playback.t,
+            SceneKind::Bridge => self.bridge.playback.t,
             SceneKind::Study => self.study.playback.t,
         }
     }
@@ -225,7 +249,11 @@ impl PoundingApp {
 
     /// A solve is under way in some scene.
     pub fn is_solving(&self) -> bool {
-        self.bar.busy() || self.compare.busy() || self.buildings.busy() || self.study.busy()
+        self.bar.busy()
+            || self.compare.busy()
+            || self.buildings.busy()
+            || self.bridge.busy()
+            || self.study.busy()
     }
 
     /// The scene on screen.
@@ -234,6 +262,7 @@ impl PoundingApp {
             SceneKind::BarImpact => &self.bar,
             SceneKind::WaveVsLumped => &self.compare,
             SceneKind::Buildings => &self.buildings,
+            SceneKind::Bridge => &self.bridge,
             SceneKind::Study => &self.study,
         }
     }
@@ -244,6 +273,7 @@ impl PoundingApp {
             SceneKind::BarImpact => &mut self.bar,
             SceneKind::WaveVsLumped => &mut self.compare,
             SceneKind::Buildings => &mut self.buildings,
+            SceneKind::Bridge => &mut self.bridge,
             SceneKind::Study => &mut self.study,
         };
         (scene, &self.exporter)
@@ -264,6 +294,7 @@ impl eframe::App for PoundingApp {
         self.bar.poll();
         self.compare.poll();
         self.buildings.poll();
+        self.bridge.poll();
         // The study starts from the Bar impact and Building pounding scenes' settings; only the
         // shown study can Run.
         if self.scene == SceneKind::Study {
@@ -276,6 +307,11 @@ impl eframe::App for PoundingApp {
         self.study.poll();
         if self.scene == SceneKind::Buildings {
             self.buildings.take_dropped(&ctx);
+        }
+        if self.scene == SceneKind::Bridge
+            && let Some(path) = building_scene::dropped_path(&ctx)
+        {
+            self.bridge.load_motion(path);
         }
         self.dialog_done();
         if self.dialogs.is_open() {
@@ -386,6 +422,7 @@ struct Start {
     bar: ImpactSetup,
     compare: ImpactSetup,
     buildings: crate::io::building_settings::BuildingSetup,
+    bridge: crate::io::bridge_settings::BridgeSetup,
     scene: SceneKind,
     dark: bool,
     /// The launch preset, where it is a buildings preset.
@@ -425,10 +462,14 @@ fn start(
         .preset
         .as_deref()
         .filter(|p| preset::find(p).is_ok_and(|(text, _)| preset::scene(&text) == "buildings"));
+    let bridge_launch = launch
+        .preset
+        .as_deref()
+        .filter(|p| preset::find(p).is_ok_and(|(text, _)| preset::scene(&text) == "bridge"));
     if let Some(p) = launch
         .preset
         .as_deref()
-        .filter(|_| building_launch.is_none())
+        .filter(|_| building_launch.is_none() && bridge_launch.is_none())
     {
         match preset::load_for::<ImpactSetup>(p, "impact") {
             Ok(s) => bar_setup = s,
@@ -452,10 +493,33 @@ fn start(
             Err(e) => errors.push(format!("{e} (the paper's buildings are used)")),
         }
     }
+    let mut bridge_setup = crate::io::bridge_settings::BridgeSetup::default();
+    if let Some(p) = bridge_launch {
+        match preset::load_for(p, "bridge") {
+            Ok(s) => bridge_setup = s,
+            Err(e) => errors.push(e.to_string()),
+        }
+        if launch.scene.is_none() {
+            scene = SceneKind::Bridge;
+        }
+    } else {
+        match preset::load_for("bridge-3-span", "bridge") {
+            Ok(s) => bridge_setup = s,
+            Err(e) => errors.push(e.to_string()),
+        }
+        if let Some(text) = storage.and_then(|s| s.get_string(BRIDGE_KEY)) {
+            let mut restored = bridge_setup.clone();
+            match preset::apply_text(&mut restored, &text, "the last session's bridge scene") {
+                Ok(()) => bridge_setup = restored,
+                Err(e) => errors.push(format!("{e} (the bridge-3-span preset is used)")),
+            }
+        }
+    }
     Start {
         bar: bar_setup,
         compare: compare_setup,
         buildings: building_setup,
+        bridge: bridge_setup,
         scene,
         dark,
         building_launch: building_launch.map(str::to_string),

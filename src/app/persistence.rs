@@ -12,6 +12,7 @@ pub(super) const COMPARE_KEY: &str = "compare-scene-v1";
 pub(super) const UI_KEY: &str = "ui-v1";
 pub(super) const BUILDINGS_KEY: &str = "buildings-scene-v1";
 pub(super) const STUDY_KEY: &str = "study-scene-v1";
+pub(super) const BRIDGE_KEY: &str = "bridge-scene-v1";
 
 pub(super) fn restore(
     storage: Option<&dyn eframe::Storage>,
@@ -44,6 +45,7 @@ pub(super) fn save(app: &PoundingApp, storage: &mut dyn eframe::Storage) {
         BUILDINGS_KEY,
         preset::buildings_to_toml(&app.buildings.setup),
     );
+    storage.set_string(BRIDGE_KEY, preset::bridge_to_toml(&app.bridge.setup));
     storage.set_string(
         UI_KEY,
         format!(

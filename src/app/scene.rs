@@ -2,6 +2,7 @@
 //! File menu handle every scene alike (a new scene implements this and nothing else changes).
 
 use super::bar_scene::BarScene;
+use super::bridge_scene::BridgeScene;
 use super::building_scene::BuildingScene;
 use super::compare_scene::CompareScene;
 use super::export::{Exporter, ShownPlot};
@@ -108,6 +109,42 @@ impl Scene for BuildingScene {
     }
     fn main_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
         BuildingScene::main_ui(self, ui, exporter)
+    }
+}
+
+impl Scene for BridgeScene {
+    fn playback(&mut self) -> &mut Playback {
+        &mut self.playback
+    }
+    fn busy(&self) -> bool {
+        BridgeScene::busy(self)
+    }
+    fn progress(&self) -> Option<f64> {
+        BridgeScene::progress(self)
+    }
+    fn cancel(&mut self) {
+        BridgeScene::cancel(self)
+    }
+    fn timings(&self) -> (Duration, Duration) {
+        self.slot.timings()
+    }
+    fn solving_note(&self) -> String {
+        BridgeScene::solving_note(self)
+    }
+    fn later_stages(&self) -> Option<String> {
+        Some(BridgeScene::later_stages(self))
+    }
+    fn view_rect(&self) -> Option<egui::Rect> {
+        self.view_rect
+    }
+    fn shown_plots(&self) -> Vec<(&str, &ShownPlot)> {
+        BridgeScene::shown_plots(self)
+    }
+    fn params_ui(&mut self, ui: &mut egui::Ui) {
+        BridgeScene::params_ui(self, ui)
+    }
+    fn main_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
+        BridgeScene::main_ui(self, ui, exporter)
     }
 }
 

@@ -13,3 +13,7 @@ pub const BAR_XT: u64 = 10;
 pub const COMPARE_XT: u64 = 20;
 /// The building scene's x-t diagram of the slabs.
 pub const BUILDING_XT: u64 = 30;
+/// The Bridge pounding scene's girders.
+pub const BRIDGE_VIEW: u64 = 4;
+/// The Bridge pounding scene's x-t diagram of the deck.
+pub const BRIDGE_XT: u64 = 40;

@@ -71,10 +71,10 @@ pub struct XtDiagram<'a> {
 }
 
 /// Margins for the time axis labels and the colour bar [points].
-const LEFT: f32 = 52.0;
-const RIGHT: f32 = 96.0;
-const BOTTOM: f32 = 16.0;
-const TOP: f32 = 18.0;
+pub(super) const LEFT: f32 = 52.0;
+pub(super) const RIGHT: f32 = 96.0;
+pub(super) const BOTTOM: f32 = 16.0;
+pub(super) const TOP: f32 = 18.0;
 
 /// One drawing of the diagram: the viewport of its plot area (x in world metres, y from 0 at
 /// the start of the span to 1 at its end) and the bars laid out in it.
@@ -317,50 +317,57 @@ impl XtDiagram<'_> {
         field: XtShown,
         text: Color32,
     ) {
-        let bar = Rect::from_min_max(
-            Pos2::new(rect.right() - RIGHT + 10.0, plot.top()),
-            Pos2::new(rect.right() - RIGHT + 22.0, plot.bottom()),
-        );
-        let n = 48;
-        for k in 0..n {
-            let s = 1.0 - 2.0 * (k as f32 + 0.5) / n as f32;
-            let cell = Rect::from_min_size(
-                Pos2::new(bar.left(), bar.top() + bar.height() * k as f32 / n as f32),
-                egui::vec2(bar.width(), bar.height() / n as f32 + 0.5),
-            );
-            painter.rect_filled(cell, 0.0, super::bar_view::diverging(s));
-        }
-        let (scale, unit, pos, neg) = match field {
-            XtShown::Stress => (
-                layout.stress_scale_pa * 1e-6,
-                "MPa",
-                "tension",
-                "compression",
-            ),
-            XtShown::Velocity => (
-                1.0 / layout.bars[0].inv_velocity_scale as f64,
-                "m/s",
-                "right",
-                "left",
-            ),
+        let scale = match field {
+            XtShown::Stress => layout.stress_scale_pa,
+            XtShown::Velocity => 1.0 / layout.bars[0].inv_velocity_scale as f64,
         };
-        let font = egui::FontId::proportional(11.0);
-        let x = bar.right() + 4.0;
-        for (y, label) in [
-            (bar.top(), format!("+{scale:.3} {unit}")),
-            (bar.top() + 13.0, pos.to_string()),
-            (bar.center().y, format!("0 {unit}")),
-            (bar.bottom() - 13.0, neg.to_string()),
-            (bar.bottom(), format!("-{scale:.3} {unit}")),
-        ] {
-            painter.text(
-                Pos2::new(x, y),
-                egui::Align2::LEFT_CENTER,
-                label,
-                font.clone(),
-                text,
-            );
-        }
+        colour_bar(painter, rect, plot, field, scale, text);
+    }
+}
+
+/// The colour map beside a diagram in `rect` plotting in `plot`, labelled with the value that
+/// saturates it (`scale`: a stress in Pa or a velocity in m/s, as `field` says).
+pub(super) fn colour_bar(
+    painter: &egui::Painter,
+    rect: Rect,
+    plot: Rect,
+    field: XtShown,
+    scale: f64,
+    text: Color32,
+) {
+    let bar = Rect::from_min_max(
+        Pos2::new(rect.right() - RIGHT + 10.0, plot.top()),
+        Pos2::new(rect.right() - RIGHT + 22.0, plot.bottom()),
+    );
+    let n = 48;
+    for k in 0..n {
+        let s = 1.0 - 2.0 * (k as f32 + 0.5) / n as f32;
+        let cell = Rect::from_min_size(
+            Pos2::new(bar.left(), bar.top() + bar.height() * k as f32 / n as f32),
+            egui::vec2(bar.width(), bar.height() / n as f32 + 0.5),
+        );
+        painter.rect_filled(cell, 0.0, super::bar_view::diverging(s));
+    }
+    let (scale, unit, pos, neg) = match field {
+        XtShown::Stress => (scale * 1e-6, "MPa", "tension", "compression"),
+        XtShown::Velocity => (scale, "m/s", "right", "left"),
+    };
+    let font = egui::FontId::proportional(11.0);
+    let x = bar.right() + 4.0;
+    for (y, label) in [
+        (bar.top(), format!("+{scale:.3} {unit}")),
+        (bar.top() + 13.0, pos.to_string()),
+        (bar.center().y, format!("0 {unit}")),
+        (bar.bottom() - 13.0, neg.to_string()),
+        (bar.bottom(), format!("-{scale:.3} {unit}")),
+    ] {
+        painter.text(
+            Pos2::new(x, y),
+            egui::Align2::LEFT_CENTER,
+            label,
+            font.clone(),
+            text,
+        );
     }
 }
 

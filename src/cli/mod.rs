@@ -59,7 +59,7 @@ pub enum Command {
 #[cfg(feature = "gui")]
 #[derive(clap::Args, Debug, Default)]
 pub struct WindowArgs {
-    /// Scene to open: bar|compare|buildings|study
+    /// Scene to open: bar|compare|buildings|bridge|study
     #[arg(long)]
     pub scene: Option<String>,
     /// Impact preset to open with (instead of the last session's scene)
@@ -90,7 +90,9 @@ fn window(args: &WindowArgs) -> anyhow::Result<()> {
     let scene = match args.scene.as_deref() {
         None => None,
         Some(name) => Some(pounding::app::SceneKind::from_name(name).ok_or_else(|| {
-            anyhow::anyhow!("--scene: unknown scene '{name}': allowed bar|compare|buildings|study")
+            anyhow::anyhow!(
+                "--scene: unknown scene '{name}': allowed bar|compare|buildings|bridge|study"
+            )
         })?),
     };
     if let Some(name) = &args.lesson {

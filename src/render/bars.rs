@@ -41,9 +41,10 @@ pub struct GpuBar {
     pub push_direction: f32,
     /// 1 / the velocity that saturates the colour map [s/m].
     pub inv_velocity_scale: f32,
-    /// 0: a d'Alembert bar; 1: a lumped body drawn as its uniform-stress equivalent.
+    /// 0: a d'Alembert bar; 1: a lumped body drawn as its uniform-stress equivalent; 2: a bar
+    /// loaded at both ends (a bridge girder, [`GpuHistory::from_pairs`]).
     pub kind: u32,
-    /// Kind 1: where its impulse history starts.
+    /// Kind 1: where its impulse history starts; kind 2: where its far end's history starts.
     pub aux_offset: u32,
     /// Kind 1: 1 / its mass [1/kg].
     pub inv_mass: f32,
@@ -153,9 +154,7 @@ impl GpuHistory {
                     *dt_s
                 }
                 History::Steps { .. } | History::Segments { .. } => {
-                    let dt =
-                        (w.round_trip_s() / STEP_SAMPLES_PER_ROUND_TRIP).max(w.end_s / per_bar);
-                    let n = (w.end_s / dt).ceil() as usize + 2;
+                    let (dt, n) = grid(w, per_bar);
                     samples.extend((0..n).map(|k| w.history_at(k as f64 * dt) as f32));
                     dt
                 }
@@ -172,6 +171,35 @@ impl GpuHistory {
             ..GpuHistory::default()
         }
     }
+
+    /// Bars loaded at both ends (bridge girders: the waves from each end, `[0]` from the end
+    /// the bar is drawn from), each on one grid: a layout entry per bar for its first end, the
+    /// far end's samples right after (a [`GpuBar`] of kind 2 reads them at `offset + count`).
+    pub fn from_pairs(pairs: &[[BarWaves; 2]]) -> Self {
+        let per_bar = GPU_SAMPLE_BUDGET / (2 * pairs.len()).max(1) as f64;
+        let mut samples = Vec::new();
+        let mut layout = Vec::new();
+        for pair in pairs {
+            let offset = samples.len() as u32;
+            let (dt, n) = grid(&pair[0], per_bar);
+            for w in pair {
+                samples.extend((0..n).map(|k| w.history_at(k as f64 * dt) as f32));
+            }
+            layout.push((offset, n as u32, dt as f32, pair[0].end_s as f32));
+        }
+        GpuHistory {
+            samples,
+            layout,
+            ..GpuHistory::default()
+        }
+    }
+}
+
+/// The grid a history without one of its own (steps, stretches) is put on: its step and its
+/// sample count, within a bar's share of the budget.
+fn grid(w: &BarWaves, per_bar: f64) -> (f64, usize) {
+    let dt = (w.round_trip_s() / STEP_SAMPLES_PER_ROUND_TRIP).max(w.end_s / per_bar);
+    (dt, (w.end_s / dt).ceil() as usize + 2)
 }
 
 /// Which picture a slot draws.

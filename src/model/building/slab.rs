@@ -126,7 +126,6 @@ pub struct SlabWaves {
     geometry: BarBody,
 }
 
-
 /// A saved state to return to after one trial step.
 #[derive(Debug, Clone, Copy)]
 pub struct SlabMark {

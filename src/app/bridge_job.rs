@@ -1,0 +1,68 @@
+//! The Bridge pounding scene's solve, in the order the scene shows it: the run, then the run
+//! without contact (the gaps each joint needs, the displacements compared), then the error
+//! estimate (the run with half the step, the slowest). Each stage is handed over as it lands,
+//! so the run is on screen before the checks that follow it.
+
+use super::bridge_view::BridgeDrawing;
+use super::worker::Stages;
+use crate::io::bridge_settings::BridgeSetup;
+use crate::model::bridge::{
+    BridgeErrorEstimate, BridgeResult, BridgeScenario, estimate_error, solve_with,
+};
+use crate::model::building::ContactModel;
+use crate::model::control::Control;
+use crate::model::error::SolveError;
+
+/// One stage of a bridge job, in the order they come.
+pub(super) enum Stage {
+    /// The run: the job's first result.
+    Run(Box<BridgeDrawing>),
+    /// The run without contact.
+    Baseline(Box<BridgeResult>),
+    /// The run's error estimate, the job's last (`None` where it could not be worked out).
+    Estimate(Option<BridgeErrorEstimate>),
+}
+
+pub(super) type Output = Result<Stage, JobError>;
+
+/// Why a bridge job gave no (or only part of a) result.
+#[derive(Debug, thiserror::Error)]
+pub(super) enum JobError {
+    #[error("ground motion: {0}")]
+    Motion(#[from] crate::io::motion::MotionError),
+    #[error("cancelled: the last result is kept")]
+    Cancelled,
+    #[error(transparent)]
+    Solve(SolveError),
+}
+
+impl From<SolveError> for JobError {
+    fn from(e: SolveError) -> Self {
+        match e {
+            SolveError::Cancelled => JobError::Cancelled,
+            e => JobError::Solve(e),
+        }
+    }
+}
+
+/// The job: its stages go to `stages`, its last is returned. The drawing (the girders' waves
+/// on their GPU grid) is made here, off the UI thread.
+pub(super) fn run_job(setup: BridgeSetup, control: &Control, stages: &Stages<Output>) -> Output {
+    let motion = crate::io::motion::load(&setup.motion)?;
+    control.stage(0, 3);
+    let result = solve_with(&setup.scenario, &motion, control)?;
+    let run = BridgeDrawing::new(setup.clone(), motion.clone(), result.clone());
+    stages.send(Ok(Stage::Run(Box::new(run))));
+    control.stage(1, 3);
+    let free = BridgeScenario {
+        contact: ContactModel::None,
+        ..setup.scenario.clone()
+    };
+    let baseline = solve_with(&free, &motion, control)?;
+    stages.send(Ok(Stage::Baseline(Box::new(baseline))));
+    control.stage(2, 3);
+    match estimate_error(&setup.scenario, &motion, &result, control) {
+        Err(SolveError::Cancelled) => Err(JobError::Cancelled),
+        estimate => Ok(Stage::Estimate(estimate.ok())),
+    }
+}

@@ -1,0 +1,684 @@
+//! The Bridge pounding scene: girders on piers pounding at their joints under a ground motion
+//! that may travel along the bridge; the bridge in elevation, the joints' forces, their openings
+//! against the seat, the girders' displacements with and without pounding, the impact list, the
+//! whole deck's space-time diagram around a picked impact, and per joint its gap, the gap it
+//! needs and its seat margin. The state and the solves live here; the panel in
+//! `bridge_params`, the drawing in `bridge_view` and `bridge_xt`.
+
+use super::bridge_job::{Output, Stage, run_job};
+use super::bridge_view::{self, BridgeDrawing};
+use super::bridge_xt::DeckXt;
+use super::export::{Exporter, ShownPlot};
+use super::later::Later;
+use super::params::Fields;
+use super::playback::Playback;
+use super::series::decimate;
+use super::worker::{Landed, SolveSlot};
+use crate::io::bridge_settings::BridgeSetup;
+use crate::model::bridge::{BridgeErrorEstimate, BridgeResult};
+use crate::model::motion::G;
+use crate::render::bars::XtShown;
+use eframe::egui::{self, Color32};
+use egui_plot::{HLine, Legend, Line, Plot, PlotBounds, VLine};
+use std::time::Duration;
+
+/// One request's run and its later stages as they land.
+struct Solved {
+    drawing: Box<BridgeDrawing>,
+    baseline: Later<Box<BridgeResult>>,
+    estimate: Later<Option<BridgeErrorEstimate>>,
+    /// Whether it is the newest request's (false once a newer one is made).
+    current: bool,
+}
+
+/// When the newest request's later stages landed, from its change.
+#[derive(Default)]
+struct StageTimes {
+    baseline: Option<Duration>,
+    estimate: Option<Duration>,
+}
+
+pub struct BridgeScene {
+    pub setup: BridgeSetup,
+    fields: Fields,
+    pub(super) slot: SolveSlot<BridgeSetup, Output>,
+    solved: Option<Solved>,
+    times: StageTimes,
+    pub playback: Playback,
+    exaggeration: f64,
+    zoom: Option<(f64, f64)>,
+    /// The joint the force plot and the impact list show (`None`: all).
+    joint: Option<usize>,
+    /// The impact the deck's diagram is drawn around (`None`: the strongest).
+    selected: Option<usize>,
+    xt_field: XtShown,
+    motion_path: String,
+    /// The view's rectangle last frame (for a screenshot of the view alone).
+    pub view_rect: Option<egui::Rect>,
+    shown_forces: ShownPlot,
+    shown_openings: ShownPlot,
+    shown_girders: ShownPlot,
+}
+
+impl BridgeScene {
+    pub fn new(ctx: &egui::Context, setup: BridgeSetup) -> Self {
+        let waker = ctx.clone();
+        let mut s = BridgeScene {
+            setup,
+            fields: Fields::default(),
+            slot: SolveSlot::staged(run_job, move || waker.request_repaint()),
+            solved: None,
+            times: StageTimes::default(),
+            playback: Playback {
+                t: 0.0,
+                playing: true,
+                speed: 1.0,
+                t_max: 8.0,
+                ready_s: None,
+            },
+            exaggeration: 20.0,
+            zoom: None,
+            joint: None,
+            selected: None,
+            xt_field: XtShown::Stress,
+            motion_path: String::new(),
+            view_rect: None,
+            shown_forces: ShownPlot::default(),
+            shown_openings: ShownPlot::default(),
+            shown_girders: ShownPlot::default(),
+        };
+        s.request();
+        s
+    }
+
+    pub fn request(&mut self) {
+        self.slot.request(self.setup.clone());
+        self.times = StageTimes::default();
+        if let Some(s) = &mut self.solved {
+            s.current = false;
+        }
+    }
+
+    pub fn busy(&self) -> bool {
+        self.slot.busy()
+    }
+
+    pub fn progress(&self) -> Option<f64> {
+        self.slot.progress()
+    }
+
+    pub fn cancel(&mut self) {
+        self.slot.cancel();
+    }
+
+    /// Forgets typed text (after a preset replaces the values).
+    pub fn reset_fields(&mut self) {
+        self.fields.clear();
+        self.joint = None;
+    }
+
+    /// Loads a ground-motion file (a path typed, dropped or chosen in a dialog).
+    pub fn load_motion(&mut self, path: String) {
+        self.motion_path = path;
+        self.setup.motion.file = Some(self.motion_path.trim().to_string());
+        self.request();
+    }
+
+    /// Takes the stages that landed, in order.
+    pub fn poll(&mut self) {
+        while let Some(landed) = self.slot.poll_stage() {
+            self.land(landed);
+        }
+        if !self.busy()
+            && let Some(s) = &mut self.solved
+        {
+            if matches!(s.baseline, Later::Pending) {
+                s.baseline = Later::Missing;
+            }
+            if matches!(s.estimate, Later::Pending) {
+                s.estimate = Later::Missing;
+            }
+        }
+    }
+
+    fn land(&mut self, landed: Landed<Output>) {
+        match landed.output {
+            Ok(Stage::Run(drawing)) => {
+                self.slot.solve_time = landed.job_time;
+                self.slot.latency = landed.since_request;
+                if !self.solved.as_ref().is_some_and(|s| s.current) {
+                    self.selected = None;
+                }
+                self.playback.t_max = drawing.result.duration_s;
+                self.playback.t = self.playback.t.min(self.playback.t_max);
+                if self.joint.is_some_and(|j| j >= drawing.result.joints.len()) {
+                    self.joint = None;
+                }
+                self.solved = Some(Solved {
+                    drawing,
+                    baseline: Later::Pending,
+                    estimate: Later::Pending,
+                    current: true,
+                });
+            }
+            Ok(Stage::Baseline(b)) => {
+                self.times.baseline = Some(landed.since_request);
+                if let Some(s) = self.solved.as_mut().filter(|s| s.current) {
+                    s.baseline = Later::Ready(b);
+                }
+            }
+            Ok(Stage::Estimate(e)) => {
+                self.times.estimate = Some(landed.since_request);
+                if let Some(s) = self.solved.as_mut().filter(|s| s.current) {
+                    s.estimate = Later::Ready(e);
+                }
+            }
+            Err(e) => self.slot.error = Some(e.to_string()),
+        }
+    }
+
+    /// What the status bar says while the newest request solves.
+    pub fn solving_note(&self) -> String {
+        match self.solved.as_ref().filter(|s| s.current) {
+            Some(s) if matches!(s.baseline, Later::Pending) => {
+                "run shown; no-pounding run and error estimate pending".into()
+            }
+            Some(s) if matches!(s.estimate, Later::Pending) => {
+                "run shown; error estimate pending".into()
+            }
+            _ => "solving...".into(),
+        }
+    }
+
+    /// When the later stages of the newest request landed, from its change.
+    pub fn later_stages(&self) -> String {
+        let missing = if self.busy() { "pending" } else { "not solved" };
+        let at =
+            |t: Option<Duration>| t.map_or(missing.into(), |t| crate::app::ms(t.as_secs_f64(), 1));
+        format!(
+            "Change to result: from the change to its run on screen. After the change, the run without pounding landed in {}, the error estimate in {}",
+            at(self.times.baseline),
+            at(self.times.estimate)
+        )
+    }
+
+    pub fn params_ui(&mut self, ui: &mut egui::Ui) {
+        let before = self.setup.clone();
+        super::bridge_params::ui(ui, &mut self.fields, &mut self.setup, &mut self.motion_path);
+        if self.setup != before {
+            self.request();
+        }
+    }
+
+    /// The plots on screen last frame, by export name.
+    pub fn shown_plots(&self) -> Vec<(&str, &ShownPlot)> {
+        if self.solved.is_none() {
+            return vec![];
+        }
+        vec![
+            ("joint-forces", &self.shown_forces),
+            ("joint-openings", &self.shown_openings),
+            ("girder-displacements", &self.shown_girders),
+        ]
+    }
+
+    pub fn main_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
+        if let Some(e) = &self.slot.error {
+            ui.colored_label(Color32::from_rgb(220, 60, 50), e);
+        }
+        let Some(s) = &self.solved else {
+            ui.label("solving...");
+            return;
+        };
+        let d = &s.drawing;
+        let stats = d.motion.stats();
+        let travel = d
+            .setup
+            .scenario
+            .apparent_velocity_m_s
+            .map_or("every support at once".to_string(), |v| {
+                format!("travelling along the bridge at {v} m/s")
+            });
+        ui.label(format!(
+            "{}: {:.2} s at {} s, PGA {:.3} g, PGV {:.3} m/s; {travel}",
+            d.motion.name,
+            stats.duration_s,
+            d.motion.dt_s,
+            stats.pga_m_s2 / G,
+            stats.pgv_m_s,
+        ));
+        self.elevation_ui(ui);
+        self.readouts_ui(ui);
+        self.joints_table_ui(ui);
+        self.plots_ui(ui, exporter);
+        self.impacts_ui(ui);
+        self.deck_xt_ui(ui);
+        let Some(s) = &self.solved else { return };
+        for w in &s.drawing.result.warnings {
+            ui.colored_label(Color32::from_rgb(220, 140, 40), format!("warning: {w}"));
+        }
+    }
+
+    fn elevation_ui(&mut self, ui: &mut egui::Ui) {
+        let Some(s) = &self.solved else { return };
+        let (rect, _) = ui.allocate_exact_size(
+            egui::vec2(ui.available_width(), 260.0),
+            egui::Sense::hover(),
+        );
+        bridge_view::draw(
+            ui,
+            rect,
+            &s.drawing,
+            self.playback.shown_t(),
+            self.exaggeration,
+        );
+        self.view_rect = Some(rect);
+        ui.horizontal(|ui| {
+            let label = ui
+                .label("exaggeration")
+                .on_hover_text("Displacements, gaps and seats are drawn this many times larger")
+                .id;
+            ui.add(egui::Slider::new(&mut self.exaggeration, 1.0..=200.0).logarithmic(true))
+                .labelled_by(label);
+        });
+        self.playback.ui(ui);
+    }
+
+    /// Impacts, the largest force, the girders' peaks beside those without pounding, the
+    /// energy into the girders' waves, and the error bound.
+    fn readouts_ui(&self, ui: &mut egui::Ui) {
+        let Some(s) = &self.solved else { return };
+        let r = &s.drawing.result;
+        let mm = |v: &[f64]| {
+            v.iter()
+                .map(|x| format!("{:.1}", x * 1e3))
+                .collect::<Vec<_>>()
+                .join(" / ")
+        };
+        let without = s
+            .baseline
+            .ready()
+            .map_or(s.baseline.absent().to_string(), |b| {
+                mm(&b.peak_girder_displacement_m)
+            });
+        ui.label(format!(
+            "{} impacts ({} contacts), max force {:.4e} N; girder peaks {} mm (without pounding {}); {:.1} kJ into the girders' waves; solve {} ({} steps, {:.1}% in contact)",
+            r.impacts.len(),
+            r.contacts.len(),
+            r.max_pounding_force_n,
+            mm(&r.peak_girder_displacement_m),
+            without,
+            r.energy.girder_waves_j * 1e-3,
+            super::ms(self.slot.solve_time.as_secs_f64(), 1),
+            r.stats.steps,
+            100.0 * r.stats.contact_steps as f64 / r.stats.steps.max(1) as f64,
+        ));
+        match &s.estimate {
+            Later::Ready(Some(e)) => {
+                ui.label(format!(
+                    "error bound (against a twice finer run): max force {:.1e}, peaks {:.1e}, openings {:.1e}, impact times {:.1e} (relative), impact count {:+}",
+                    e.max_force, e.peak_displacement, e.opening, e.impact_time, e.impact_count_change
+                ));
+            }
+            Later::Ready(None) => {}
+            later => {
+                ui.label(format!(
+                    "error bound (against a twice finer run): {}",
+                    later.absent()
+                ));
+            }
+        }
+    }
+
+    /// Per joint: its kind and place, its gap and the gap it needs (from the run without
+    /// contact), its largest force and opening, and its seat's margin.
+    fn joints_table_ui(&self, ui: &mut egui::Ui) {
+        let Some(s) = &self.solved else { return };
+        let (r, sc) = (&s.drawing.result, &s.drawing.setup.scenario);
+        let seat = sc.seat_length_m;
+        egui::Grid::new("bridge-joints")
+            .striped(true)
+            .num_columns(9)
+            .show(ui, |ui| {
+                for h in [
+                    "joint",
+                    "between",
+                    "at [m]",
+                    "gap [mm]",
+                    "gap needed [mm]",
+                    "max force [MN]",
+                    "max opening [mm]",
+                    "seat margin [mm]",
+                    "unseated",
+                ] {
+                    ui.strong(h);
+                }
+                ui.end_row();
+                for (j, joint) in r.joints.iter().enumerate() {
+                    ui.label(format!("{j}"));
+                    ui.label(joint.kind());
+                    ui.label(format!("{:.1}", joint.position_m + 0.0));
+                    ui.label(format!("{:.1}", joint.gap_m * 1e3));
+                    let needed = s.baseline.ready().map_or(s.baseline.absent().into(), |b| {
+                        let g = b.max_closing_m[j].max(0.0);
+                        let verdict = if g <= joint.gap_m { "" } else { " (pounds)" };
+                        format!("{:.1}{verdict}", g * 1e3)
+                    });
+                    ui.label(needed);
+                    ui.label(format!("{:.2}", r.max_force_by_joint_n[j] * 1e-6));
+                    ui.label(format!("{:.1}", r.max_opening_m[j].max(0.0) * 1e3));
+                    let margin = seat - r.max_opening_m[j].max(0.0);
+                    ui.colored_label(
+                        bridge_view::seat_colour(1.0 - margin / seat, margin < 0.0),
+                        format!("{:.1}", margin * 1e3),
+                    );
+                    let when = r.unseating.iter().find(|u| u.joint == j);
+                    ui.label(when.map_or("no".into(), |u| format!("at {:.2} s", u.time_s)));
+                    ui.end_row();
+                }
+            });
+    }
+
+    fn plots_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
+        let Some(s) = &self.solved else { return };
+        let r = &s.drawing.result;
+        let t = self.playback.shown_t();
+        let width = super::lecture::line_width(ui);
+        let h = 160.0;
+        // The joints shown: one, or all.
+        ui.horizontal(|ui| {
+            let label = ui
+                .label("joint")
+                .on_hover_text("The joint the force plot and the impact list show")
+                .id;
+            let shown = self.joint.map_or("all joints".to_string(), |j| {
+                format!("{j} ({})", r.joints[j].kind())
+            });
+            egui::ComboBox::from_id_salt("bridge-joint")
+                .selected_text(shown)
+                .show_ui(ui, |ui| {
+                    ui.selectable_value(&mut self.joint, None, "all joints");
+                    for (j, joint) in r.joints.iter().enumerate() {
+                        ui.selectable_value(
+                            &mut self.joint,
+                            Some(j),
+                            format!("{j} ({})", joint.kind()),
+                        );
+                    }
+                })
+                .response
+                .labelled_by(label);
+        });
+        let joints: Vec<usize> = (0..r.joints.len())
+            .filter(|&j| self.joint.is_none_or(|k| k == j))
+            .collect();
+        let named = |j: usize| format!("joint {j}");
+        let forces: Vec<(String, Vec<[f64; 2]>)> = joints
+            .iter()
+            .map(|&j| (named(j), decimate(&r.time_s, &r.joint_force_n[j], 1e-6)))
+            .collect();
+        let zoom = self.zoom.take();
+        let top = r.max_pounding_force_n.max(1.0) * 1e-6;
+        let force_plot = Plot::new("bridge-force")
+            .height(h)
+            .legend(Legend::default())
+            .x_axis_label("time [s]")
+            .y_axis_label("joint force [MN]")
+            .show(ui, |p| {
+                for (name, pts) in &forces {
+                    p.line(Line::new(name.as_str(), pts.clone()).width(width));
+                }
+                p.vline(VLine::new("t", t));
+                if let Some((a, b)) = zoom {
+                    p.set_plot_bounds(PlotBounds::from_min_max([a, -0.05 * top], [b, 1.1 * top]));
+                }
+            });
+        let b = force_plot.transform.bounds();
+        self.shown_forces = ShownPlot {
+            title: format!("Joint forces: {} contact", r.contact.name()),
+            x_label: "time [s]".into(),
+            y_label: "joint force [MN]".into(),
+            series: forces,
+            bounds: Some((b.min(), b.max())),
+        };
+        exporter.buttons(ui, &self.shown_forces, "joint-forces");
+        if force_plot.response.clicked()
+            && let Some(pos) = force_plot.response.interact_pointer_pos()
+        {
+            let at = force_plot.transform.value_from_position(pos).x;
+            let near = (0..r.impacts.len())
+                .filter(|&i| self.joint.is_none_or(|j| r.impacts[i].level == j))
+                .min_by(|&a, &b| {
+                    (r.impacts[a].start_s - at)
+                        .abs()
+                        .total_cmp(&(r.impacts[b].start_s - at).abs())
+                });
+            if let Some(i) = near {
+                self.pick(i);
+            }
+        }
+        self.openings_plot_ui(ui, exporter, &joints, h, t);
+        self.girders_plot_ui(ui, exporter, h, t);
+    }
+
+    fn openings_plot_ui(
+        &mut self,
+        ui: &mut egui::Ui,
+        exporter: &Exporter,
+        joints: &[usize],
+        h: f32,
+        t: f64,
+    ) {
+        let Some(s) = &self.solved else { return };
+        let (r, seat) = (&s.drawing.result, s.drawing.setup.scenario.seat_length_m);
+        let width = super::lecture::line_width(ui);
+        let openings: Vec<(String, Vec<[f64; 2]>)> = joints
+            .iter()
+            .map(|&j| {
+                (
+                    format!("joint {j}"),
+                    decimate(&r.time_s, &r.joint_opening_m[j], 1e3),
+                )
+            })
+            .collect();
+        let plot = Plot::new("bridge-openings")
+            .height(h)
+            .legend(Legend::default())
+            .x_axis_label("time [s]")
+            .y_axis_label("joint opening [mm]")
+            .show(ui, |p| {
+                for (name, pts) in &openings {
+                    p.line(Line::new(name.as_str(), pts.clone()).width(width));
+                }
+                p.hline(
+                    HLine::new("seat length", seat * 1e3)
+                        .color(Color32::from_rgb(225, 40, 40))
+                        .style(egui_plot::LineStyle::dashed_loose()),
+                );
+                p.vline(VLine::new("t", t));
+            });
+        let b = plot.transform.bounds();
+        let mut series = openings;
+        series.push((
+            "seat length".into(),
+            vec![[0.0, seat * 1e3], [r.duration_s, seat * 1e3]],
+        ));
+        self.shown_openings = ShownPlot {
+            title: "Joint openings against the seat length".into(),
+            x_label: "time [s]".into(),
+            y_label: "joint opening [mm]".into(),
+            series,
+            bounds: Some((b.min(), b.max())),
+        };
+        exporter.buttons(ui, &self.shown_openings, "joint-openings");
+    }
+
+    fn girders_plot_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter, h: f32, t: f64) {
+        let Some(s) = &self.solved else { return };
+        let r = &s.drawing.result;
+        let width = super::lecture::line_width(ui);
+        let mut lines: Vec<(String, Vec<[f64; 2]>)> = (0..r.girder_displacement_m.len())
+            .map(|i| {
+                (
+                    format!("girder {}", i + 1),
+                    decimate(&r.time_s, &r.girder_displacement_m[i], 1e3),
+                )
+            })
+            .collect();
+        let spans = lines.len();
+        // The run without pounding, dashed, once it has landed.
+        if let Some(b) = s.baseline.ready() {
+            for i in 0..spans {
+                lines.push((
+                    format!("girder {}, no pounding", i + 1),
+                    decimate(&b.time_s, &b.girder_displacement_m[i], 1e3),
+                ));
+            }
+        }
+        let plot = Plot::new("bridge-girders")
+            .height(h)
+            .legend(Legend::default())
+            .x_axis_label("time [s]")
+            .y_axis_label("girder displacement [mm]")
+            .show(ui, |p| {
+                for (k, (name, pts)) in lines.iter().enumerate() {
+                    let l = Line::new(name.as_str(), pts.clone()).width(width);
+                    p.line(if k >= spans {
+                        l.style(egui_plot::LineStyle::dashed_loose())
+                    } else {
+                        l
+                    });
+                }
+                p.vline(VLine::new("t", t));
+            });
+        let b = plot.transform.bounds();
+        self.shown_girders = ShownPlot {
+            title: "Girder displacements relative to their ground, with and without pounding"
+                .into(),
+            x_label: "time [s]".into(),
+            y_label: "girder displacement [mm]".into(),
+            series: lines,
+            bounds: Some((b.min(), b.max())),
+        };
+        exporter.buttons(ui, &self.shown_girders, "girder-displacements");
+    }
+
+    /// Picks impact i: the force plot zooms on it, the animation waits at its start in slow
+    /// motion, and the deck's diagram is drawn around it.
+    fn pick(&mut self, i: usize) {
+        let Some(s) = &self.solved else { return };
+        let e = &s.drawing.result.impacts[i];
+        self.selected = Some(i);
+        let margin = 0.5 * e.duration_s().max(0.002);
+        self.zoom = Some((e.start_s - margin, e.end_s + margin));
+        self.playback.t = e.start_s;
+        self.playback.playing = false;
+        self.playback.speed = 1e-2;
+    }
+
+    fn impacts_ui(&mut self, ui: &mut egui::Ui) {
+        let Some(s) = &self.solved else { return };
+        let r = &s.drawing.result;
+        let mut clicked = None;
+        ui.label("impacts (click one here or in the force plot to zoom on it):");
+        egui::ScrollArea::vertical()
+            .id_salt("bridge-impacts")
+            .max_height(170.0)
+            .show(ui, |ui| {
+                egui::Grid::new("bridge-impact-grid")
+                    .striped(true)
+                    .num_columns(7)
+                    .show(ui, |ui| {
+                        for h in [
+                            "#",
+                            "joint",
+                            "start [s]",
+                            "duration [ms]",
+                            "peak force [N]",
+                            "approach [m/s]",
+                            "contacts",
+                        ] {
+                            ui.strong(h);
+                        }
+                        ui.end_row();
+                        for (i, e) in r.impacts.iter().enumerate() {
+                            if self.joint.is_some_and(|j| j != e.level) {
+                                continue;
+                            }
+                            if ui.button(format!("{}", i + 1)).clicked() {
+                                clicked = Some(i);
+                            }
+                            ui.label(format!("{}", e.level));
+                            ui.label(format!("{:.4}", e.start_s));
+                            ui.label(format!("{:.3}", e.duration_s() * 1e3));
+                            ui.label(format!("{:.4e}", e.peak_force_n));
+                            ui.label(format!("{:.4}", e.approach_velocity_m_s));
+                            ui.label(format!("{}", e.contacts.len()));
+                            ui.end_row();
+                        }
+                    });
+            });
+        if let Some(i) = clicked {
+            self.pick(i);
+        }
+    }
+
+    /// The whole deck's x-t diagram around the picked impact (the strongest until one is).
+    fn deck_xt_ui(&mut self, ui: &mut egui::Ui) {
+        let Some(s) = &self.solved else { return };
+        let r = &s.drawing.result;
+        if r.girder_waves.is_empty() {
+            ui.label(format!(
+                "the deck's space-time diagram: with the Sears element (under {} the girders are rigid and carry no waves)",
+                r.contact.name()
+            ));
+            return;
+        }
+        let strongest = (0..r.impacts.len()).max_by(|&a, &b| {
+            r.impacts[a]
+                .peak_force_n
+                .total_cmp(&r.impacts[b].peak_force_n)
+        });
+        let Some(i) = self.selected.filter(|&i| i < r.impacts.len()).or(strongest) else {
+            ui.label("the deck's space-time diagram: no impact in this run");
+            return;
+        };
+        let e = &r.impacts[i];
+        let sc = &s.drawing.setup.scenario;
+        let trip = (0..sc.spans)
+            .map(|k| sc.girder(k).round_trip_s())
+            .fold(0.0, f64::max);
+        let margin = (0.5 * e.duration_s()).max(trip);
+        let (t_start, t_end) = ((e.start_s - margin).max(0.0), e.end_s + 2.0 * margin);
+        ui.horizontal(|ui| {
+            ui.label("deck x-t diagram:");
+            ui.selectable_value(&mut self.xt_field, XtShown::Stress, "stress")
+                .on_hover_text("Axial stress: compression blue, tension red");
+            ui.selectable_value(&mut self.xt_field, XtShown::Velocity, "velocity")
+                .on_hover_text("The waves' particle velocity: to the left blue, to the right red");
+        });
+        let title = format!(
+            "the deck over impact {} at joint {} ({:.4} s, {:.3e} N): space-time",
+            i + 1,
+            e.level,
+            e.start_s,
+            e.peak_force_n
+        );
+        let area = (0..sc.spans)
+            .map(|k| sc.girder(k).area_m2)
+            .fold(f64::INFINITY, f64::min);
+        let clicked = DeckXt {
+            d: &s.drawing,
+            t_start,
+            t_span: t_end - t_start,
+            title: &title,
+            stress_scale_pa: (e.peak_force_n / area).max(1.0),
+            velocity_scale_m_s: e.approach_velocity_m_s.abs().max(1e-3),
+        }
+        .show(ui, 280.0, self.playback.shown_t(), self.xt_field);
+        if let Some(t) = clicked {
+            self.playback.t = t;
+            self.playback.playing = false;
+        }
+    }
+}
