@@ -8,6 +8,11 @@ use pounding::model::bridge::{BridgeScenario, solve};
 use pounding::model::building::{BuildingScenario, ContactModel, SlabReading};
 use pounding::model::motion::GroundMotion;
 
+mod common;
+use common::{
+    girder_thrown_at_the_left_abutment, ground_at_rest, middle_girder_struck_at_both_ends,
+};
+
 fn el_centro(seconds: f64) -> GroundMotion {
     pounding::io::motion::built_in("elcentro-1940")
         .unwrap()
@@ -324,23 +329,8 @@ fn a_girder_thrown_at_a_rigid_abutment_rebounds_as_wave_theory_says() {
     // abutment, contact stiff enough that its rise time Z/k is 0.06 ms against a round trip of
     // 21.7 ms: the wave-theory limit is contact for 2 L / c and restitution 1, at a force of
     // Z v (the rigid face reflects the girder's own wave).
-    let sc = BridgeScenario {
-        spans: 1,
-        contact: ContactModel::Sears,
-        stiffness: Some(1e12),
-        pier_stiffness_n_m: vec![1e-3],
-        bearing_stiffness_n_m: vec![1e-3],
-        span_velocity_m_s: vec![-1.0],
-        joint_gaps_m: vec![1e-3, 10.0],
-        girder_damping: 0.0,
-        damping_ratio: 0.0,
-        ..BridgeScenario::three_span()
-    };
-    let still = GroundMotion {
-        name: "rest".into(),
-        dt_s: 0.01,
-        accel_m_s2: vec![0.0; 5],
-    };
+    let sc = girder_thrown_at_the_left_abutment();
+    let still = ground_at_rest();
     let r = solve(&sc, &still).unwrap();
     let g = sc.girder(0);
     assert_eq!(r.impacts.len(), 1, "{:?}", r.contacts);
@@ -470,30 +460,6 @@ fn extreme_values_of_every_key_end_in_a_result_or_a_named_refusal() {
     assert!(runs > 80, "only {runs}");
 }
 
-/// Three free girders (bearings and piers of negligible stiffness), the outer two thrown at the
-/// middle one at `v` and `-v` across equal joints, stiff contact, no damping: each joint is an
-/// impact of two equal bars.
-fn middle_girder_struck_at_both_ends(v: f64) -> (BridgeScenario, GroundMotion) {
-    let sc = BridgeScenario {
-        spans: 3,
-        contact: ContactModel::Sears,
-        stiffness: Some(1e12),
-        pier_stiffness_n_m: vec![1e-3],
-        bearing_stiffness_n_m: vec![1e-3],
-        span_velocity_m_s: vec![v, 0.0, -v],
-        joint_gaps_m: vec![10.0, 1e-3, 1e-3, 10.0],
-        girder_damping: 0.0,
-        damping_ratio: 0.0,
-        ..BridgeScenario::three_span()
-    };
-    let still = GroundMotion {
-        name: "rest".into(),
-        dt_s: 0.01,
-        accel_m_s2: vec![0.0; 5],
-    };
-    (sc, still)
-}
-
 #[test]
 fn stress_fronts_from_both_ends_of_a_girder_meet_and_add_as_wave_theory_says() {
     // Wave theory for two equal bars meeting at w = 1 m/s: a compressive front of Z w / (2 A)
@@ -501,7 +467,7 @@ fn stress_fronts_from_both_ends_of_a_girder_meet_and_add_as_wave_theory_says() {
     // the other bar. The middle girder takes one front from each end: they meet at its middle
     // after L / (2c) and add to Z w / A there; its middle is at rest.
     let v = 1.0;
-    let (sc, still) = middle_girder_struck_at_both_ends(v);
+    let (sc, still) = (middle_girder_struck_at_both_ends(v), ground_at_rest());
     let r = solve(&sc, &still).unwrap();
     assert_eq!(r.girder_waves.len(), 3);
     let g = sc.girder(1);
@@ -560,23 +526,8 @@ fn stress_fronts_from_both_ends_of_a_girder_meet_and_add_as_wave_theory_says() {
 fn a_girder_that_rebounds_from_an_abutment_leaves_it_free_of_stress() {
     // Wave theory: a bar that hits a rigid face at v is compressed to Z v / A as the front runs
     // in, and after the round trip of contact leaves at -v with no stress left in it.
-    let sc = BridgeScenario {
-        spans: 1,
-        contact: ContactModel::Sears,
-        stiffness: Some(1e12),
-        pier_stiffness_n_m: vec![1e-3],
-        bearing_stiffness_n_m: vec![1e-3],
-        span_velocity_m_s: vec![-1.0],
-        joint_gaps_m: vec![1e-3, 10.0],
-        girder_damping: 0.0,
-        damping_ratio: 0.0,
-        ..BridgeScenario::three_span()
-    };
-    let still = GroundMotion {
-        name: "rest".into(),
-        dt_s: 0.01,
-        accel_m_s2: vec![0.0; 5],
-    };
+    let sc = girder_thrown_at_the_left_abutment();
+    let still = ground_at_rest();
     let r = solve(&sc, &still).unwrap();
     let g = sc.girder(0);
     let (l, c) = (g.length_m, g.wave_speed_m_s());
@@ -598,7 +549,7 @@ fn a_girder_that_rebounds_from_an_abutment_leaves_it_free_of_stress() {
 
 #[test]
 fn girders_without_waves_have_none_to_draw() {
-    let (sc, still) = middle_girder_struck_at_both_ends(1.0);
+    let (sc, still) = (middle_girder_struck_at_both_ends(1.0), ground_at_rest());
     let r = solve(
         &BridgeScenario {
             contact: ContactModel::Linear,

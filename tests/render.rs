@@ -344,29 +344,13 @@ fn a_girder_loaded_at_both_ends_is_coloured_by_the_sum_of_both_ends_waves() {
     // the joints close, the fronts from both ends of the middle girder have met and passed in
     // its middle (compression twice the front's there) and the outer girders carry one front
     // each. The GPU (field.wgsl, kind 2) must paint what the model's two-ended field says.
-    use pounding::model::bridge::{BridgeScenario, solve as solve_bridge};
-    use pounding::model::building::ContactModel;
-    use pounding::model::motion::GroundMotion;
+    use pounding::model::bridge::solve as solve_bridge;
     use pounding::render::bars::{GpuBar, uniforms};
     let Some((device, queue, _)) = device() else {
         return;
     };
-    let sc = BridgeScenario {
-        contact: ContactModel::Sears,
-        stiffness: Some(1e12),
-        pier_stiffness_n_m: vec![1e-3],
-        bearing_stiffness_n_m: vec![1e-3],
-        span_velocity_m_s: vec![1.0, 0.0, -1.0],
-        joint_gaps_m: vec![10.0, 1e-3, 1e-3, 10.0],
-        girder_damping: 0.0,
-        damping_ratio: 0.0,
-        ..BridgeScenario::three_span()
-    };
-    let still = GroundMotion {
-        name: "rest".into(),
-        dt_s: 0.01,
-        accel_m_s2: vec![0.0; 5],
-    };
+    let sc = common::middle_girder_struck_at_both_ends(1.0);
+    let still = common::ground_at_rest();
     let r = solve_bridge(&sc, &still).unwrap();
     let g = sc.girder(1);
     let t = 1e-3 + 0.75 * g.length_m / g.wave_speed_m_s();

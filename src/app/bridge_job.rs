@@ -24,26 +24,7 @@ pub(super) enum Stage {
 }
 
 pub(super) type Output = Result<Stage, JobError>;
-
-/// Why a bridge job gave no (or only part of a) result.
-#[derive(Debug, thiserror::Error)]
-pub(super) enum JobError {
-    #[error("ground motion: {0}")]
-    Motion(#[from] crate::io::motion::MotionError),
-    #[error("cancelled: the last result is kept")]
-    Cancelled,
-    #[error(transparent)]
-    Solve(SolveError),
-}
-
-impl From<SolveError> for JobError {
-    fn from(e: SolveError) -> Self {
-        match e {
-            SolveError::Cancelled => JobError::Cancelled,
-            e => JobError::Solve(e),
-        }
-    }
-}
+use super::job_error::JobError;
 
 /// The job: its stages go to `stages`, its last is returned. The drawing (the girders' waves
 /// on their GPU grid) is made here, off the UI thread.

@@ -3,6 +3,7 @@
 //! ground motion with its apparent velocity (a log slider that ends in "uniform"), and the
 //! solver; rows from the settings table, values through the settings registry.
 
+use super::building_params::{compact, expand};
 use super::params::{Fields, Spec};
 use crate::io::bridge_settings::{BRIDGE, BridgeSetup};
 use crate::io::settings::SettingValue;
@@ -39,7 +40,7 @@ fn list_ui(
                 .on_hover_text(format!("Give each {member} its own value"))
                 .clicked()
         {
-            *list = vec![v; n];
+            expand(list, n);
         }
     } else {
         egui::CollapsingHeader::new(format!("{} per {member}", s.label))
@@ -53,9 +54,7 @@ fn list_ui(
                     });
                 }
             });
-        if list.iter().all(|x| *x == list[0]) {
-            list.truncate(1);
-        }
+        compact(list);
     }
 }
 

@@ -9,7 +9,7 @@ use super::bridge_job::{Output, Stage, run_job};
 use super::bridge_view::{self, BridgeDrawing};
 use super::bridge_xt::DeckXt;
 use super::export::{Exporter, ShownPlot};
-use super::later::Later;
+use super::later::{Later, StageTimes, pending_note};
 use super::params::Fields;
 use super::playback::Playback;
 use super::series::decimate;
@@ -20,7 +20,6 @@ use crate::model::motion::G;
 use crate::render::bars::XtShown;
 use eframe::egui::{self, Color32};
 use egui_plot::{HLine, Legend, Line, Plot, PlotBounds, VLine};
-use std::time::Duration;
 
 /// One request's run and its later stages as they land.
 struct Solved {
@@ -29,13 +28,6 @@ struct Solved {
     estimate: Later<Option<BridgeErrorEstimate>>,
     /// Whether it is the newest request's (false once a newer one is made).
     current: bool,
-}
-
-/// When the newest request's later stages landed, from its change.
-#[derive(Default)]
-struct StageTimes {
-    baseline: Option<Duration>,
-    estimate: Option<Duration>,
 }
 
 pub struct BridgeScene {
@@ -132,12 +124,8 @@ impl BridgeScene {
         if !self.busy()
             && let Some(s) = &mut self.solved
         {
-            if matches!(s.baseline, Later::Pending) {
-                s.baseline = Later::Missing;
-            }
-            if matches!(s.estimate, Later::Pending) {
-                s.estimate = Later::Missing;
-            }
+            s.baseline.ended();
+            s.estimate.ended();
         }
     }
 
@@ -179,27 +167,16 @@ impl BridgeScene {
 
     /// What the status bar says while the newest request solves.
     pub fn solving_note(&self) -> String {
-        match self.solved.as_ref().filter(|s| s.current) {
-            Some(s) if matches!(s.baseline, Later::Pending) => {
-                "run shown; no-pounding run and error estimate pending".into()
-            }
-            Some(s) if matches!(s.estimate, Later::Pending) => {
-                "run shown; error estimate pending".into()
-            }
-            _ => "solving...".into(),
-        }
+        self.solved
+            .as_ref()
+            .filter(|s| s.current)
+            .map_or("solving...", |s| pending_note(&s.baseline, &s.estimate))
+            .into()
     }
 
     /// When the later stages of the newest request landed, from its change.
     pub fn later_stages(&self) -> String {
-        let missing = if self.busy() { "pending" } else { "not solved" };
-        let at =
-            |t: Option<Duration>| t.map_or(missing.into(), |t| crate::app::ms(t.as_secs_f64(), 1));
-        format!(
-            "Change to result: from the change to its run on screen. After the change, the run without pounding landed in {}, the error estimate in {}",
-            at(self.times.baseline),
-            at(self.times.estimate)
-        )
+        self.times.describe(self.busy())
     }
 
     pub fn params_ui(&mut self, ui: &mut egui::Ui) {
@@ -664,9 +641,7 @@ impl BridgeScene {
             e.start_s,
             e.peak_force_n
         );
-        let area = (0..sc.spans)
-            .map(|k| sc.girder(k).area_m2)
-            .fold(f64::INFINITY, f64::min);
+        let area = s.drawing.smallest_area_m2();
         let clicked = DeckXt {
             d: &s.drawing,
             t_start,

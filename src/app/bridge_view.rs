@@ -53,22 +53,61 @@ impl BridgeDrawing {
         interpolate(&r.time_s, &r.joint_opening_m[j], t) / self.setup.scenario.seat_length_m
     }
 
-    /// The stress that saturates the girders' colour map: the largest joint force over the
-    /// smallest girder area [Pa].
-    pub fn stress_scale_pa(&self) -> f64 {
+    /// The smallest girder cross-section [m^2]: a force over it is the largest stress it makes.
+    pub fn smallest_area_m2(&self) -> f64 {
         let sc = &self.setup.scenario;
-        let area = (0..sc.spans)
+        (0..sc.spans)
             .map(|i| sc.girder(i).area_m2)
-            .fold(f64::INFINITY, f64::min);
-        (self.result.max_pounding_force_n / area).max(1.0)
+            .fold(f64::INFINITY, f64::min)
+    }
+
+    /// Girder i as a bar the GPU colours by the waves from both its ends (kind 2), its left end
+    /// at world x `origin_x`, drawn from `y` = (bottom, top), one world unit a metre; the
+    /// stress and the velocity that saturate the colour map.
+    pub fn girder_bar(
+        &self,
+        i: usize,
+        origin_x: f64,
+        y: (f64, f64),
+        (stress_scale_pa, velocity_scale_m_s): (f64, f64),
+    ) -> GpuBar {
+        let w = &self.result.girder_waves[i][0];
+        let (offset, count, dt, end) = self.gpu.layout[i];
+        GpuBar {
+            origin_x: origin_x as f32,
+            direction: 1.0,
+            body_length: w.body_length_m as f32,
+            zone_length: 0.0,
+            wave_speed: w.wave_speed_m_s as f32,
+            round_trip: w.round_trip_s() as f32,
+            dt: dt.max(1e-12),
+            end_time: end,
+            offset,
+            count,
+            inv_area: (1.0 / w.area_m2) as f32,
+            inv_stress_scale: (1.0 / stress_scale_pa) as f32,
+            y_bottom: y.0 as f32,
+            y_top: y.1 as f32,
+            world_per_metre: 1.0,
+            decay_per_s: w.decay_per_s as f32,
+            kind: 2,
+            aux_offset: offset + count,
+            ..GpuBar::of_waves(w, velocity_scale_m_s)
+        }
     }
 }
+
+/// A seat with more than half its length to spare.
+const SEAT_GREY: Color32 = Color32::from_gray(150);
 
 /// The colour of a seat: grey while less than half of it is used, through orange to red as
 /// the opening reaches the seat length, red once the girder has left it.
 pub fn seat_colour(used: f64, unseated: bool) -> Color32 {
     if unseated || used >= 1.0 {
         return Color32::from_rgb(225, 40, 40);
+    }
+    if used < 0.5 {
+        return SEAT_GREY;
     }
     let grey = [150.0, 150.0, 150.0];
     let (orange, red) = ([240.0, 160.0, 40.0], [225.0, 40.0, 40.0]);
@@ -79,9 +118,7 @@ pub fn seat_colour(used: f64, unseated: bool) -> Color32 {
             (a[2] + (b[2] - a[2]) * s) as u8,
         )
     };
-    if used < 0.5 {
-        mix(grey, grey, 0.0)
-    } else if used < 0.75 {
+    if used < 0.75 {
         mix(grey, orange, (used - 0.5) / 0.25)
     } else {
         mix(orange, red, (used - 0.75) / 0.25)
@@ -234,38 +271,19 @@ impl<'a> Frame<'a> {
         }
     }
 
-    /// The girders as bars the GPU colours by their waves (Sears), else plain.
+    /// The girders as bars the GPU colours by their waves (Sears; none for rigid girders),
+    /// the largest joint force over the smallest area saturating the map.
     fn girder_bars(&self) -> Vec<GpuBar> {
-        let (d, sc) = (self.d, &self.d.setup.scenario);
-        let scale = d.stress_scale_pa();
-        d.result
-            .girder_waves
-            .iter()
-            .enumerate()
-            .map(|(i, [w, _])| {
-                let (offset, count, dt, end) = d.gpu.layout[i];
-                let g = sc.girder(i);
-                GpuBar {
-                    origin_x: self.girder_left(i) as f32,
-                    direction: 1.0,
-                    body_length: g.length_m as f32,
-                    zone_length: 0.0,
-                    wave_speed: w.wave_speed_m_s as f32,
-                    round_trip: w.round_trip_s() as f32,
-                    dt: dt.max(1e-12),
-                    end_time: end,
-                    offset,
-                    count,
-                    inv_area: (1.0 / g.area_m2) as f32,
-                    inv_stress_scale: (1.0 / scale) as f32,
-                    y_bottom: GIRDER_BOTTOM as f32,
-                    y_top: GIRDER_TOP as f32,
-                    world_per_metre: 1.0,
-                    decay_per_s: w.decay_per_s as f32,
-                    kind: 2,
-                    aux_offset: offset + count,
-                    ..GpuBar::of_waves(w, 1.0)
-                }
+        let d = self.d;
+        let scale = (d.result.max_pounding_force_n / d.smallest_area_m2()).max(1.0);
+        (0..d.result.girder_waves.len())
+            .map(|i| {
+                d.girder_bar(
+                    i,
+                    self.girder_left(i),
+                    (GIRDER_BOTTOM, GIRDER_TOP),
+                    (scale, 1.0),
+                )
             })
             .collect()
     }
@@ -376,24 +394,25 @@ impl<'a> Frame<'a> {
                 .map(|j| (j, self.d.seat_use(j, self.t)))
                 .max_by(|a, b| a.1.total_cmp(&b.1))
                 .unwrap_or((0, 0.0));
+            // A seat with room to spare reads in the text colour, not grey.
+            let colour = if used < 0.5 {
+                text
+            } else {
+                seat_colour(used, false)
+            };
             (
                 format!(
                     "seats: joint {j} uses the most now, {:.1} of {:.0} mm",
                     used.max(0.0) * seat * 1e3,
                     seat * 1e3
                 ),
-                seat_colour(used, false),
+                colour,
             )
         } else {
             (
                 format!("unseated: {}", unseated.join(", ")),
                 seat_colour(1.0, true),
             )
-        };
-        let colour = if colour == Color32::from_rgb(150, 150, 150) {
-            text
-        } else {
-            colour
         };
         painter.text(
             Pos2::new(rect.left() + 8.0, rect.bottom() - 6.0),

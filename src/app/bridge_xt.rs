@@ -30,35 +30,9 @@ impl DeckXt<'_> {
     }
 
     fn bars(&self) -> Vec<GpuBar> {
-        let (d, sc) = (self.d, &self.d.setup.scenario);
-        d.result
-            .girder_waves
-            .iter()
-            .enumerate()
-            .map(|(i, [w, _])| {
-                let (offset, count, dt, end) = d.gpu.layout[i];
-                let g = sc.girder(i);
-                GpuBar {
-                    origin_x: self.girder_x(i) as f32,
-                    direction: 1.0,
-                    body_length: g.length_m as f32,
-                    wave_speed: w.wave_speed_m_s as f32,
-                    round_trip: w.round_trip_s() as f32,
-                    dt: dt.max(1e-12),
-                    end_time: end,
-                    offset,
-                    count,
-                    inv_area: (1.0 / g.area_m2) as f32,
-                    inv_stress_scale: (1.0 / self.stress_scale_pa) as f32,
-                    y_bottom: 0.0,
-                    y_top: 1.0,
-                    world_per_metre: 1.0,
-                    decay_per_s: w.decay_per_s as f32,
-                    kind: 2,
-                    aux_offset: offset + count,
-                    ..GpuBar::of_waves(w, self.velocity_scale_m_s)
-                }
-            })
+        let scales = (self.stress_scale_pa, self.velocity_scale_m_s);
+        (0..self.d.result.girder_waves.len())
+            .map(|i| self.d.girder_bar(i, self.girder_x(i), (0.0, 1.0), scales))
             .collect()
     }
 

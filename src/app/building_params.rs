@@ -24,7 +24,7 @@ fn row(
 const MAX_STOREYS_SHOWN: usize = 20;
 
 /// A per-storey list with one value for every storey made explicit, so one storey can change.
-fn expand(list: &mut Vec<f64>, n: usize) {
+pub(super) fn expand(list: &mut Vec<f64>, n: usize) {
     if list.len() != n {
         let v = list.first().copied().unwrap_or(1.0);
         *list = vec![v; n];
@@ -32,7 +32,7 @@ fn expand(list: &mut Vec<f64>, n: usize) {
 }
 
 /// A list that holds one value, or the same value N times, back to one value.
-fn compact(list: &mut Vec<f64>) {
+pub(super) fn compact(list: &mut Vec<f64>) {
     if list.len() > 1 && list.iter().all(|x| *x == list[0]) {
         list.truncate(1);
     }

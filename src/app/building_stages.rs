@@ -8,9 +8,8 @@ use crate::app::building_job::{Baseline, Output, Stage};
 use crate::app::building_view::BuildingDrawing;
 use crate::app::worker::Landed;
 use crate::model::building::BuildingErrorEstimate;
-use std::time::Duration;
 
-pub(super) use crate::app::later::Later;
+pub(super) use crate::app::later::{Later, StageTimes};
 
 /// What is on screen: one request's run (whole, or as far as it has solved) and its later
 /// stages as they land. A stage joins only the run of its own request, so nothing shown mixes
@@ -23,13 +22,6 @@ pub(super) struct Solved {
     pub(super) estimate: Later<Option<BuildingErrorEstimate>>,
     /// Whether it is the newest request's (false once a newer one is made).
     pub(super) current: bool,
-}
-
-/// When the newest request's later stages landed, from its change.
-#[derive(Default)]
-pub(super) struct StageTimes {
-    baseline: Option<Duration>,
-    estimate: Option<Duration>,
 }
 
 impl BuildingScene {
@@ -115,12 +107,8 @@ impl BuildingScene {
             self.hold_playback();
         }
         if let Some(s) = &mut self.solved {
-            if matches!(s.baseline, Later::Pending) {
-                s.baseline = Later::Missing;
-            }
-            if matches!(s.estimate, Later::Pending) {
-                s.estimate = Later::Missing;
-            }
+            s.baseline.ended();
+            s.estimate.ended();
         }
     }
 
@@ -136,25 +124,13 @@ impl BuildingScene {
                 s.drawing.result.solved_to_s, self.playback.t_max
             );
         }
-        match (&s.baseline, &s.estimate) {
-            (Later::Pending, _) => "run shown; no-pounding run and error estimate pending".into(),
-            (_, Later::Pending) => "run shown; error estimate pending".into(),
-            _ => "solving...".into(),
-        }
+        crate::app::later::pending_note(&s.baseline, &s.estimate).into()
     }
 
     /// When the later stages of the newest request landed, from its change (the change to
     /// result being the time to its run).
     pub fn later_stages(&self) -> String {
-        // A request done without a stage (cancelled, failed) will not deliver it.
-        let missing = if self.busy() { "pending" } else { "not solved" };
-        let at =
-            |t: Option<Duration>| t.map_or(missing.into(), |t| crate::app::ms(t.as_secs_f64(), 1));
-        format!(
-            "Change to result: from the change to its run on screen. After the change, the run without pounding landed in {}, the error estimate in {}",
-            at(self.times.baseline),
-            at(self.times.estimate)
-        )
+        self.times.describe(self.busy())
     }
 
     /// What a lesson's expressions read: the run and the run without contact, both whole and

@@ -22,6 +22,7 @@ mod export_animation;
 mod hysteresis_view;
 mod impact_params;
 mod impact_scene;
+mod job_error;
 mod later;
 mod launch;
 mod lecture;

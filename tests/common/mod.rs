@@ -165,3 +165,43 @@ pub fn proptest_config(cases: u32) -> proptest::test_runner::Config {
         ..from_env
     }
 }
+
+/// A record of rest: a bridge on it moves only as its initial velocities make it.
+pub fn ground_at_rest() -> pounding::model::motion::GroundMotion {
+    pounding::model::motion::GroundMotion {
+        name: "rest".into(),
+        dt_s: 0.01,
+        accel_m_s2: vec![0.0; 5],
+    }
+}
+
+/// Free girders (bearings and piers of negligible stiffness) under the Sears contact, stiff
+/// (1e12 N/m), undamped, thrown at `velocities` across `gaps` (N + 1 of them).
+pub fn free_girders(
+    velocities: Vec<f64>,
+    gaps: Vec<f64>,
+) -> pounding::model::bridge::BridgeScenario {
+    pounding::model::bridge::BridgeScenario {
+        spans: velocities.len(),
+        contact: pounding::model::building::ContactModel::Sears,
+        stiffness: Some(1e12),
+        pier_stiffness_n_m: vec![1e-3],
+        bearing_stiffness_n_m: vec![1e-3],
+        span_velocity_m_s: velocities,
+        joint_gaps_m: gaps,
+        girder_damping: 0.0,
+        damping_ratio: 0.0,
+        ..pounding::model::bridge::BridgeScenario::three_span()
+    }
+}
+
+/// Three free girders, the outer two thrown at the middle one at `v` and `-v` across 1 mm
+/// joints (the abutments out of reach): each joint is an impact of two equal bars.
+pub fn middle_girder_struck_at_both_ends(v: f64) -> pounding::model::bridge::BridgeScenario {
+    free_girders(vec![v, 0.0, -v], vec![10.0, 1e-3, 1e-3, 10.0])
+}
+
+/// One free girder thrown at 1 m/s at the left abutment, 1 mm away.
+pub fn girder_thrown_at_the_left_abutment() -> pounding::model::bridge::BridgeScenario {
+    free_girders(vec![-1.0], vec![1e-3, 10.0])
+}
