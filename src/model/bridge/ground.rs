@@ -97,6 +97,17 @@ impl Ground {
         None
     }
 
+    /// [`Ground::accel_after`] from the ground `now` at that instant and support (read once
+    /// for every look at it).
+    pub fn accel_after_from(&self, t_s: f64, delay_s: f64, now: &GroundState) -> f64 {
+        self.side(t_s - delay_s, true, false).unwrap_or(now.accel)
+    }
+
+    /// [`Ground::accel_before`] from the ground `now` at that instant and support.
+    pub fn accel_before_from(&self, t_s: f64, delay_s: f64, now: &GroundState) -> f64 {
+        self.side(t_s - delay_s, false, true).unwrap_or(now.accel)
+    }
+
     /// The acceleration just after `t_s` (its right limit): the record's first sample at the
     /// instant the wave arrives, zero at its end.
     pub fn accel_after(&self, t_s: f64, delay_s: f64) -> f64 {

@@ -11,7 +11,7 @@
 //! order of h^2 k / m, tiny where the step resolves the contact).
 
 use super::girder::GirderWaves;
-use super::ground::Ground;
+use super::ground::{Ground, GroundState};
 use super::result::{BridgeEnergy, BridgeResult, BridgeStats, Unseating};
 use super::scenario::{BridgeScenario, Joint, Member};
 use crate::model::building::ContactModel;
@@ -55,6 +55,8 @@ struct Frame {
     f_now: f64,
     /// Where the ground's acceleration breaks inside the step being taken.
     jump: Option<Jump>,
+    /// The ground's acceleration just after the step's start.
+    a_after: f64,
 }
 
 /// A break in the ground's acceleration inside a step: a record sample (a kink), or where the
@@ -104,6 +106,7 @@ impl Frame {
             a_next: 0.0,
             f_now: 0.0,
             jump: None,
+            a_after: 0.0,
         }
     }
 
@@ -225,7 +228,12 @@ struct Run<'a> {
     /// Each girder's elastic displacement at its ends now.
     waves: Vec<[f64; 2]>,
     joints: Vec<JointState>,
-    abutment_delay: [f64; 2],
+    /// The supports' delays: the left abutment, each frame, the right abutment.
+    support_delay: Vec<f64>,
+    /// For each support, the first support with the same delay (whose ground it shares).
+    same_ground: Vec<usize>,
+    /// The ground at every support at the run's present instant.
+    ground_now: Vec<GroundState>,
     /// The girders' end waves known before the step's new forces.
     predicted: Vec<[f64; 2]>,
     /// Each girder's coupling p: how the force at one of its ends moves the other end over a
@@ -288,7 +296,9 @@ impl<'a> Run<'a> {
             girders,
             waves: vec![[0.0; 2]; sc.spans],
             joints,
-            abutment_delay: [0.0, sc.delay_s(sc.length_m())],
+            support_delay: Vec::new(),
+            same_ground: Vec::new(),
+            ground_now: Vec::new(),
             predicted: vec![[0.0; 2]; sc.spans],
             coupling: Vec::new(),
             solved: Vec::new(),
@@ -298,11 +308,40 @@ impl<'a> Run<'a> {
             contact_steps: 0,
         };
         run.compliances();
+        run.supports();
+        run.refresh_ground(0.0);
         run.read_joints(0.0);
         for j in 0..run.joints.len() {
-            run.joints[j].ground_difference = run.ground_difference(j, 0.0);
+            run.joints[j].ground_difference = run.ground_difference(j);
         }
         run
+    }
+
+    /// Every support's delay, and which supports share a ground (all of them under uniform
+    /// excitation, so the record is read once an instant).
+    fn supports(&mut self) {
+        let sc = self.sc;
+        self.support_delay = std::iter::once(0.0)
+            .chain(self.frames.iter().map(|f| f.delay_s))
+            .chain(std::iter::once(sc.delay_s(sc.length_m())))
+            .collect();
+        let d = &self.support_delay;
+        self.same_ground = (0..d.len())
+            .map(|s| (0..s).find(|&o| d[o] == d[s]).unwrap_or(s))
+            .collect();
+        self.ground_now = vec![GroundState::default(); d.len()];
+    }
+
+    /// The ground at every support at time t: what every later look at the ground reads.
+    fn refresh_ground(&mut self, t: f64) {
+        for s in 0..self.support_delay.len() {
+            let o = self.same_ground[s];
+            self.ground_now[s] = if o < s {
+                self.ground_now[o]
+            } else {
+                self.ground.at(t, self.support_delay[s])
+            };
+        }
     }
 
     /// The joints' own compliances S and the girders' couplings p, fixed by the step.
@@ -325,19 +364,20 @@ impl<'a> Run<'a> {
             .collect();
     }
 
-    /// The delay of a member's support: its frame's, or an abutment's (the left one where the
-    /// abutment is on a joint's left).
-    fn delay(&self, member: Member, on_left: bool) -> f64 {
+    /// A member's support: its frame's, or an abutment's (the left one where the abutment is
+    /// on a joint's left).
+    fn support(&self, member: Member, on_left: bool) -> usize {
         match member {
-            Member::Girder(i) => self.frames[i].delay_s,
-            Member::Abutment => self.abutment_delay[usize::from(!on_left)],
+            Member::Girder(i) => i + 1,
+            Member::Abutment if on_left => 0,
+            Member::Abutment => self.frames.len() + 1,
         }
     }
 
-    /// A member's end at a joint: (absolute displacement, rigid velocity, its ground's
+    /// A member's end at a joint now: (absolute displacement, rigid velocity, its ground's
     /// displacement).
-    fn member_end(&self, member: Member, on_left: bool, t: f64) -> (f64, f64, f64) {
-        let g = self.ground.at(t, self.delay(member, on_left));
+    fn member_end(&self, member: Member, on_left: bool) -> (f64, f64, f64) {
+        let g = self.ground_now[self.support(member, on_left)];
         match member {
             Member::Abutment => (g.displacement, g.velocity, g.displacement),
             Member::Girder(i) => {
@@ -351,38 +391,46 @@ impl<'a> Run<'a> {
         }
     }
 
-    /// Closing (left member minus right member, absolute) and rigid closing rate of joint j.
-    fn closing(&self, j: usize, t: f64) -> (f64, f64) {
+    /// Closing (left member minus right member, absolute) and rigid closing rate of joint j
+    /// now.
+    fn closing(&self, j: usize) -> (f64, f64) {
         let joint = &self.joints[j].joint;
-        let (xl, vl, _) = self.member_end(joint.left, true, t);
-        let (xr, vr, _) = self.member_end(joint.right, false, t);
+        let (xl, vl, _) = self.member_end(joint.left, true);
+        let (xr, vr, _) = self.member_end(joint.right, false);
         (xl - xr, vl - vr)
     }
 
-    /// Ground displacement difference across joint j (left member's support minus right's).
-    fn ground_difference(&self, j: usize, t: f64) -> f64 {
+    /// Ground displacement difference across joint j now (left member's support minus right's).
+    fn ground_difference(&self, j: usize) -> f64 {
         let joint = &self.joints[j].joint;
-        self.member_end(joint.left, true, t).2 - self.member_end(joint.right, false, t).2
+        self.member_end(joint.left, true).2 - self.member_end(joint.right, false).2
     }
 
-    /// The joints' overlaps, rates, openings and seats at time t.
+    /// The joints' overlaps, rates, openings and seats at time t (the ground's present).
     fn read_joints(&mut self, t: f64) {
         for j in 0..self.joints.len() {
-            let (closing, rate) = self.closing(j, t);
-            let seat = self.sc.seat_length_m;
+            let (closing, rate) = self.closing(j);
             let js = &mut self.joints[j];
             js.delta = closing - js.joint.gap_m;
             js.rate = rate;
-            js.max_closing = js.max_closing.max(closing);
-            js.max_opening = js.max_opening.max(-closing);
-            if js.unseated.is_none() && -closing > seat {
-                js.unseated = Some(t);
-            }
+            self.read_closing(j, closing, t);
         }
     }
 
-    /// The known parts of every joint's overlap at the step's end (the frames predicted).
-    fn predict_joints(&mut self, t1: f64) {
+    /// Joint j's largest closing and opening, and its seat, with its closing at time t.
+    fn read_closing(&mut self, j: usize, closing: f64, t: f64) {
+        let seat = self.sc.seat_length_m;
+        let js = &mut self.joints[j];
+        js.max_closing = js.max_closing.max(closing);
+        js.max_opening = js.max_opening.max(-closing);
+        if js.unseated.is_none() && -closing > seat {
+            js.unseated = Some(t);
+        }
+    }
+
+    /// The known parts of every joint's overlap at the step's end (the frames predicted, the
+    /// ground already there).
+    fn predict_joints(&mut self) {
         for (i, g) in self.girders.iter_mut().enumerate() {
             if let Some(g) = g {
                 let forces = [self.joints[i].force, self.joints[i + 1].force];
@@ -394,7 +442,7 @@ impl<'a> Run<'a> {
             let joint = self.joints[j].joint;
             let mut k = -joint.gap_m;
             for (member, on_left, sign) in [(joint.left, true, 1.0), (joint.right, false, -1.0)] {
-                let ground = self.ground.at(t1, self.delay(member, on_left)).displacement;
+                let ground = self.ground_now[self.support(member, on_left)].displacement;
                 k += sign
                     * match member {
                         Member::Abutment => ground,
@@ -407,16 +455,24 @@ impl<'a> Run<'a> {
         }
     }
 
-    /// Every frame's girder before the joint forces, over the step from t0 to t1.
+    /// Every frame's girder before the joint forces, over the step from t0 to t1; the ground
+    /// is read at t1 on the way (it was at t0).
     fn predict_frames(&mut self, t0: f64, t1: f64) {
         let h = self.h;
         let eps = 1e-9 * h;
         let dt = self.ground.corrected.dt_s;
         let last = (self.ground.corrected.accel_m_s2.len() as f64 - 1.0).max(0.0);
-        for f in self.frames.iter_mut() {
+        for (i, f) in self.frames.iter_mut().enumerate() {
+            f.a_after = self
+                .ground
+                .accel_after_from(t0, f.delay_s, &self.ground_now[i + 1]);
+        }
+        self.refresh_ground(t1);
+        for (i, f) in self.frames.iter_mut().enumerate() {
             let accel = [
-                self.ground.accel_after(t0, f.delay_s),
-                self.ground.accel_before(t1, f.delay_s),
+                f.a_after,
+                self.ground
+                    .accel_before_from(t1, f.delay_s, &self.ground_now[i + 1]),
             ];
             // The record's samples are its acceleration's kinks, and its first and last are
             // where it jumps from and back to rest: at most one lies inside a step (h <= dt).
@@ -438,6 +494,13 @@ impl<'a> Run<'a> {
         out.clear();
         out.extend(self.joints.iter().map(|js| (js.k_star, 0.0)));
         let h = self.h;
+        // No joint closed at the step's end without forces: every force is zero (what one
+        // sweep finds, without its element calls).
+        if self.joints.iter().all(|js| js.k_star <= 0.0) {
+            out.iter_mut().for_each(|o| o.1 = 0.0);
+            self.solved = out;
+            return;
+        }
         for _ in 0..MAX_SWEEPS {
             let mut change: f64 = 0.0;
             let mut largest: f64 = 0.0;
@@ -479,16 +542,20 @@ struct Before {
 }
 
 impl Run<'_> {
-    fn powers(&self, t: f64) -> (f64, f64) {
-        self.frames.iter().fold((0.0, 0.0), |(d, i), f| {
-            let (pd, pi) = f.powers(self.ground.at(t, f.delay_s).accel);
-            (d + pd, i + pi)
-        })
+    /// The frames' damping and input powers now.
+    fn powers(&self) -> (f64, f64) {
+        self.frames
+            .iter()
+            .enumerate()
+            .fold((0.0, 0.0), |(d, i), (k, f)| {
+                let (pd, pi) = f.powers(self.ground_now[k + 1].accel);
+                (d + pd, i + pi)
+            })
     }
 
-    /// Keeps the state at t0 for the step's bookkeeping.
-    fn keep_before(&mut self, t0: f64) {
-        let (damping_power, input_power) = self.powers(t0);
+    /// Keeps the state at the step's start for its bookkeeping.
+    fn keep_before(&mut self) {
+        let (damping_power, input_power) = self.powers();
         let b = &mut self.before;
         b.forces.clear();
         b.forces.extend(self.joints.iter().map(|j| j.force));
@@ -506,11 +573,11 @@ impl Run<'_> {
     fn step(&mut self, n: usize) {
         let h = self.h;
         let (t0, t1) = (n as f64 * h, (n + 1) as f64 * h);
-        self.keep_before(t0);
+        self.keep_before();
         self.predict_frames(t0, t1);
         let forces_act = !matches!(self.sc.contact, ContactModel::None | ContactModel::Stereo);
         if forces_act {
-            self.predict_joints(t1);
+            self.predict_joints();
             self.solve_forces();
         }
         for j in 0..self.joints.len() {
@@ -529,7 +596,7 @@ impl Run<'_> {
         self.read_joints(t1);
         // The powers at the step's end are those the step arrived with: an exchange after it
         // is a jump whose loss the exchange counts itself.
-        let powers = self.powers(t1);
+        let powers = self.powers();
         if self.sc.contact == ContactModel::Stereo {
             self.exchange(t1);
         }
@@ -581,7 +648,7 @@ impl Run<'_> {
                     approach_velocity_m_s: rate,
                 });
                 for k in 0..self.joints.len() {
-                    let (closing, r) = self.closing(k, t);
+                    let (closing, r) = self.closing(k);
                     let js = &mut self.joints[k];
                     js.delta = closing - js.joint.gap_m;
                     js.rate = r;
@@ -609,7 +676,7 @@ impl Run<'_> {
         }
         let mut in_contact = false;
         for j in 0..self.joints.len() {
-            let ground = self.ground_difference(j, t1);
+            let ground = self.ground_difference(j);
             let js = &mut self.joints[j];
             let (f0, f1) = (before.forces[j], js.force);
             let (d0, d1) = (before.deltas[j], js.delta);
@@ -690,7 +757,7 @@ impl Histories {
         for (i, f) in run.frames.iter().enumerate() {
             self.girder[i].push(f.girder_u());
             self.pier[i].push(f.pier_u());
-            self.absolute[i].push(f.girder_u() + run.ground.at(t, f.delay_s).displacement);
+            self.absolute[i].push(f.girder_u() + run.ground_now[i + 1].displacement);
         }
     }
 }
@@ -705,11 +772,15 @@ struct Peaks {
 impl Peaks {
     fn read(&mut self, frames: &[Frame]) {
         for (i, f) in frames.iter().enumerate() {
-            let (g, p) = (f.girder_u(), f.pier_u());
-            self.girder[i] = self.girder[i].max(g.abs());
-            self.pier[i] = self.pier[i].max(p.abs());
-            self.bearing[i] = self.bearing[i].max((g - p).abs());
+            self.read_one(i, f.girder_u(), f.pier_u());
         }
+    }
+
+    /// Frame i's girder at g and pier top at p.
+    fn read_one(&mut self, i: usize, g: f64, p: f64) {
+        self.girder[i] = self.girder[i].max(g.abs());
+        self.pier[i] = self.pier[i].max(p.abs());
+        self.bearing[i] = self.bearing[i].max((g - p).abs());
     }
 }
 
@@ -756,14 +827,14 @@ pub fn solve_with(
     };
     hist.push(&run, 0.0);
     peaks.read(&run.frames);
-    for n in 0..steps {
-        if n % 4096 == 0 {
-            control.report(n as f64 / steps as f64)?;
+    for n in 1..=steps {
+        if n % 4096 == 1 {
+            control.report((n - 1) as f64 / steps as f64)?;
         }
-        run.step(n);
+        run.step(n - 1);
         peaks.read(&run.frames);
-        if (n + 1) % stride == 0 || n + 1 == steps {
-            hist.push(&run, (n + 1) as f64 * h);
+        if n % stride == 0 || n == steps {
+            hist.push(&run, n as f64 * h);
         }
         if !run
             .frames
@@ -771,7 +842,7 @@ pub fn solve_with(
             .all(|f| f.q.iter().chain(&f.v).all(|x| x.is_finite()))
         {
             return Err(SolveError::Diverged {
-                at_s: (n + 1) as f64 * h,
+                at_s: n as f64 * h,
                 why: "the frames' motion is no longer finite; lower solver.max_step or the contact stiffness".into(),
             });
         }
