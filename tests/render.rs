@@ -359,26 +359,18 @@ fn a_girder_loaded_at_both_ends_is_coloured_by_the_sum_of_both_ends_waves() {
     // The three girders end to end over the world [0, 120] x [0, 1].
     let bars: Vec<GpuBar> = (0..3)
         .map(|i| {
-            let (offset, count, dt, end) = history.layout[i];
+            let (offset, count, _, _) = history.layout[i];
             let w = &r.girder_waves[i][0];
             GpuBar {
                 origin_x: 40.0 * i as f32,
                 direction: 1.0,
-                body_length: 40.0,
-                wave_speed: w.wave_speed_m_s as f32,
-                round_trip: w.round_trip_s() as f32,
-                dt,
-                end_time: end,
-                offset,
-                count,
-                inv_area: (1.0 / g.area_m2) as f32,
                 inv_stress_scale: (1.0 / scale) as f32,
                 y_bottom: 0.0,
                 y_top: 1.0,
                 world_per_metre: 1.0,
                 kind: 2,
                 aux_offset: offset + count,
-                ..GpuBar::of_waves(w, 1.0)
+                ..GpuBar::of_waves(w, history.layout[i], 1.0)
             }
         })
         .collect();

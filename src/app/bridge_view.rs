@@ -72,27 +72,17 @@ impl BridgeDrawing {
         (stress_scale_pa, velocity_scale_m_s): (f64, f64),
     ) -> GpuBar {
         let w = &self.result.girder_waves[i][0];
-        let (offset, count, dt, end) = self.gpu.layout[i];
+        let (offset, count, _, _) = self.gpu.layout[i];
         GpuBar {
             origin_x: origin_x as f32,
             direction: 1.0,
-            body_length: w.body_length_m as f32,
-            zone_length: 0.0,
-            wave_speed: w.wave_speed_m_s as f32,
-            round_trip: w.round_trip_s() as f32,
-            dt: dt.max(1e-12),
-            end_time: end,
-            offset,
-            count,
-            inv_area: (1.0 / w.area_m2) as f32,
             inv_stress_scale: (1.0 / stress_scale_pa) as f32,
             y_bottom: y.0 as f32,
             y_top: y.1 as f32,
             world_per_metre: 1.0,
-            decay_per_s: w.decay_per_s as f32,
             kind: 2,
             aux_offset: offset + count,
-            ..GpuBar::of_waves(w, velocity_scale_m_s)
+            ..GpuBar::of_waves(w, self.gpu.layout[i], velocity_scale_m_s)
         }
     }
 }

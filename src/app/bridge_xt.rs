@@ -122,7 +122,7 @@ impl DeckXt<'_> {
         None
     }
 
-    /// The title, the time axis in ms from the window's start, and the joints.
+    /// The title, the time axis (seconds of the run, at round values), the girders and the joints.
     fn axes(
         &self,
         painter: &egui::Painter,

@@ -158,27 +158,16 @@ impl<'a> Scene<'a> {
                 let b = buildings[s];
                 let slab = b.slab(f);
                 let w = r.slab_waves()[level][s].as_ref().expect("drawn");
-                let (offset, count, dt, end) = d.gpu.layout[i];
                 let z = b.elevations_m()[f];
                 GpuBar {
                     origin_x: (self.inner[s] + self.floor_u(s, f) * self.exaggeration + self.xg)
                         as f32,
                     direction: self.dir[s] as f32,
-                    body_length: slab.length_m as f32,
-                    zone_length: 0.0,
-                    wave_speed: w.wave_speed_m_s as f32,
-                    round_trip: w.round_trip_s() as f32,
-                    dt,
-                    end_time: end,
-                    offset,
-                    count,
-                    inv_area: (1.0 / slab.area_m2()) as f32,
                     inv_stress_scale: (slab.area_m2() / force_scale) as f32,
                     y_bottom: (z - self.slab_t) as f32,
                     y_top: z as f32,
                     world_per_metre: 1.0,
-                    decay_per_s: w.decay_per_s as f32,
-                    ..GpuBar::of_waves(w, 1.0)
+                    ..GpuBar::of_waves(w, d.gpu.layout[i], 1.0)
                 }
             })
             .collect()

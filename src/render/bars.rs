@@ -52,10 +52,27 @@ pub struct GpuBar {
 }
 
 impl GpuBar {
-    /// The velocity fields of a bar's waves, with `v_scale` saturating the colour map; the
-    /// geometry, the history's place and the stress scale left for the caller.
-    pub fn of_waves(w: &BarWaves, v_scale: f64) -> Self {
+    /// Everything a bar's waves fix: the body, its waves' speed and damping, where its history
+    /// lies on the GPU (`layout`, an entry of [`GpuHistory::layout`]) and the velocity fields,
+    /// with `v_scale` saturating the colour map. The geometry on screen and the stress scale are
+    /// left for the caller.
+    pub fn of_waves(
+        w: &BarWaves,
+        (offset, count, dt, end): (u32, u32, f32, f32),
+        v_scale: f64,
+    ) -> Self {
         GpuBar {
+            body_length: w.body_length_m as f32,
+            zone_length: w.zone_length_m as f32,
+            wave_speed: w.wave_speed_m_s as f32,
+            round_trip: w.round_trip_s() as f32,
+            // A history of no samples has no step; the shader divides by it.
+            dt: dt.max(1e-12),
+            end_time: end,
+            offset,
+            count,
+            inv_area: (1.0 / w.area_m2) as f32,
+            decay_per_s: w.decay_per_s as f32,
             inv_impedance: (1.0 / w.impedance_n_s_m) as f32,
             initial_velocity: w.initial_velocity_m_s as f32,
             push_direction: w.push_direction as f32,
@@ -519,25 +536,14 @@ impl BarsLayout {
         let wave_force = z1 * z2 / (z1 + z2) * w;
         let mut bars = [GpuBar::default(); 2];
         for (i, wv) in waves.iter().enumerate() {
-            let (offset, count, dt, end) = gpu.layout[i];
             bars[i] = GpuBar {
                 origin_x: if i == 0 { -gap as f32 } else { gap as f32 },
                 direction: if i == 0 { -1.0 } else { 1.0 },
-                body_length: wv.body_length_m as f32,
-                zone_length: wv.zone_length_m as f32,
-                wave_speed: wv.wave_speed_m_s as f32,
-                round_trip: wv.round_trip_s() as f32,
-                dt: dt.max(1e-12),
-                end_time: end,
-                offset,
-                count,
-                inv_area: (1.0 / wv.area_m2) as f32,
                 inv_stress_scale: (wv.area_m2 / wave_force) as f32,
                 y_bottom: BAR_Y.0,
                 y_top: BAR_Y.1,
                 world_per_metre: wpm[i] as f32,
-                decay_per_s: wv.decay_per_s as f32,
-                ..GpuBar::of_waves(wv, v_scale)
+                ..GpuBar::of_waves(wv, gpu.layout[i], v_scale)
             };
         }
         BarsLayout {

@@ -55,8 +55,6 @@ struct Frame {
     f_now: f64,
     /// Where the ground's acceleration breaks inside the step being taken.
     jump: Option<Jump>,
-    /// The ground's acceleration just after the step's start.
-    a_after: f64,
 }
 
 /// A break in the ground's acceleration inside a step: a record sample (a kink), or where the
@@ -106,7 +104,6 @@ impl Frame {
             a_next: 0.0,
             f_now: 0.0,
             jump: None,
-            a_after: 0.0,
         }
     }
 
@@ -232,8 +229,10 @@ struct Run<'a> {
     support_delay: Vec<f64>,
     /// For each support, the first support with the same delay (whose ground it shares).
     same_ground: Vec<usize>,
-    /// The ground at every support at the run's present instant.
+    /// The ground at every support at the run's present instant, and at the reading before
+    /// (a step's start, once the step has read its end).
     ground_now: Vec<GroundState>,
+    ground_then: Vec<GroundState>,
     /// The girders' end waves known before the step's new forces.
     predicted: Vec<[f64; 2]>,
     /// Each girder's coupling p: how the force at one of its ends moves the other end over a
@@ -299,6 +298,7 @@ impl<'a> Run<'a> {
             support_delay: Vec::new(),
             same_ground: Vec::new(),
             ground_now: Vec::new(),
+            ground_then: Vec::new(),
             predicted: vec![[0.0; 2]; sc.spans],
             coupling: Vec::new(),
             solved: Vec::new(),
@@ -330,10 +330,13 @@ impl<'a> Run<'a> {
             .map(|s| (0..s).find(|&o| d[o] == d[s]).unwrap_or(s))
             .collect();
         self.ground_now = vec![GroundState::default(); d.len()];
+        self.ground_then = self.ground_now.clone();
     }
 
-    /// The ground at every support at time t: what every later look at the ground reads.
+    /// The ground at every support at time t: what every later look at the ground reads (the
+    /// reading it replaces kept as the one before).
     fn refresh_ground(&mut self, t: f64) {
+        std::mem::swap(&mut self.ground_now, &mut self.ground_then);
         for s in 0..self.support_delay.len() {
             let o = self.same_ground[s];
             self.ground_now[s] = if o < s {
@@ -410,21 +413,15 @@ impl<'a> Run<'a> {
     fn read_joints(&mut self, t: f64) {
         for j in 0..self.joints.len() {
             let (closing, rate) = self.closing(j);
+            let seat = self.sc.seat_length_m;
             let js = &mut self.joints[j];
             js.delta = closing - js.joint.gap_m;
             js.rate = rate;
-            self.read_closing(j, closing, t);
-        }
-    }
-
-    /// Joint j's largest closing and opening, and its seat, with its closing at time t.
-    fn read_closing(&mut self, j: usize, closing: f64, t: f64) {
-        let seat = self.sc.seat_length_m;
-        let js = &mut self.joints[j];
-        js.max_closing = js.max_closing.max(closing);
-        js.max_opening = js.max_opening.max(-closing);
-        if js.unseated.is_none() && -closing > seat {
-            js.unseated = Some(t);
+            js.max_closing = js.max_closing.max(closing);
+            js.max_opening = js.max_opening.max(-closing);
+            if js.unseated.is_none() && -closing > seat {
+                js.unseated = Some(t);
+            }
         }
     }
 
@@ -462,15 +459,11 @@ impl<'a> Run<'a> {
         let eps = 1e-9 * h;
         let dt = self.ground.corrected.dt_s;
         let last = (self.ground.corrected.accel_m_s2.len() as f64 - 1.0).max(0.0);
-        for (i, f) in self.frames.iter_mut().enumerate() {
-            f.a_after = self
-                .ground
-                .accel_after_from(t0, f.delay_s, &self.ground_now[i + 1]);
-        }
         self.refresh_ground(t1);
         for (i, f) in self.frames.iter_mut().enumerate() {
             let accel = [
-                f.a_after,
+                self.ground
+                    .accel_after_from(t0, f.delay_s, &self.ground_then[i + 1]),
                 self.ground
                     .accel_before_from(t1, f.delay_s, &self.ground_now[i + 1]),
             ];
@@ -772,15 +765,11 @@ struct Peaks {
 impl Peaks {
     fn read(&mut self, frames: &[Frame]) {
         for (i, f) in frames.iter().enumerate() {
-            self.read_one(i, f.girder_u(), f.pier_u());
+            let (g, p) = (f.girder_u(), f.pier_u());
+            self.girder[i] = self.girder[i].max(g.abs());
+            self.pier[i] = self.pier[i].max(p.abs());
+            self.bearing[i] = self.bearing[i].max((g - p).abs());
         }
-    }
-
-    /// Frame i's girder at g and pier top at p.
-    fn read_one(&mut self, i: usize, g: f64, p: f64) {
-        self.girder[i] = self.girder[i].max(g.abs());
-        self.pier[i] = self.pier[i].max(p.abs());
-        self.bearing[i] = self.bearing[i].max((g - p).abs());
     }
 }
 
