@@ -71,6 +71,71 @@ fn the_window_starts_draws_and_closes_on_request() {
 }
 
 #[test]
+fn a_drag_is_refused_by_name_before_a_window_opens_and_measured_when_one_does() {
+    for (spec, said) in [
+        ("gap", "KEY=FROM:TO"),
+        ("gap=0.01:wide", "'wide' is not a finite number"),
+    ] {
+        let o = pounding(&["window", "--drag", spec, "--exit-after-frames", "5"]);
+        assert!(!o.status.success());
+        let err = stderr(&o);
+        assert!(err.contains("--drag") && err.contains(said), "{err}");
+    }
+    let o = pounding(&["window", "--drag", "gap=0.01:0.03"]);
+    assert!(!o.status.success(), "a drag that never ends is refused");
+    let has_display = std::env::var_os("DISPLAY").is_some() || std::env::var_os("CI").is_some();
+    if !has_display {
+        return;
+    }
+    let o = succeeds(&[
+        "window",
+        "--scene",
+        "buildings",
+        "--preset",
+        "paper-buildings",
+        "--drag",
+        "gap=0.01:0.03",
+        "--exit-after-frames",
+        "30",
+    ]);
+    let err = stderr(&o);
+    // How many runs land depends on the machine; that every frame was a change does not.
+    assert!(err.contains("--drag gap: 30 changes in"), "{err}");
+    assert!(
+        err.contains("runs landed; change to result median"),
+        "{err}"
+    );
+    let o = succeeds(&[
+        "window",
+        "--scene",
+        "bar",
+        "--drag",
+        "gap=0.01:0.03",
+        "--exit-after-frames",
+        "5",
+    ]);
+    let err = stderr(&o);
+    assert!(
+        err.contains("--drag: stopped: only the buildings and bridge scenes"),
+        "{err}"
+    );
+    let o = succeeds(&[
+        "window",
+        "--scene",
+        "buildings",
+        "--drag",
+        "no.such.key=1:2",
+        "--exit-after-frames",
+        "5",
+    ]);
+    let err = stderr(&o);
+    assert!(
+        err.contains("--drag: stopped:") && err.contains("no.such.key"),
+        "{err}"
+    );
+}
+
+#[test]
 fn json_report_carries_the_promised_fields_in_si_units() {
     let v = json(&["impact"]);
     for key in [

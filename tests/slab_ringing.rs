@@ -169,3 +169,48 @@ fn a_slabs_ringing_read_in_closed_form_is_what_stepping_it_gives_and_both_are_da
         assert!(w < 1e-5 * amplitude, "{w:.2e} of {amplitude:.2e}");
     }
 }
+
+/// A drawing puts every slab's history on a grid in one pass (`history_on_grid`); the picture
+/// must be the model's, so each sample is what reading H at that instant gives, to the bit: on
+/// grids finer and coarser than the solver's, across contacts, the ringing between them and
+/// the ringing after the run.
+#[test]
+fn a_slab_history_put_on_a_grid_in_one_pass_is_the_history_read_instant_by_instant() {
+    use pounding::io::building_settings::BuildingSetup;
+    use pounding::model::field::History;
+    let mut setup: BuildingSetup =
+        pounding::io::preset::load_for("paper-buildings", "buildings").expect("preset");
+    // Slab damping makes each round trip of ringing weaker than the last.
+    setup.apply_assignment("slab.damping=0.05").expect("key");
+    setup.apply_assignment("motion.duration=3").expect("key");
+    let motion = pounding::io::motion::load(&setup.motion).expect("record");
+    let result = pounding::model::building::solve(&setup.scenario, &motion).expect("run");
+    let mut checked = 0;
+    for w in result.slab_waves().iter().flat_map(|l| l.iter().flatten()) {
+        let History::Segments { dt_s, segments } = &w.history else {
+            panic!("a slab's history is kept in stretches");
+        };
+        assert!(
+            segments.len() > 3,
+            "several contacts and ringing between them"
+        );
+        assert!(w.decay_per_s > 0.0);
+        for scale in [0.37, 1.0, 1.2, 7.9] {
+            let dt = dt_s * scale;
+            // Past the run's end: the ringing after it.
+            let n = (1.2 * w.end_s / dt) as usize;
+            let grid = w.history_on_grid(dt, n);
+            assert_eq!(grid.len(), n);
+            for (k, v) in grid.iter().enumerate() {
+                let at = w.history_at(k as f64 * dt);
+                assert!(
+                    v.to_bits() == at.to_bits(),
+                    "sample {k} of dt = {dt:e}: {v:e} against {at:e}"
+                );
+            }
+            assert!(grid.iter().any(|v| *v != 0.0));
+            checked += n;
+        }
+    }
+    assert!(checked > 100_000, "{checked} samples");
+}

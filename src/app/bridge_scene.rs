@@ -132,8 +132,7 @@ impl BridgeScene {
     fn land(&mut self, landed: Landed<Output>) {
         match landed.output {
             Ok(Stage::Run(drawing)) => {
-                self.slot.solve_time = landed.job_time;
-                self.slot.latency = landed.since_request;
+                self.slot.record_run(landed.job_time, landed.since_request);
                 if !self.solved.as_ref().is_some_and(|s| s.current) {
                     self.selected = None;
                 }
@@ -208,7 +207,7 @@ impl BridgeScene {
             return;
         };
         let d = &s.drawing;
-        let stats = d.motion.stats();
+        let stats = d.motion_stats;
         let travel = d
             .setup
             .scenario

@@ -12,7 +12,7 @@
 use crate::io::bridge_settings::BridgeSetup;
 use crate::model::bridge::ground::Ground;
 use crate::model::bridge::{BridgeResult, Member};
-use crate::model::motion::GroundMotion;
+use crate::model::motion::{GroundMotion, MotionStats};
 use crate::model::xt::interpolate;
 use crate::render::bars::{GpuBar, GpuHistory, View, Viewport, uniforms};
 use eframe::egui::{self, Color32, Pos2, Stroke};
@@ -25,6 +25,8 @@ pub struct BridgeDrawing {
     pub result: BridgeResult,
     pub ground: Ground,
     pub gpu: Arc<GpuHistory>,
+    /// The record's summary (a response spectrum among it: worked out here, off the UI thread).
+    pub motion_stats: MotionStats,
 }
 
 impl BridgeDrawing {
@@ -32,6 +34,7 @@ impl BridgeDrawing {
         let gpu = Arc::new(GpuHistory::from_pairs(&result.girder_waves));
         BridgeDrawing {
             ground: Ground::new(&motion),
+            motion_stats: motion.stats(),
             setup,
             motion,
             result,

@@ -16,10 +16,8 @@ use super::xt_view::{XtDiagram, XtOptions, XtSource};
 use crate::io::building_settings::BuildingSetup;
 use crate::model::field::BarWaves;
 use crate::model::motion::G;
-use crate::render::bars::GpuHistory;
 use eframe::egui::{self, Color32};
 use egui_plot::{Legend, Line, Plot, PlotBounds, VLine};
-use std::sync::Arc;
 
 #[path = "building_stages.rs"]
 mod stages;
@@ -27,7 +25,7 @@ use stages::{Later, Solved, StageTimes};
 
 /// The slabs an x-t diagram shows: the run (its history id) and level they belong to, their
 /// waves, and those on the GPU.
-type SlabsShown = (u64, usize, Box<[BarWaves; 2]>, Arc<GpuHistory>);
+type SlabsShown = (u64, usize, Box<[BarWaves; 2]>);
 
 pub struct BuildingScene {
     pub setup: BuildingSetup,
@@ -52,8 +50,8 @@ pub struct BuildingScene {
     selected: Option<usize>,
     /// What the x-t diagram shows.
     xt: XtOptions,
-    /// The slabs of the level shown, and their histories on the GPU, kept while the result and
-    /// the level stay.
+    /// The slabs of the level shown, kept while the result and the level stay (their
+    /// histories on the GPU are the drawing's).
     xt_slabs: Option<SlabsShown>,
     /// The panels drawn (a lesson step's, or all).
     pub visibility: Visibility,
@@ -168,7 +166,7 @@ impl BuildingScene {
             ui.label("solving...");
             return;
         };
-        let stats = s.drawing.motion.stats();
+        let stats = s.drawing.motion_stats;
         let d = &s.drawing;
         ui.label(format!(
             "{}: {:.2} s at {} s, PGA {:.3} g, PGV {:.3} m/s, Arias {:.2} m/s, 5% spectrum peaks at {:.2} s",
@@ -317,15 +315,18 @@ impl BuildingScene {
             ));
             return;
         };
-        let key = s.drawing.history_id();
-        if !matches!(&self.xt_slabs, Some((k, l, _, _)) if *k == key && *l == e.level) {
-            let waves = Box::new([left.clone(), right.clone()]);
-            let gpu = Arc::new(GpuHistory::from_waves(&waves));
-            self.xt_slabs = Some((key, e.level, waves, gpu));
-        }
-        let Some((_, _, waves, gpu)) = &self.xt_slabs else {
+        let Some(entries) = s.drawing.slab_entries(e.level) else {
             return;
         };
+        let key = s.drawing.history_id();
+        if !matches!(&self.xt_slabs, Some((k, l, _)) if *k == key && *l == e.level) {
+            let waves = Box::new([left.clone(), right.clone()]);
+            self.xt_slabs = Some((key, e.level, waves));
+        }
+        let Some((_, _, waves)) = &self.xt_slabs else {
+            return;
+        };
+        let gpu = s.drawing.gpu();
         // A slab round trip either side at least: the waves arriving and ringing on.
         let trip = waves[0].round_trip_s().max(waves[1].round_trip_s());
         let margin = (0.5 * e.duration_s()).max(trip);
@@ -342,6 +343,7 @@ impl BuildingScene {
             source: XtSource::Slabs {
                 waves,
                 approach_m_s: e.approach_velocity_m_s,
+                entries,
             },
             gpu,
             t_start,

@@ -52,8 +52,7 @@ impl BuildingScene {
             Ok(Stage::Run(drawing)) => {
                 // Change to result is the time to the first whole run: the checks that follow
                 // it are timed apart.
-                self.slot.solve_time = landed.job_time;
-                self.slot.latency = landed.since_request;
+                self.slot.record_run(landed.job_time, landed.since_request);
                 self.show_run(drawing, true);
             }
             Ok(Stage::Baseline(b)) => {

@@ -6,7 +6,7 @@
 use crate::io::building_settings::BuildingSetup;
 use crate::model::building::{Attachment, BuildingResult, Level};
 use crate::model::field::BarWaves;
-use crate::model::motion::GroundMotion;
+use crate::model::motion::{GroundMotion, MotionStats};
 use crate::model::xt::interpolate;
 use crate::render::bars::{GpuBar, GpuHistory, View, Viewport, uniforms};
 use eframe::egui::{self, Color32, Pos2, Stroke};
@@ -18,6 +18,8 @@ pub struct BuildingDrawing {
     pub setup: BuildingSetup,
     pub motion: GroundMotion,
     pub result: BuildingResult,
+    /// The record's summary (a response spectrum among it: worked out here, off the UI thread).
+    pub motion_stats: MotionStats,
     ground_displacement: Vec<f64>,
     /// (level, side) of each bar in `gpu`.
     bars: Vec<(usize, usize)>,
@@ -28,6 +30,21 @@ impl BuildingDrawing {
     /// Unique to this drawing's run (its GPU history's id).
     pub fn history_id(&self) -> u64 {
         self.gpu.id
+    }
+
+    /// The history on the GPU of every slab with waves.
+    pub fn gpu(&self) -> &Arc<GpuHistory> {
+        &self.gpu
+    }
+
+    /// Where the two slabs of `level` lie in [`BuildingDrawing::gpu`] (`None` unless both
+    /// have waves).
+    pub fn slab_entries(&self, level: usize) -> Option<[(u32, u32, f32, f32); 2]> {
+        let entry = |side| {
+            let i = self.bars.iter().position(|&b| b == (level, side))?;
+            Some(self.gpu.layout[i])
+        };
+        Some([entry(0)?, entry(1)?])
     }
 
     pub fn new(setup: BuildingSetup, motion: GroundMotion, result: BuildingResult) -> Self {
@@ -44,6 +61,7 @@ impl BuildingDrawing {
         let gpu = Arc::new(GpuHistory::from_bars(waves));
         BuildingDrawing {
             ground_displacement: motion.displacement_m(),
+            motion_stats: motion.stats(),
             setup,
             motion,
             result,

@@ -49,6 +49,12 @@ pub struct Launch {
     pub lesson_step: Option<usize>,
     /// Start in lecture mode.
     pub lecture: bool,
+    /// Move this setting every frame and report how soon its runs land (with
+    /// `exit_after_frames`).
+    pub drag: Option<super::drag::DragSpec>,
+    /// The panels leave their background to the frame's clear (the window; a test harness
+    /// that clears to transparent keeps them filled).
+    pub background_by_clear: bool,
 }
 
 /// Set by snapshot tests: wall-clock timings (which differ run to run) print as "-".

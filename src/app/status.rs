@@ -14,7 +14,8 @@ pub fn ms(seconds: f64, decimals: usize) -> String {
 
 impl PoundingApp {
     pub(super) fn status_bar(&mut self, ui: &mut egui::Ui) {
-        egui::Panel::bottom("status").show(ui, |ui| {
+        let frame = self.panel_frame(egui::Frame::side_top_panel(ui.style()));
+        egui::Panel::bottom("status").frame(frame).show(ui, |ui| {
             ui.horizontal(|ui| {
                 let (solve, latency) = self.shown().timings();
                 let solving = if self.shown().busy() {

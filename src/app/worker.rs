@@ -27,6 +27,9 @@ pub struct Done<O> {
 
 type Request<I> = (u64, I, Arc<Control>);
 
+/// The longest a change waits for the solve under way to give its first output.
+pub const HOLD_AT_MOST: Duration = Duration::from_millis(200);
+
 /// A solve that lands within this shows no progress bar.
 pub const PROGRESS_AFTER: Duration = Duration::from_millis(50);
 
@@ -144,11 +147,16 @@ impl<I: Send + 'static, O: Send + 'static> Worker<I, O> {
     /// Posts new inputs; the solve under way, if any, is cancelled and what it has not yet
     /// delivered is dropped.
     pub fn request(&mut self, input: I) {
+        self.request_at(input, Instant::now());
+    }
+
+    /// As `request`, for a change made at `at` (its latency is counted from then).
+    pub fn request_at(&mut self, input: I, at: Instant) {
         self.cancel();
         self.landed.clear();
         self.next_id += 1;
         let control = Arc::new(Control::new());
-        self.pending = Some((self.next_id, Instant::now(), control.clone()));
+        self.pending = Some((self.next_id, at, control.clone()));
         // A send only fails once the thread is gone, and then there is nothing left to do.
         let _ = self.to_worker.send((self.next_id, input, control));
     }
@@ -214,6 +222,17 @@ pub struct SolveSlot<I, O> {
     pub latency: Duration,
     /// Why the newest request gave no (or only part of a) result; `None` after a good one.
     pub error: Option<String>,
+    /// Runs landed so far (the ones the timings measure).
+    pub runs: u64,
+    /// A change held back while the solve under way finishes its first output, and when it
+    /// was made.
+    queued: Option<(I, Instant)>,
+    /// When the solve under way was sent, and whether its run has landed.
+    sent: Option<(Instant, bool)>,
+    /// How long the last landed run took.
+    last_run: Option<Duration>,
+    /// The longest a change waits for the run under way ([`HOLD_AT_MOST`]).
+    pub hold_at_most: Duration,
 }
 
 impl<I: Send + 'static, O: Send + 'static> SolveSlot<I, O> {
@@ -240,21 +259,61 @@ impl<I: Send + 'static, O: Send + 'static> SolveSlot<I, O> {
             solve_time: Duration::ZERO,
             latency: Duration::ZERO,
             error: None,
+            runs: 0,
+            queued: None,
+            sent: None,
+            last_run: None,
+            hold_at_most: HOLD_AT_MOST,
         }
     }
 
-    /// Posts new inputs; the solve under way, if any, is cancelled.
+    /// Posts new inputs. The solve under way is cancelled, unless its run is due within twice
+    /// the time the last run took (at most `hold_at_most`, and that long before any run has
+    /// landed): then the new inputs wait for that run and go when it lands, cancelling only
+    /// the later stages. A dragged slider asks for a solve every frame; cancelling each one
+    /// shows nothing until the drag stops once a solve takes longer than a frame, where holding
+    /// shows every run, each at most one solve behind the hand.
     pub fn request(&mut self, input: I) {
-        self.worker.request(input);
+        let now = Instant::now();
+        match self.sent {
+            Some((at, false)) if self.worker.busy() && now - at < self.hold() => {
+                self.queued = Some((input, now));
+            }
+            _ => self.send(input, now),
+        }
     }
 
-    /// Asks the solve under way to stop.
-    pub fn cancel(&self) {
+    /// How long a change may wait for the run under way.
+    fn hold(&self) -> Duration {
+        self.last_run
+            .map_or(self.hold_at_most, |d| (2 * d).min(self.hold_at_most))
+    }
+
+    fn send(&mut self, input: I, changed: Instant) {
+        self.queued = None;
+        self.sent = Some((Instant::now(), false));
+        self.worker.request_at(input, changed);
+    }
+
+    /// Sends the held change once the run it waits for has landed, its job is done, or the
+    /// wait is over.
+    fn release(&mut self) {
+        let waited = self.sent.is_none_or(|(at, run_landed)| {
+            run_landed || !self.worker.busy() || at.elapsed() >= self.hold()
+        });
+        if waited && let Some((input, changed)) = self.queued.take() {
+            self.send(input, changed);
+        }
+    }
+
+    /// Asks the solve under way to stop; a held change is dropped.
+    pub fn cancel(&mut self) {
+        self.queued = None;
         self.worker.cancel();
     }
 
     pub fn busy(&self) -> bool {
-        self.worker.busy()
+        self.worker.busy() || self.queued.is_some()
     }
 
     /// The running solve's progress, once it has taken longer than a frame.
@@ -267,12 +326,26 @@ impl<I: Send + 'static, O: Send + 'static> SolveSlot<I, O> {
         (self.solve_time, self.latency)
     }
 
+    /// Records a landed run's timings: how long its job took to it, and how long from the
+    /// change that asked for it. A change held for this run goes at the next poll.
+    pub fn record_run(&mut self, job_time: Duration, since_request: Duration) {
+        self.solve_time = job_time;
+        self.latency = since_request;
+        self.runs += 1;
+        self.last_run = Some(job_time);
+        if let Some((_, run_landed)) = &mut self.sent {
+            *run_landed = true;
+        }
+    }
+
     /// The newest request's output once it lands, its timings recorded and the error cleared.
     /// A solve that panicked gives `None` and leaves the panic's message as the error.
     pub fn poll(&mut self) -> Option<O> {
-        let (done, latency) = self.worker.poll()?;
-        self.solve_time = done.elapsed;
-        self.latency = latency;
+        let Some((done, latency)) = self.worker.poll() else {
+            self.release();
+            return None;
+        };
+        self.record_run(done.elapsed, latency);
         self.take(done.output)
     }
 
@@ -280,7 +353,11 @@ impl<I: Send + 'static, O: Send + 'static> SolveSlot<I, O> {
     /// the scene records which of them its timings measure. A job that panicked gives `None`
     /// and leaves the panic's message as the error (and the request done).
     pub fn poll_stage(&mut self) -> Option<Landed<O>> {
-        let (done, since_request) = self.worker.poll()?;
+        // The held change goes only after the outputs it waited for have been taken.
+        let Some((done, since_request)) = self.worker.poll() else {
+            self.release();
+            return None;
+        };
         let (last, job_time) = (done.last, done.elapsed);
         self.take(done.output).map(|output| Landed {
             output,
@@ -448,6 +525,8 @@ mod tests {
             },
             || {},
         );
+        // A change that does not wait for the run under way.
+        slot.hold_at_most = Duration::ZERO;
         slot.request(1);
         // Request 1's two stages are on their way: the first taken, the second received with
         // it and left waiting.
@@ -457,6 +536,78 @@ mod tests {
         assert_eq!(first, Some((11, false)));
         slot.request(2);
         assert_eq!(drain(&mut slot), [(21, false), (22, false), (29, true)]);
+    }
+
+    /// A job whose first output is its run (recorded as the scenes record theirs), and which
+    /// then holds until cancelled (`n == 1`) or finishes.
+    fn run_then_checks(n: u64, control: &Control, stages: &Stages<u64>) -> u64 {
+        if n != 3 {
+            stages.send(10 * n + 1);
+        }
+        if n == 1 || n == 3 {
+            while !control.cancelled() {
+                std::thread::yield_now();
+            }
+            stages.send(10 * n + 3);
+        }
+        10 * n + 9
+    }
+
+    /// As `drain`, each output taken as the scenes take theirs: a job's first is its run.
+    fn drain_runs(slot: &mut SolveSlot<u64, u64>) -> Vec<u64> {
+        let start = Instant::now();
+        let mut taken = vec![];
+        while slot.busy() {
+            if let Some(l) = slot.poll_stage() {
+                if l.output % 10 == 1 {
+                    slot.record_run(l.job_time, l.since_request);
+                }
+                taken.push(l.output);
+            } else {
+                assert!(start.elapsed() < Duration::from_secs(60), "no outcome");
+                std::thread::sleep(Duration::from_millis(1));
+            }
+        }
+        taken
+    }
+
+    #[test]
+    fn a_change_made_while_a_run_is_due_waits_for_that_run_then_cancels_only_its_checks() {
+        let mut slot = SolveSlot::staged(run_then_checks, || {});
+        // Long enough that the wait never runs out here: the run under way decides.
+        slot.hold_at_most = Duration::from_secs(3600);
+        slot.request(1);
+        slot.request(2);
+        assert!(slot.busy());
+        // Request 1's run lands and is shown; its checks are cancelled for request 2, which
+        // runs through.
+        assert_eq!(drain_runs(&mut slot), [11, 21, 29]);
+        assert_eq!(slot.runs, 2);
+    }
+
+    #[test]
+    fn a_change_waits_no_longer_than_its_hold_for_a_run_that_does_not_come() {
+        let mut slot = SolveSlot::staged(run_then_checks, || {});
+        let hold = Duration::from_millis(50);
+        slot.hold_at_most = hold;
+        let start = Instant::now();
+        // Request 3 gives no run until cancelled.
+        slot.request(3);
+        slot.request(2);
+        assert_eq!(drain_runs(&mut slot), [21, 29]);
+        assert!(start.elapsed() >= hold, "{:?}", start.elapsed());
+    }
+
+    #[test]
+    fn cancel_drops_a_held_change() {
+        let mut slot = SolveSlot::staged(run_then_checks, || {});
+        slot.hold_at_most = Duration::from_secs(3600);
+        slot.request(1);
+        slot.request(2);
+        slot.cancel();
+        // Request 1 was cancelled with its run not yet taken or after it; request 2 never went.
+        let taken = drain_runs(&mut slot);
+        assert!(taken.iter().all(|o| o / 10 == 1), "{taken:?}");
     }
 
     #[test]

@@ -54,6 +54,8 @@ pub enum XtSource<'a> {
     Slabs {
         waves: &'a [BarWaves; 2],
         approach_m_s: f64,
+        /// Where the two slabs lie in the diagram's history.
+        entries: [(u32, u32, f32, f32); 2],
     },
 }
 
@@ -122,7 +124,8 @@ impl XtDiagram<'_> {
             XtSource::Slabs {
                 waves,
                 approach_m_s,
-            } => BarsLayout::new(waves, *approach_m_s, self.gpu),
+                entries,
+            } => BarsLayout::at_entries(waves, *approach_m_s, *entries),
         }
         .xt()
     }

@@ -83,6 +83,11 @@ pub struct WindowArgs {
     /// Lecture mode: large, high-contrast, only what the lesson step needs (View > Lecture mode)
     #[arg(long)]
     pub lecture: bool,
+    /// Measure liveness: move one setting of the buildings or bridge scene every frame, as a
+    /// dragged slider does (KEY=FROM:TO, e.g. gap=0.01:0.03), and print on closing how soon the
+    /// changes' runs were on screen (needs --exit-after-frames)
+    #[arg(long, requires = "exit_after_frames")]
+    pub drag: Option<String>,
 }
 
 #[cfg(feature = "gui")]
@@ -105,6 +110,12 @@ fn window(args: &WindowArgs) -> anyhow::Result<()> {
             anyhow::bail!("--step: {k} is not a step of {name}: allowed 1 to {n}");
         }
     }
+    let drag = match &args.drag {
+        None => None,
+        Some(text) => {
+            Some(pounding::app::DragSpec::parse(text).map_err(|e| anyhow::anyhow!("--drag: {e}"))?)
+        }
+    };
     pounding::app::run(pounding::app::Launch {
         scene,
         preset: args.preset.clone(),
@@ -114,6 +125,8 @@ fn window(args: &WindowArgs) -> anyhow::Result<()> {
         lesson: args.lesson.clone(),
         lesson_step: args.step,
         lecture: args.lecture,
+        drag,
+        ..Default::default()
     })
     .map_err(|e| anyhow::anyhow!("the window could not start: {e}"))
 }

@@ -172,7 +172,7 @@ impl GpuHistory {
                 }
                 History::Steps { .. } | History::Segments { .. } => {
                     let (dt, n) = grid(w, per_bar);
-                    samples.extend((0..n).map(|k| w.history_at(k as f64 * dt) as f32));
+                    samples.extend(w.history_on_grid(dt, n).into_iter().map(|v| v as f32));
                     dt
                 }
             };
@@ -200,7 +200,7 @@ impl GpuHistory {
             let offset = samples.len() as u32;
             let (dt, n) = grid(&pair[0], per_bar);
             for w in pair {
-                samples.extend((0..n).map(|k| w.history_at(k as f64 * dt) as f32));
+                samples.extend(w.history_on_grid(dt, n).into_iter().map(|v| v as f32));
             }
             layout.push((offset, n as u32, dt as f32, pair[0].end_s as f32));
         }
@@ -516,8 +516,18 @@ pub struct BarsLayout {
 pub const BAR_Y: (f32, f32) = (0.40, 0.62);
 
 impl BarsLayout {
-    /// `approach_m_s` is the closing velocity v1 - v2.
+    /// `approach_m_s` is the closing velocity v1 - v2; the bars are the first two of `gpu`.
     pub fn new(waves: &[BarWaves; 2], approach_m_s: f64, gpu: &GpuHistory) -> Self {
+        Self::at_entries(waves, approach_m_s, [gpu.layout[0], gpu.layout[1]])
+    }
+
+    /// As `new`, the bars read from the given entries of a history's layout (two slabs of a
+    /// history that holds more).
+    pub fn at_entries(
+        waves: &[BarWaves; 2],
+        approach_m_s: f64,
+        entries: [(u32, u32, f32, f32); 2],
+    ) -> Self {
         let lengths = [waves[0].length_m(), waves[1].length_m()];
         let to_scale = lengths[0].max(lengths[1]) / lengths[0].min(lengths[1]) < 20.0;
         let wpm = if to_scale {
@@ -543,7 +553,7 @@ impl BarsLayout {
                 y_bottom: BAR_Y.0,
                 y_top: BAR_Y.1,
                 world_per_metre: wpm[i] as f32,
-                ..GpuBar::of_waves(wv, gpu.layout[i], v_scale)
+                ..GpuBar::of_waves(wv, entries[i], v_scale)
             };
         }
         BarsLayout {
