@@ -417,3 +417,36 @@ fn a_girder_loaded_at_both_ends_is_coloured_by_the_sum_of_both_ends_waves() {
         "middle {middle:?}, quarter {quarter:?}"
     );
 }
+
+/// An adapter whose fragment shaders get no storage buffers (GL ES: Mesa's llvmpipe through GL
+/// among them) cannot draw the stress views: it is refused with the reason, where wgpu would
+/// stop the program; one with two or more is taken.
+#[test]
+fn an_adapter_without_storage_buffers_for_the_field_shaders_is_refused_with_the_reason() {
+    let Some(adapter) = common::adapter_or_skip() else {
+        return;
+    };
+    let device_with = |buffers: u32| {
+        let limits = wgpu::Limits {
+            max_storage_buffers_per_shader_stage: buffers,
+            ..wgpu::Limits::downlevel_defaults()
+        };
+        pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
+            label: Some("limited"),
+            required_limits: limits,
+            ..Default::default()
+        }))
+        .expect("a device within the adapter's limits")
+        .0
+    };
+    let refused = pounding::render::bars::can_draw_fields(&device_with(0)).unwrap_err();
+    assert!(
+        refused.contains("0 storage buffers") && refused.contains("need 2"),
+        "{refused}"
+    );
+    assert!(pounding::render::bars::can_draw_fields(&device_with(1)).is_err());
+    assert_eq!(
+        pounding::render::bars::can_draw_fields(&device_with(4)),
+        Ok(())
+    );
+}

@@ -103,7 +103,11 @@ impl PoundingApp {
     pub fn new(cc: &eframe::CreationContext<'_>, launch: Launch) -> Self {
         let mut errors = vec![];
         match cc.wgpu_render_state.as_ref() {
-            Some(rs) => crate::render::bars::install(rs),
+            Some(rs) => {
+                if let Err(e) = crate::render::bars::install(rs) {
+                    errors.push(e);
+                }
+            }
             None => errors.push("no wgpu renderer: the stress view is not drawn".into()),
         }
         let storage = cc.storage;

@@ -248,13 +248,30 @@ pub struct FieldResources {
 }
 
 /// Builds the pipelines once, at start-up, and stores them with the renderer.
-pub fn install(render_state: &egui_wgpu::RenderState) {
+/// An adapter that cannot run the field shaders is refused with why (GL ES adapters, Mesa's
+/// llvmpipe through GL among them, give fragment shaders no storage buffers), never left to
+/// fail inside wgpu.
+pub fn install(render_state: &egui_wgpu::RenderState) -> Result<(), String> {
+    can_draw_fields(&render_state.device)?;
     let resources = FieldResources::new(&render_state.device, render_state.target_format);
     render_state
         .renderer
         .write()
         .callback_resources
         .insert(resources);
+    Ok(())
+}
+
+/// The field shaders read the bars and the history from two storage buffers in the fragment
+/// stage.
+pub fn can_draw_fields(device: &wgpu::Device) -> Result<(), String> {
+    let have = device.limits().max_storage_buffers_per_shader_stage;
+    if have < 2 {
+        return Err(format!(
+            "this graphics adapter gives a shader {have} storage buffers where the stress views need 2 (a GL ES adapter? WGPU_BACKEND=vulkan picks another where there is one): the stress views are not drawn"
+        ));
+    }
+    Ok(())
 }
 
 /// The shader of a view: the shared field code, then the view's fragment stage.

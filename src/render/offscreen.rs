@@ -39,6 +39,7 @@ pub fn headless_device() -> Result<(wgpu::Device, wgpu::Queue, String), Offscree
         ..Default::default()
     }))
     .map_err(|e| OffscreenError::Device(e.to_string()))?;
+    super::bars::can_draw_fields(&device).map_err(OffscreenError::Device)?;
     Ok((device, queue, name))
 }
 
