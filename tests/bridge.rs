@@ -563,3 +563,75 @@ fn girders_without_waves_have_none_to_draw() {
     assert!(r.girder_waves.is_empty());
     assert_eq!(r.girder_stress_pa(1, 20.0, 0.01), 0.0);
 }
+
+/// The window draws a run while it solves: each partial result handed out is the whole run's
+/// beginning, to the bit (its samples, its finished contacts, its girders' waves up to the
+/// instant solved), and the streamed run's end is the run solved at once.
+#[test]
+fn a_bridge_run_streamed_while_it_solves_is_the_whole_runs_beginning_at_every_stage() {
+    use pounding::model::bridge::solve_streaming;
+    use pounding::model::control::Control;
+    let setup: pounding::io::bridge_settings::BridgeSetup =
+        pounding::io::preset::load_for("bridge-3-span-passage", "bridge").expect("preset");
+    let sc = setup.scenario;
+    let motion = el_centro(4.0);
+    let whole = solve(&sc, &motion).expect("run");
+    let mut partials = vec![];
+    let streamed = solve_streaming(
+        &sc,
+        &motion,
+        Control::never(),
+        std::time::Duration::ZERO,
+        &mut |p| partials.push(p),
+    )
+    .expect("run");
+    assert!(partials.len() > 5, "{} partial results", partials.len());
+    assert_eq!(streamed.solved_to_s, streamed.duration_s);
+    assert_eq!(streamed.time_s, whole.time_s);
+    assert_eq!(streamed.joint_force_n, whole.joint_force_n);
+    assert_eq!(streamed.contacts, whole.contacts);
+    assert_eq!(streamed.max_force_by_joint_n, whole.max_force_by_joint_n);
+    let mut before = 0.0;
+    for p in &partials {
+        assert!(p.solved_to_s > before && p.solved_to_s < whole.duration_s);
+        before = p.solved_to_s;
+        let n = p.time_s.len();
+        assert!(n < whole.time_s.len());
+        assert_eq!(p.time_s[..], whole.time_s[..n]);
+        assert!(p.time_s[n - 1] <= p.solved_to_s);
+        for j in 0..whole.joints.len() {
+            assert_eq!(p.joint_force_n[j][..], whole.joint_force_n[j][..n]);
+            assert_eq!(p.joint_opening_m[j][..], whole.joint_opening_m[j][..n]);
+        }
+        for i in 0..sc.spans {
+            assert_eq!(p.girder_absolute_m[i][..], whole.girder_absolute_m[i][..n]);
+        }
+        // Contacts over are the whole run's; one still under way has its start, and its end
+        // so far.
+        if let Some((now, over)) = p.contacts.split_last() {
+            let m = over.len();
+            assert_eq!(over[..], whole.contacts[..m]);
+            let then = whole.contacts[m];
+            assert!(now == &then || (now.start_s == then.start_s && now.end_s <= then.end_s));
+            assert!(now.end_s <= p.solved_to_s);
+        }
+        // The waves read the same up to the instant solved (less the two samples a cubic
+        // reads ahead, which the partial run has not yet taken), to round-off: where the whole
+        // run's next contact opens a stretch, it keeps the round trip of ringing before it as
+        // samples, where the partial run reads that ringing by folding its last stretch.
+        let known = p.solved_to_s - 3.0 * whole.stats.step_s;
+        for (pw, ww) in p.girder_waves.iter().zip(&whole.girder_waves) {
+            for end in 0..2 {
+                let at = |w: &pounding::model::field::BarWaves, k: usize| {
+                    w.history_at(known * k as f64 / 400.0)
+                };
+                let scale = (0..=400).map(|k| at(&ww[end], k).abs()).fold(1.0, f64::max);
+                for k in 0..=400 {
+                    let (a, b) = (at(&pw[end], k), at(&ww[end], k));
+                    assert!((a - b).abs() <= 1e-9 * scale, "{a} against {b} of {scale}");
+                }
+            }
+        }
+    }
+    assert!(partials.last().unwrap().contacts.len() > 3);
+}

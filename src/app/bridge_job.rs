@@ -1,21 +1,23 @@
-//! The Bridge pounding scene's solve, in the order the scene shows it: the run, then the run
-//! without contact (the gaps each joint needs, the displacements compared), then the error
-//! estimate (the run with half the step, the slowest). Each stage is handed over as it lands,
-//! so the run is on screen before the checks that follow it.
+//! The Bridge pounding scene's solve, in the order the scene shows it: the run (streamed while
+//! it solves), then the run without contact (the gaps each joint needs, the displacements
+//! compared), then the error estimate (the run with half the step, the slowest). Each stage is
+//! handed over as it lands, so the run is on screen before the checks that follow it.
 
 use super::bridge_view::BridgeDrawing;
 use super::worker::Stages;
 use crate::io::bridge_settings::BridgeSetup;
 use crate::model::bridge::{
-    BridgeErrorEstimate, BridgeResult, BridgeScenario, estimate_error, solve_with,
+    BridgeErrorEstimate, BridgeResult, BridgeScenario, estimate_error, solve_streaming, solve_with,
 };
-use crate::model::building::ContactModel;
+use crate::model::building::{ContactModel, PUBLISH_EVERY};
 use crate::model::control::Control;
 use crate::model::error::SolveError;
 
 /// One stage of a bridge job, in the order they come.
 pub(super) enum Stage {
-    /// The run: the job's first result.
+    /// The run solved so far (its `solved_to_s` short of its end); any number of them.
+    Partial(Box<BridgeDrawing>),
+    /// The run, whole.
     Run(Box<BridgeDrawing>),
     /// The run without contact.
     Baseline(Box<BridgeResult>),
@@ -31,7 +33,16 @@ use super::job_error::JobError;
 pub(super) fn run_job(setup: BridgeSetup, control: &Control, stages: &Stages<Output>) -> Output {
     let motion = crate::io::motion::load(&setup.motion)?;
     control.stage(0, 3);
-    let result = solve_with(&setup.scenario, &motion, control)?;
+    let result = solve_streaming(
+        &setup.scenario,
+        &motion,
+        control,
+        PUBLISH_EVERY,
+        &mut |so_far| {
+            let drawing = BridgeDrawing::new(setup.clone(), motion.clone(), so_far);
+            stages.send(Ok(Stage::Partial(Box::new(drawing))));
+        },
+    )?;
     let run = BridgeDrawing::new(setup.clone(), motion.clone(), result.clone());
     stages.send(Ok(Stage::Run(Box::new(run))));
     control.stage(1, 3);

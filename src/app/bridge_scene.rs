@@ -24,6 +24,8 @@ use egui_plot::{HLine, Legend, Line, Plot, PlotBounds, VLine};
 /// One request's run and its later stages as they land.
 struct Solved {
     drawing: Box<BridgeDrawing>,
+    /// Whether the run is whole (else it is the part solved so far).
+    whole: bool,
     baseline: Later<Box<BridgeResult>>,
     estimate: Later<Option<BridgeErrorEstimate>>,
     /// Whether it is the newest request's (false once a newer one is made).
@@ -35,6 +37,8 @@ pub struct BridgeScene {
     fields: Fields,
     pub(super) slot: SolveSlot<BridgeSetup, Output>,
     solved: Option<Solved>,
+    /// The last whole run, kept while a newer one shows the part it has solved.
+    kept: Option<Solved>,
     times: StageTimes,
     pub playback: Playback,
     exaggeration: f64,
@@ -60,6 +64,7 @@ impl BridgeScene {
             fields: Fields::default(),
             slot: SolveSlot::staged(run_job, move || waker.request_repaint()),
             solved: None,
+            kept: None,
             times: StageTimes::default(),
             playback: Playback {
                 t: 0.0,
@@ -121,42 +126,49 @@ impl BridgeScene {
         while let Some(landed) = self.slot.poll_stage() {
             self.land(landed);
         }
-        if !self.busy()
-            && let Some(s) = &mut self.solved
-        {
+        if !self.busy() {
+            self.ended();
+        }
+    }
+
+    /// The newest request is done: a run it left unfinished gives way to the last whole one,
+    /// and a stage it never delivered is not coming.
+    fn ended(&mut self) {
+        if self.solved.as_ref().is_some_and(|s| !s.whole) {
+            self.solved = self.kept.take();
+            self.hold_playback();
+        }
+        if let Some(s) = &mut self.solved {
             s.baseline.ended();
             s.estimate.ended();
         }
     }
 
+    /// Playback waits at the edge of a run still solving.
+    fn hold_playback(&mut self) {
+        self.playback.ready_s = self
+            .solved
+            .as_ref()
+            .filter(|s| !s.whole)
+            .map(|s| s.drawing.result.solved_to_s);
+    }
+
     fn land(&mut self, landed: Landed<Output>) {
         match landed.output {
+            Ok(Stage::Partial(drawing)) => self.show_run(drawing, false),
             Ok(Stage::Run(drawing)) => {
                 self.slot.record_run(landed.job_time, landed.since_request);
-                if !self.solved.as_ref().is_some_and(|s| s.current) {
-                    self.selected = None;
-                }
-                self.playback.t_max = drawing.result.duration_s;
-                self.playback.t = self.playback.t.min(self.playback.t_max);
-                if self.joint.is_some_and(|j| j >= drawing.result.joints.len()) {
-                    self.joint = None;
-                }
-                self.solved = Some(Solved {
-                    drawing,
-                    baseline: Later::Pending,
-                    estimate: Later::Pending,
-                    current: true,
-                });
+                self.show_run(drawing, true);
             }
             Ok(Stage::Baseline(b)) => {
                 self.times.baseline = Some(landed.since_request);
-                if let Some(s) = self.solved.as_mut().filter(|s| s.current) {
+                if let Some(s) = self.solved.as_mut().filter(|s| s.current && s.whole) {
                     s.baseline = Later::Ready(b);
                 }
             }
             Ok(Stage::Estimate(e)) => {
                 self.times.estimate = Some(landed.since_request);
-                if let Some(s) = self.solved.as_mut().filter(|s| s.current) {
+                if let Some(s) = self.solved.as_mut().filter(|s| s.current && s.whole) {
                     s.estimate = Later::Ready(e);
                 }
             }
@@ -164,13 +176,42 @@ impl BridgeScene {
         }
     }
 
+    /// Shows the newest request's run, whole or so far; its later stages are on their way.
+    fn show_run(&mut self, drawing: Box<BridgeDrawing>, whole: bool) {
+        if !self.solved.as_ref().is_some_and(|s| s.current) {
+            // A new run has its own impacts: the diagram goes back to the strongest.
+            self.selected = None;
+        }
+        self.playback.t_max = drawing.result.duration_s;
+        self.playback.t = self.playback.t.min(self.playback.t_max);
+        if self.joint.is_some_and(|j| j >= drawing.result.joints.len()) {
+            self.joint = None;
+        }
+        let before = self.solved.replace(Solved {
+            drawing,
+            whole,
+            baseline: Later::Pending,
+            estimate: Later::Pending,
+            current: true,
+        });
+        if whole {
+            self.kept = None;
+        } else if let Some(b) = before.filter(|b| b.whole) {
+            self.kept = Some(b);
+        }
+        self.hold_playback();
+    }
+
     /// What the status bar says while the newest request solves.
     pub fn solving_note(&self) -> String {
-        self.solved
-            .as_ref()
-            .filter(|s| s.current)
-            .map_or("solving...", |s| pending_note(&s.baseline, &s.estimate))
-            .into()
+        match self.solved.as_ref().filter(|s| s.current) {
+            None => "solving...".into(),
+            Some(s) if !s.whole => format!(
+                "solving: {:.1} s of {:.1} s",
+                s.drawing.result.solved_to_s, self.playback.t_max
+            ),
+            Some(s) => pending_note(&s.baseline, &s.estimate).into(),
+        }
     }
 
     /// When the later stages of the newest request landed, from its change.
@@ -265,6 +306,12 @@ impl BridgeScene {
     fn readouts_ui(&self, ui: &mut egui::Ui) {
         let Some(s) = &self.solved else { return };
         let r = &s.drawing.result;
+        if !s.whole {
+            ui.label(format!(
+                "solving: {:.1} s of {:.1} s; so far:",
+                r.solved_to_s, r.duration_s
+            ));
+        }
         let mm = |v: &[f64]| {
             v.iter()
                 .map(|x| format!("{:.1}", x * 1e3))
@@ -602,6 +649,10 @@ impl BridgeScene {
     /// The whole deck's x-t diagram around the picked impact (the strongest until one is).
     fn deck_xt_ui(&mut self, ui: &mut egui::Ui) {
         let Some(s) = &self.solved else { return };
+        if !s.whole {
+            ui.label("the deck's space-time diagram: once the run is solved");
+            return;
+        }
         let r = &s.drawing.result;
         if r.girder_waves.is_empty() {
             ui.label(format!(
@@ -656,3 +707,7 @@ impl BridgeScene {
         }
     }
 }
+
+#[cfg(test)]
+#[path = "bridge_scene_tests.rs"]
+mod tests;

@@ -122,6 +122,9 @@ pub struct BridgeResult {
     pub stats: BridgeStats,
     /// The run's length: the record and the latest support's delay [s].
     pub duration_s: f64,
+    /// How far the run had got [s]: `duration_s` once whole, less for a run still solving
+    /// (see [`super::solve::solve_streaming`]).
+    pub solved_to_s: f64,
     /// What the reader must know besides the numbers.
     pub warnings: Vec<String>,
 }

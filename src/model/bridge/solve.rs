@@ -719,7 +719,7 @@ impl Run<'_> {
 }
 
 /// The histories, kept every `stride` steps.
-#[derive(Default)]
+#[derive(Clone, Default)]
 struct Histories {
     time_s: Vec<f64>,
     force: Vec<Vec<f64>>,
@@ -756,6 +756,7 @@ impl Histories {
 }
 
 /// Peaks of each frame over the run.
+#[derive(Clone)]
 struct Peaks {
     girder: Vec<f64>,
     pier: Vec<f64>,
@@ -794,6 +795,29 @@ pub fn solve_with(
     motion: &GroundMotion,
     control: &Control,
 ) -> Result<BridgeResult, SolveError> {
+    run_publishing(sc, motion, control, None)
+}
+
+/// [`solve_with`], handing `publish` what the run has solved so far, at most once per `every`
+/// of wall time (its histories, contacts and waves to the instant solved, marked by
+/// [`BridgeResult::solved_to_s`]), so a window can draw a long run while it solves. It is
+/// called where the run looks at its control (every 4096 steps); `every` zero calls it at each.
+pub fn solve_streaming(
+    sc: &BridgeScenario,
+    motion: &GroundMotion,
+    control: &Control,
+    every: std::time::Duration,
+    publish: &mut dyn FnMut(BridgeResult),
+) -> Result<BridgeResult, SolveError> {
+    run_publishing(sc, motion, control, Some((every, publish)))
+}
+
+fn run_publishing(
+    sc: &BridgeScenario,
+    motion: &GroundMotion,
+    control: &Control,
+    mut publish: Option<(std::time::Duration, &mut dyn FnMut(BridgeResult))>,
+) -> Result<BridgeResult, SolveError> {
     sc.validate()?;
     let start = std::time::Instant::now();
     let h = step_s(sc, motion.dt_s);
@@ -816,9 +840,26 @@ pub fn solve_with(
     };
     hist.push(&run, 0.0);
     peaks.read(&run.frames);
+    let mut published = start;
     for n in 1..=steps {
         if n % 4096 == 1 {
             control.report((n - 1) as f64 / steps as f64)?;
+            if let Some((every, publish)) = publish.as_mut()
+                && n > 1
+                && published.elapsed() >= *every
+            {
+                published = std::time::Instant::now();
+                let done = n - 1;
+                let so_far = (done as f64 * h).min(duration);
+                publish(finish(
+                    &run,
+                    hist.clone(),
+                    peaks.clone(),
+                    (duration, so_far),
+                    done,
+                    start,
+                ));
+            }
         }
         run.step(n - 1);
         peaks.read(&run.frames);
@@ -836,14 +877,23 @@ pub fn solve_with(
             });
         }
     }
-    Ok(finish(run, hist, peaks, duration, steps, start))
+    Ok(finish(
+        &run,
+        hist,
+        peaks,
+        (duration, duration),
+        steps,
+        start,
+    ))
 }
 
+/// The result of the run to `steps` steps, `solved_to` of its `duration` (the two equal once
+/// it is whole).
 fn finish(
-    mut run: Run,
+    run: &Run,
     hist: Histories,
     peaks: Peaks,
-    duration: f64,
+    (duration, solved_to): (f64, f64),
     steps: usize,
     start: std::time::Instant,
 ) -> BridgeResult {
@@ -888,7 +938,7 @@ fn finish(
             energy.balance_error()
         ));
     }
-    let contacts = std::mem::take(&mut run.contacts);
+    let contacts = run.contacts.clone();
     let impacts = group_impacts(&contacts, sc.merge_gap_s);
     let max_force_by_joint_n: Vec<f64> = run.joints.iter().map(|j| j.max_force).collect();
     BridgeResult {
@@ -925,6 +975,7 @@ fn finish(
             wall_time_s: start.elapsed().as_secs_f64(),
         },
         duration_s: duration,
+        solved_to_s: solved_to,
         warnings,
     }
 }
