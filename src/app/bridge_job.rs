@@ -9,7 +9,7 @@ use crate::io::bridge_settings::BridgeSetup;
 use crate::model::bridge::{
     BridgeErrorEstimate, BridgeResult, BridgeScenario, estimate_error, solve_streaming, solve_with,
 };
-use crate::model::building::{ContactModel, PUBLISH_EVERY};
+use crate::model::building::ContactModel;
 use crate::model::control::Control;
 use crate::model::error::SolveError;
 
@@ -25,6 +25,11 @@ pub(super) enum Stage {
     Estimate(Option<BridgeErrorEstimate>),
 }
 
+/// How much wall time passes between two parts of a run shown while it solves. Each part is a
+/// drawing (the girders' waves put on their grid): a run that lands within a quarter second
+/// (bridge-3-span) is shown whole, without slowing it down to show it half done.
+const PUBLISH_EVERY: std::time::Duration = std::time::Duration::from_millis(250);
+
 pub(super) type Output = Result<Stage, JobError>;
 use super::job_error::JobError;
 
@@ -33,17 +38,18 @@ use super::job_error::JobError;
 pub(super) fn run_job(setup: BridgeSetup, control: &Control, stages: &Stages<Output>) -> Output {
     let motion = crate::io::motion::load(&setup.motion)?;
     control.stage(0, 3);
+    let stats = motion.stats();
     let result = solve_streaming(
         &setup.scenario,
         &motion,
         control,
         PUBLISH_EVERY,
         &mut |so_far| {
-            let drawing = BridgeDrawing::new(setup.clone(), motion.clone(), so_far);
+            let drawing = BridgeDrawing::with_stats(setup.clone(), motion.clone(), so_far, stats);
             stages.send(Ok(Stage::Partial(Box::new(drawing))));
         },
     )?;
-    let run = BridgeDrawing::new(setup.clone(), motion.clone(), result.clone());
+    let run = BridgeDrawing::with_stats(setup.clone(), motion.clone(), result.clone(), stats);
     stages.send(Ok(Stage::Run(Box::new(run))));
     control.stage(1, 3);
     let free = BridgeScenario {

@@ -90,7 +90,8 @@ fn part(setup: &BridgeSetup, fraction: f64) -> (Landed<Output>, f64) {
         .find(|r| r.solved_to_s >= at)
         .expect("a run streamed at every look");
     let edge = partial.solved_to_s;
-    let drawing = BridgeDrawing::new(setup.clone(), motion, partial);
+    let stats = motion.stats();
+    let drawing = BridgeDrawing::with_stats(setup.clone(), motion, partial, stats);
     (landed(Ok(Stage::Partial(Box::new(drawing)))), edge)
 }
 

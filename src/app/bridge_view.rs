@@ -30,11 +30,18 @@ pub struct BridgeDrawing {
 }
 
 impl BridgeDrawing {
-    pub fn new(setup: BridgeSetup, motion: GroundMotion, result: BridgeResult) -> Self {
+    /// The drawing of a run, with the record's summary worked out once per job (a job draws a
+    /// run many times as it solves).
+    pub fn with_stats(
+        setup: BridgeSetup,
+        motion: GroundMotion,
+        result: BridgeResult,
+        motion_stats: MotionStats,
+    ) -> Self {
         let gpu = Arc::new(GpuHistory::from_pairs(&result.girder_waves));
         BridgeDrawing {
             ground: Ground::new(&motion),
-            motion_stats: motion.stats(),
+            motion_stats,
             setup,
             motion,
             result,

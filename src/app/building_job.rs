@@ -43,19 +43,20 @@ pub(super) fn run_job(setup: BuildingSetup, control: &Control, stages: &Stages<O
     let motion = crate::io::motion::load(&setup.motion)?;
     // Three parts of the progress bar: the run, the run without contact, the estimate.
     control.stage(0, 3);
+    let stats = motion.stats();
     let result = solve_streaming(
         &setup.scenario,
         &motion,
         control,
         PUBLISH_EVERY,
         &mut |so_far| {
-            let drawing = BuildingDrawing::new(setup.clone(), motion.clone(), so_far);
+            let drawing = BuildingDrawing::with_stats(setup.clone(), motion.clone(), so_far, stats);
             stages.send(Ok(Stage::Partial(Box::new(drawing))));
         },
     )?;
     // The drawing goes to the UI thread, which cannot share it (the slabs' records are not
     // `Sync`): the estimate compares with a copy.
-    let run = BuildingDrawing::new(setup.clone(), motion.clone(), result.clone());
+    let run = BuildingDrawing::with_stats(setup.clone(), motion.clone(), result.clone(), stats);
     stages.send(Ok(Stage::Run(Box::new(run))));
     control.stage(1, 3);
     // The baseline's roof displacements are drawn, so it is a run with histories.

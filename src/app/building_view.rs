@@ -48,6 +48,18 @@ impl BuildingDrawing {
     }
 
     pub fn new(setup: BuildingSetup, motion: GroundMotion, result: BuildingResult) -> Self {
+        let stats = motion.stats();
+        Self::with_stats(setup, motion, result, stats)
+    }
+
+    /// As `new`, with the record's summary already worked out (a job that draws a run many
+    /// times as it solves works it out once).
+    pub fn with_stats(
+        setup: BuildingSetup,
+        motion: GroundMotion,
+        result: BuildingResult,
+        motion_stats: MotionStats,
+    ) -> Self {
         let mut bars = vec![];
         let mut waves: Vec<&BarWaves> = vec![];
         for (l, level) in result.slab_waves().iter().enumerate() {
@@ -61,7 +73,7 @@ impl BuildingDrawing {
         let gpu = Arc::new(GpuHistory::from_bars(waves));
         BuildingDrawing {
             ground_displacement: motion.displacement_m(),
-            motion_stats: motion.stats(),
+            motion_stats,
             setup,
             motion,
             result,

@@ -27,8 +27,9 @@ pub struct Done<O> {
 
 type Request<I> = (u64, I, Arc<Control>);
 
-/// The longest a change waits for the solve under way to give its first output.
-pub const HOLD_AT_MOST: Duration = Duration::from_millis(200);
+/// The longest a change waits for the run under way (a longer run is cancelled, and shows
+/// its progress in the parts it streams).
+pub const HOLD_AT_MOST: Duration = Duration::from_secs(1);
 
 /// A solve that lands within this shows no progress bar.
 pub const PROGRESS_AFTER: Duration = Duration::from_millis(50);
