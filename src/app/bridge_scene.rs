@@ -21,24 +21,15 @@ use crate::render::bars::XtShown;
 use eframe::egui::{self, Color32};
 use egui_plot::{HLine, Legend, Line, Plot, PlotBounds, VLine};
 
-/// One request's run and its later stages as they land.
-struct Solved {
-    drawing: Box<BridgeDrawing>,
-    /// Whether the run is whole (else it is the part solved so far).
-    whole: bool,
-    baseline: Later<Box<BridgeResult>>,
-    estimate: Later<Option<BridgeErrorEstimate>>,
-    /// Whether it is the newest request's (false once a newer one is made).
-    current: bool,
-}
+/// One request's run (whole, or as far as it has solved) and its later stages as they land.
+type Shown =
+    crate::app::later::Shown<BridgeDrawing, Box<BridgeResult>, Option<BridgeErrorEstimate>>;
 
 pub struct BridgeScene {
     pub setup: BridgeSetup,
     fields: Fields,
     pub(super) slot: SolveSlot<BridgeSetup, Output>,
-    solved: Option<Solved>,
-    /// The last whole run, kept while a newer one shows the part it has solved.
-    kept: Option<Solved>,
+    shown: Shown,
     times: StageTimes,
     pub playback: Playback,
     exaggeration: f64,
@@ -63,8 +54,7 @@ impl BridgeScene {
             setup,
             fields: Fields::default(),
             slot: SolveSlot::staged(run_job, move || waker.request_repaint()),
-            solved: None,
-            kept: None,
+            shown: Shown::default(),
             times: StageTimes::default(),
             playback: Playback {
                 t: 0.0,
@@ -91,9 +81,7 @@ impl BridgeScene {
     pub fn request(&mut self) {
         self.slot.request(self.setup.clone());
         self.times = StageTimes::default();
-        if let Some(s) = &mut self.solved {
-            s.current = false;
-        }
+        self.shown.superseded();
     }
 
     pub fn busy(&self) -> bool {
@@ -134,23 +122,13 @@ impl BridgeScene {
     /// The newest request is done: a run it left unfinished gives way to the last whole one,
     /// and a stage it never delivered is not coming.
     fn ended(&mut self) {
-        if self.solved.as_ref().is_some_and(|s| !s.whole) {
-            self.solved = self.kept.take();
-            self.hold_playback();
-        }
-        if let Some(s) = &mut self.solved {
-            s.baseline.ended();
-            s.estimate.ended();
-        }
+        self.shown.ended();
+        self.hold_playback();
     }
 
     /// Playback waits at the edge of a run still solving.
     fn hold_playback(&mut self) {
-        self.playback.ready_s = self
-            .solved
-            .as_ref()
-            .filter(|s| !s.whole)
-            .map(|s| s.drawing.result.solved_to_s);
+        self.playback.ready_s = self.shown.edge(|d| d.result.solved_to_s);
     }
 
     fn land(&mut self, landed: Landed<Output>) {
@@ -162,13 +140,13 @@ impl BridgeScene {
             }
             Ok(Stage::Baseline(b)) => {
                 self.times.baseline = Some(landed.since_request);
-                if let Some(s) = self.solved.as_mut().filter(|s| s.current && s.whole) {
+                if let Some(s) = self.shown.newest_whole() {
                     s.baseline = Later::Ready(b);
                 }
             }
             Ok(Stage::Estimate(e)) => {
                 self.times.estimate = Some(landed.since_request);
-                if let Some(s) = self.solved.as_mut().filter(|s| s.current && s.whole) {
+                if let Some(s) = self.shown.newest_whole() {
                     s.estimate = Later::Ready(e);
                 }
             }
@@ -178,7 +156,7 @@ impl BridgeScene {
 
     /// Shows the newest request's run, whole or so far; its later stages are on their way.
     fn show_run(&mut self, drawing: Box<BridgeDrawing>, whole: bool) {
-        if !self.solved.as_ref().is_some_and(|s| s.current) {
+        if !self.shown.current() {
             // A new run has its own impacts: the diagram goes back to the strongest.
             self.selected = None;
         }
@@ -187,24 +165,13 @@ impl BridgeScene {
         if self.joint.is_some_and(|j| j >= drawing.result.joints.len()) {
             self.joint = None;
         }
-        let before = self.solved.replace(Solved {
-            drawing,
-            whole,
-            baseline: Later::Pending,
-            estimate: Later::Pending,
-            current: true,
-        });
-        if whole {
-            self.kept = None;
-        } else if let Some(b) = before.filter(|b| b.whole) {
-            self.kept = Some(b);
-        }
+        self.shown.show(drawing, whole);
         self.hold_playback();
     }
 
     /// What the status bar says while the newest request solves.
     pub fn solving_note(&self) -> String {
-        match self.solved.as_ref().filter(|s| s.current) {
+        match self.shown.solved.as_ref().filter(|s| s.current) {
             None => "solving...".into(),
             Some(s) if !s.whole => format!(
                 "solving: {:.1} s of {:.1} s",
@@ -229,7 +196,7 @@ impl BridgeScene {
 
     /// The plots on screen last frame, by export name.
     pub fn shown_plots(&self) -> Vec<(&str, &ShownPlot)> {
-        if self.solved.is_none() {
+        if self.shown.solved.is_none() {
             return vec![];
         }
         vec![
@@ -243,7 +210,7 @@ impl BridgeScene {
         if let Some(e) = &self.slot.error {
             ui.colored_label(Color32::from_rgb(220, 60, 50), e);
         }
-        let Some(s) = &self.solved else {
+        let Some(s) = &self.shown.solved else {
             ui.label("solving...");
             return;
         };
@@ -270,14 +237,14 @@ impl BridgeScene {
         self.plots_ui(ui, exporter);
         self.impacts_ui(ui);
         self.deck_xt_ui(ui);
-        let Some(s) = &self.solved else { return };
+        let Some(s) = &self.shown.solved else { return };
         for w in &s.drawing.result.warnings {
             ui.colored_label(Color32::from_rgb(220, 140, 40), format!("warning: {w}"));
         }
     }
 
     fn elevation_ui(&mut self, ui: &mut egui::Ui) {
-        let Some(s) = &self.solved else { return };
+        let Some(s) = &self.shown.solved else { return };
         let (rect, _) = ui.allocate_exact_size(
             egui::vec2(ui.available_width(), 260.0),
             egui::Sense::hover(),
@@ -304,7 +271,7 @@ impl BridgeScene {
     /// Impacts, the largest force, the girders' peaks beside those without pounding, the
     /// energy into the girders' waves, and the error bound.
     fn readouts_ui(&self, ui: &mut egui::Ui) {
-        let Some(s) = &self.solved else { return };
+        let Some(s) = &self.shown.solved else { return };
         let r = &s.drawing.result;
         if !s.whole {
             ui.label(format!(
@@ -356,7 +323,7 @@ impl BridgeScene {
     /// Per joint: its kind and place, its gap and the gap it needs (from the run without
     /// contact), its largest force and opening, and its seat's margin.
     fn joints_table_ui(&self, ui: &mut egui::Ui) {
-        let Some(s) = &self.solved else { return };
+        let Some(s) = &self.shown.solved else { return };
         let (r, sc) = (&s.drawing.result, &s.drawing.setup.scenario);
         let seat = sc.seat_length_m;
         egui::Grid::new("bridge-joints")
@@ -403,7 +370,7 @@ impl BridgeScene {
     }
 
     fn plots_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
-        let Some(s) = &self.solved else { return };
+        let Some(s) = &self.shown.solved else { return };
         let r = &s.drawing.result;
         let t = self.playback.shown_t();
         let width = super::lecture::line_width(ui);
@@ -492,7 +459,7 @@ impl BridgeScene {
         h: f32,
         t: f64,
     ) {
-        let Some(s) = &self.solved else { return };
+        let Some(s) = &self.shown.solved else { return };
         let (r, seat) = (&s.drawing.result, s.drawing.setup.scenario.seat_length_m);
         let width = super::lecture::line_width(ui);
         let openings: Vec<(String, Vec<[f64; 2]>)> = joints
@@ -537,7 +504,7 @@ impl BridgeScene {
     }
 
     fn girders_plot_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter, h: f32, t: f64) {
-        let Some(s) = &self.solved else { return };
+        let Some(s) = &self.shown.solved else { return };
         let r = &s.drawing.result;
         let width = super::lecture::line_width(ui);
         let mut lines: Vec<(String, Vec<[f64; 2]>)> = (0..r.girder_displacement_m.len())
@@ -589,7 +556,7 @@ impl BridgeScene {
     /// Picks impact i: the force plot zooms on it, the animation waits at its start in slow
     /// motion, and the deck's diagram is drawn around it.
     fn pick(&mut self, i: usize) {
-        let Some(s) = &self.solved else { return };
+        let Some(s) = &self.shown.solved else { return };
         let e = &s.drawing.result.impacts[i];
         self.selected = Some(i);
         let margin = 0.5 * e.duration_s().max(0.002);
@@ -600,7 +567,7 @@ impl BridgeScene {
     }
 
     fn impacts_ui(&mut self, ui: &mut egui::Ui) {
-        let Some(s) = &self.solved else { return };
+        let Some(s) = &self.shown.solved else { return };
         let r = &s.drawing.result;
         let mut clicked = None;
         ui.label("impacts (click one here or in the force plot to zoom on it):");
@@ -648,7 +615,7 @@ impl BridgeScene {
 
     /// The whole deck's x-t diagram around the picked impact (the strongest until one is).
     fn deck_xt_ui(&mut self, ui: &mut egui::Ui) {
-        let Some(s) = &self.solved else { return };
+        let Some(s) = &self.shown.solved else { return };
         if !s.whole {
             ui.label("the deck's space-time diagram: once the run is solved");
             return;

@@ -160,5 +160,5 @@ fn a_bridge_run_still_solving_is_shown_so_far_never_played_past_and_gives_way_if
     h.run_steps(2);
     assert_eq!(h.state().playback.ready_s, None);
     assert!(!shows(&h, "solving:"));
-    assert!(h.state().solved.as_ref().is_some_and(|s| s.whole));
+    assert!(h.state().shown.solved.as_ref().is_some_and(|s| s.whole));
 }

@@ -21,7 +21,7 @@ use egui_plot::{Legend, Line, Plot, PlotBounds, VLine};
 
 #[path = "building_stages.rs"]
 mod stages;
-use stages::{Later, Solved, StageTimes};
+use stages::{Later, Shown, StageTimes};
 
 /// The slabs an x-t diagram shows: the run (its history id) and level they belong to, their
 /// waves, and those on the GPU.
@@ -31,9 +31,7 @@ pub struct BuildingScene {
     pub setup: BuildingSetup,
     fields: Fields,
     pub(super) slot: SolveSlot<BuildingSetup, Output>,
-    solved: Option<Solved>,
-    /// The last whole run while a newer one streams in: it comes back if that one stops short.
-    kept: Option<Solved>,
+    shown: Shown,
     times: StageTimes,
     pub playback: Playback,
     exaggeration: f64,
@@ -65,8 +63,7 @@ impl BuildingScene {
             setup,
             fields: Fields::default(),
             slot: SolveSlot::staged(run_job, move || waker.request_repaint()),
-            solved: None,
-            kept: None,
+            shown: Shown::default(),
             times: StageTimes::default(),
             playback: Playback {
                 t: 0.0,
@@ -94,9 +91,7 @@ impl BuildingScene {
     pub fn request(&mut self) {
         self.slot.request(self.setup.clone());
         self.times = StageTimes::default();
-        if let Some(s) = &mut self.solved {
-            s.current = false;
-        }
+        self.shown.superseded();
     }
 
     pub fn busy(&self) -> bool {
@@ -148,7 +143,7 @@ impl BuildingScene {
     /// The plots on screen last frame, by export name.
     pub fn shown_plots(&self) -> Vec<(&str, &ShownPlot)> {
         let mut plots = vec![];
-        if self.solved.is_some() {
+        if self.shown.solved.is_some() {
             plots.push(("displacements", &self.shown_displacements));
             plots.push(("force", &self.shown_force));
             if !self.shown_loops.series.is_empty() {
@@ -162,7 +157,7 @@ impl BuildingScene {
         if let Some(e) = &self.slot.error {
             ui.colored_label(Color32::from_rgb(220, 60, 50), e);
         }
-        let Some(s) = &self.solved else {
+        let Some(s) = &self.shown.solved else {
             ui.label("solving...");
             return;
         };
@@ -182,7 +177,7 @@ impl BuildingScene {
         if show.shows("buildings") {
             self.sway_ui(ui);
         }
-        let Some(s) = &self.solved else { return };
+        let Some(s) = &self.shown.solved else { return };
         if show.shows("readouts") {
             self.readouts_ui(ui);
         }
@@ -199,7 +194,15 @@ impl BuildingScene {
         if show.shows("xt") {
             self.slabs_xt_ui(ui);
         }
-        for w in &self.solved.as_ref().expect("shown").drawing.result.warnings {
+        for w in &self
+            .shown
+            .solved
+            .as_ref()
+            .expect("shown")
+            .drawing
+            .result
+            .warnings
+        {
             ui.colored_label(Color32::from_rgb(220, 140, 40), format!("warning: {w}"));
         }
     }
@@ -207,7 +210,7 @@ impl BuildingScene {
     /// The run's impacts, force and peaks beside those without pounding, and its error bound;
     /// a run still solving says how far it has got.
     fn readouts_ui(&self, ui: &mut egui::Ui) {
-        let Some(s) = &self.solved else { return };
+        let Some(s) = &self.shown.solved else { return };
         let r = &s.drawing.result;
         let without = |side: usize| {
             s.baseline.ready().map_or(s.baseline.absent().into(), |b| {
@@ -262,7 +265,7 @@ impl BuildingScene {
 
     /// The two buildings swaying, with the drift's exaggeration and the playback controls.
     fn sway_ui(&mut self, ui: &mut egui::Ui) {
-        let Some(s) = &self.solved else { return };
+        let Some(s) = &self.shown.solved else { return };
         let d = &s.drawing;
         let tall = d
             .setup
@@ -293,7 +296,7 @@ impl BuildingScene {
     /// The x-t diagram of the two slabs at the level of the selected impact (the strongest
     /// until one is picked), over that impact and a little either side.
     fn slabs_xt_ui(&mut self, ui: &mut egui::Ui) {
-        let Some(s) = &self.solved else { return };
+        let Some(s) = &self.shown.solved else { return };
         if !s.whole {
             ui.label("the slabs' space-time diagram: once the run is solved");
             return;
@@ -366,7 +369,7 @@ impl BuildingScene {
 
     /// Roof displacements with and without pounding.
     fn displacements_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
-        let Some(s) = &self.solved else { return };
+        let Some(s) = &self.shown.solved else { return };
         let r = &s.drawing.result;
         let t = self.playback.shown_t();
         let h = 170.0;
@@ -424,7 +427,7 @@ impl BuildingScene {
 
     /// The pounding force at every level or the one picked; the time of a click in it.
     fn force_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter, h: f32, t: f64) -> Option<f64> {
-        let s = self.solved.as_ref()?;
+        let s = self.shown.solved.as_ref()?;
         let r = &s.drawing.result;
         let zoom = self.zoom.take();
         let (force, name) = match self.level {
@@ -477,7 +480,7 @@ impl BuildingScene {
 
     /// The level the force plot and the impact list show, where there is more than one.
     fn level_ui(&mut self, ui: &mut egui::Ui) {
-        let Some(s) = &self.solved else { return };
+        let Some(s) = &self.shown.solved else { return };
         let r = &s.drawing.result;
         if r.levels.len() > 1 {
             ui.horizontal(|ui| {
@@ -514,7 +517,7 @@ impl BuildingScene {
             self.displacements_ui(ui, exporter);
         }
         if show.shows("hysteresis")
-            && let Some(s) = &self.solved
+            && let Some(s) = &self.shown.solved
         {
             super::hysteresis_view::show(ui, &s.drawing, t, &mut self.shown_loops);
             if !self.shown_loops.series.is_empty() {
@@ -530,7 +533,7 @@ impl BuildingScene {
         } else {
             None
         };
-        let Some(s) = &self.solved else { return };
+        let Some(s) = &self.shown.solved else { return };
         let r = &s.drawing.result;
         let shown: Vec<usize> = (0..r.impacts.len())
             .filter(|&i| self.level.is_none_or(|l| r.impacts[i].level == l))
@@ -648,7 +651,7 @@ impl BuildingScene {
         &self,
     ) -> Option<Box<dyn FnOnce() -> super::export_animation::AnimationSource + '_>> {
         // A run still solving would animate beyond what it has solved.
-        let d = &self.solved.as_ref().filter(|s| s.whole)?.drawing;
+        let d = &self.shown.solved.as_ref().filter(|s| s.whole)?.drawing;
         Some(Box::new(move || {
             super::export_animation::AnimationSource::Buildings {
                 setup: Box::new(d.setup.clone()),

@@ -12,17 +12,9 @@ use crate::model::building::BuildingErrorEstimate;
 pub(super) use crate::app::later::{Later, StageTimes};
 
 /// What is on screen: one request's run (whole, or as far as it has solved) and its later
-/// stages as they land. A stage joins only the run of its own request, so nothing shown mixes
-/// two requests.
-pub(super) struct Solved {
-    pub(super) drawing: Box<BuildingDrawing>,
-    /// Whether the run is whole (else it is the part solved so far).
-    pub(super) whole: bool,
-    pub(super) baseline: Later<Box<Baseline>>,
-    pub(super) estimate: Later<Option<BuildingErrorEstimate>>,
-    /// Whether it is the newest request's (false once a newer one is made).
-    pub(super) current: bool,
-}
+/// stages as they land.
+pub(super) type Shown =
+    crate::app::later::Shown<BuildingDrawing, Box<Baseline>, Option<BuildingErrorEstimate>>;
 
 impl BuildingScene {
     /// Takes the stages that landed, in order.
@@ -38,11 +30,7 @@ impl BuildingScene {
 
     /// Playback waits at the edge of a run still solving.
     fn hold_playback(&mut self) {
-        self.playback.ready_s = self
-            .solved
-            .as_ref()
-            .filter(|s| !s.whole)
-            .map(|s| s.drawing.result.solved_to_s);
+        self.playback.ready_s = self.shown.edge(|d| d.result.solved_to_s);
     }
 
     /// One stage of the newest request.
@@ -57,13 +45,13 @@ impl BuildingScene {
             }
             Ok(Stage::Baseline(b)) => {
                 self.times.baseline = Some(landed.since_request);
-                if let Some(s) = self.solved.as_mut().filter(|s| s.current && s.whole) {
+                if let Some(s) = self.shown.newest_whole() {
                     s.baseline = Later::Ready(b);
                 }
             }
             Ok(Stage::Estimate(e)) => {
                 self.times.estimate = Some(landed.since_request);
-                if let Some(s) = self.solved.as_mut().filter(|s| s.current && s.whole) {
+                if let Some(s) = self.shown.newest_whole() {
                     s.estimate = Later::Ready(e);
                 }
             }
@@ -74,7 +62,7 @@ impl BuildingScene {
 
     /// Shows the newest request's run, whole or so far; its later stages are on their way.
     fn show_run(&mut self, drawing: Box<BuildingDrawing>, whole: bool) {
-        if !self.solved.as_ref().is_some_and(|s| s.current) {
+        if !self.shown.current() {
             // A new run has its own impacts: the diagram goes back to the strongest.
             self.selected = None;
         }
@@ -83,38 +71,21 @@ impl BuildingScene {
         if self.level.is_some_and(|l| l >= drawing.result.levels.len()) {
             self.level = None;
         }
-        let before = self.solved.replace(Solved {
-            drawing,
-            whole,
-            baseline: Later::Pending,
-            estimate: Later::Pending,
-            current: true,
-        });
-        if whole {
-            self.kept = None;
-        } else if let Some(b) = before.filter(|b| b.whole) {
-            self.kept = Some(b);
-        }
+        self.shown.show(drawing, whole);
         self.hold_playback();
     }
 
     /// The newest request is done: a run it left unfinished gives way to the last whole one,
     /// and a stage it never delivered is not coming.
     pub(super) fn ended(&mut self) {
-        if self.solved.as_ref().is_some_and(|s| !s.whole) {
-            self.solved = self.kept.take();
-            self.hold_playback();
-        }
-        if let Some(s) = &mut self.solved {
-            s.baseline.ended();
-            s.estimate.ended();
-        }
+        self.shown.ended();
+        self.hold_playback();
     }
 
     /// What the status bar says while the newest request solves: how far its run has got, or
     /// which checks of its run on screen are still to come.
     pub fn solving_note(&self) -> String {
-        let Some(s) = self.solved.as_ref().filter(|s| s.current) else {
+        let Some(s) = self.shown.solved.as_ref().filter(|s| s.current) else {
             return "solving...".into();
         };
         if !s.whole {
@@ -135,7 +106,7 @@ impl BuildingScene {
     /// What a lesson's expressions read: the run and the run without contact, both whole and
     /// the newest request's; `None` until they are.
     pub fn lesson_context(&self) -> Option<crate::lesson::Context> {
-        let s = self.solved.as_ref().filter(|s| s.whole)?;
+        let s = self.shown.solved.as_ref().filter(|s| s.whole)?;
         if self.busy() && !s.current {
             return None;
         }

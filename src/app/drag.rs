@@ -98,6 +98,10 @@ impl Drag {
         setup: &mut S,
         apply: impl Fn(&mut S, &str) -> Result<(), InputError>,
     ) -> bool {
+        // The drag starts once the scene's first run is on screen, as a hand's would.
+        if slot.runs == 0 {
+            return false;
+        }
         self.observe(slot.runs, slot.latency);
         let Some(assignment) = self.next_assignment() else {
             return false;

@@ -269,7 +269,7 @@ impl<I: Send + 'static, O: Send + 'static> SolveSlot<I, O> {
     }
 
     /// Posts new inputs. The solve under way is cancelled, unless its run is due within twice
-    /// the time the last run took (at most `hold_at_most`, and that long before any run has
+    /// the time the last run took (at most `hold_at_most`; not at all before any run has
     /// landed): then the new inputs wait for that run and go when it lands, cancelling only
     /// the later stages. A dragged slider asks for a solve every frame; cancelling each one
     /// shows nothing until the drag stops once a solve takes longer than a frame, where holding
@@ -285,9 +285,12 @@ impl<I: Send + 'static, O: Send + 'static> SolveSlot<I, O> {
     }
 
     /// How long a change may wait for the run under way.
+    /// Nothing is held before a first run has landed: with nothing on screen to keep live, the
+    /// newest inputs go at once (and what a window opens with never depends on which of its
+    /// first requests happened to finish first).
     fn hold(&self) -> Duration {
         self.last_run
-            .map_or(self.hold_at_most, |d| (2 * d).min(self.hold_at_most))
+            .map_or(Duration::ZERO, |d| (2 * d).min(self.hold_at_most))
     }
 
     fn send(&mut self, input: I, changed: Instant) {
@@ -542,6 +545,10 @@ mod tests {
     /// A job whose first output is its run (recorded as the scenes record theirs), and which
     /// then holds until cancelled (`n == 1`) or finishes.
     fn run_then_checks(n: u64, control: &Control, stages: &Stages<u64>) -> u64 {
+        if n == 0 {
+            // A first run that takes its time: the holds after it are twice as long.
+            std::thread::sleep(WARM_UP);
+        }
         if n != 3 {
             stages.send(10 * n + 1);
         }
@@ -552,6 +559,17 @@ mod tests {
             stages.send(10 * n + 3);
         }
         10 * n + 9
+    }
+
+    const WARM_UP: Duration = Duration::from_millis(600);
+
+    /// A slot whose first run (request 0) has landed and taken `WARM_UP`.
+    fn warmed_up(hold_at_most: Duration) -> SolveSlot<u64, u64> {
+        let mut slot = SolveSlot::staged(run_then_checks, || {});
+        slot.hold_at_most = hold_at_most;
+        slot.request(0);
+        assert_eq!(drain_runs(&mut slot), [1, 9]);
+        slot
     }
 
     /// As `drain`, each output taken as the scenes take theirs: a job's first is its run.
@@ -574,23 +592,22 @@ mod tests {
 
     #[test]
     fn a_change_made_while_a_run_is_due_waits_for_that_run_then_cancels_only_its_checks() {
-        let mut slot = SolveSlot::staged(run_then_checks, || {});
-        // Long enough that the wait never runs out here: the run under way decides.
-        slot.hold_at_most = Duration::from_secs(3600);
+        // The wait runs out after twice the first run, over a second: the run under way
+        // decides long before.
+        let mut slot = warmed_up(Duration::from_secs(3600));
         slot.request(1);
         slot.request(2);
         assert!(slot.busy());
         // Request 1's run lands and is shown; its checks are cancelled for request 2, which
         // runs through.
         assert_eq!(drain_runs(&mut slot), [11, 21, 29]);
-        assert_eq!(slot.runs, 2);
+        assert_eq!(slot.runs, 3);
     }
 
     #[test]
     fn a_change_waits_no_longer_than_its_hold_for_a_run_that_does_not_come() {
-        let mut slot = SolveSlot::staged(run_then_checks, || {});
         let hold = Duration::from_millis(50);
-        slot.hold_at_most = hold;
+        let mut slot = warmed_up(hold);
         let start = Instant::now();
         // Request 3 gives no run until cancelled.
         slot.request(3);
@@ -601,14 +618,23 @@ mod tests {
 
     #[test]
     fn cancel_drops_a_held_change() {
-        let mut slot = SolveSlot::staged(run_then_checks, || {});
-        slot.hold_at_most = Duration::from_secs(3600);
+        let mut slot = warmed_up(Duration::from_secs(3600));
         slot.request(1);
         slot.request(2);
         slot.cancel();
         // Request 1 was cancelled with its run not yet taken or after it; request 2 never went.
         let taken = drain_runs(&mut slot);
         assert!(taken.iter().all(|o| o / 10 == 1), "{taken:?}");
+    }
+
+    #[test]
+    fn before_a_first_run_has_landed_a_change_goes_at_once() {
+        let mut slot = SolveSlot::staged(run_then_checks, || {});
+        slot.hold_at_most = Duration::from_secs(3600);
+        // Request 3 never gives a run: held behind it, request 2 would wait an hour.
+        slot.request(3);
+        slot.request(2);
+        assert_eq!(drain_runs(&mut slot), [21, 29]);
     }
 
     #[test]
