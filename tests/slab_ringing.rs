@@ -199,7 +199,7 @@ fn a_slab_history_put_on_a_grid_in_one_pass_is_the_history_read_instant_by_insta
             let dt = dt_s * scale;
             // Past the run's end: the ringing after it.
             let n = (1.2 * w.end_s / dt) as usize;
-            let grid = w.history_on_grid(dt, n);
+            let grid: Vec<f64> = w.history_on_grid(dt, n).collect();
             assert_eq!(grid.len(), n);
             for (k, v) in grid.iter().enumerate() {
                 let at = w.history_at(k as f64 * dt);

@@ -14,7 +14,6 @@ use super::visibility::Visibility;
 use super::worker::SolveSlot;
 use super::xt_view::{XtDiagram, XtOptions, XtSource};
 use crate::io::building_settings::BuildingSetup;
-use crate::model::field::BarWaves;
 use crate::model::motion::G;
 use eframe::egui::{self, Color32};
 use egui_plot::{Legend, Line, Plot, PlotBounds, VLine};
@@ -22,10 +21,6 @@ use egui_plot::{Legend, Line, Plot, PlotBounds, VLine};
 #[path = "building_stages.rs"]
 mod stages;
 use stages::{Later, Shown, StageTimes};
-
-/// The slabs an x-t diagram shows: the run (its history id) and level they belong to, their
-/// waves, and those on the GPU.
-type SlabsShown = (u64, usize, Box<[BarWaves; 2]>);
 
 pub struct BuildingScene {
     pub setup: BuildingSetup,
@@ -48,9 +43,6 @@ pub struct BuildingScene {
     selected: Option<usize>,
     /// What the x-t diagram shows.
     xt: XtOptions,
-    /// The slabs of the level shown, kept while the result and the level stay (their
-    /// histories on the GPU are the drawing's).
-    xt_slabs: Option<SlabsShown>,
     /// The panels drawn (a lesson step's, or all).
     pub visibility: Visibility,
 }
@@ -77,7 +69,6 @@ impl BuildingScene {
             level: None,
             selected: None,
             xt: XtOptions::default(),
-            xt_slabs: None,
             motion_path: String::new(),
             view_rect: None,
             shown_displacements: ShownPlot::default(),
@@ -321,15 +312,8 @@ impl BuildingScene {
         let Some(entries) = s.drawing.slab_entries(e.level) else {
             return;
         };
-        let key = s.drawing.history_id();
-        if !matches!(&self.xt_slabs, Some((k, l, _)) if *k == key && *l == e.level) {
-            let waves = Box::new([left.clone(), right.clone()]);
-            self.xt_slabs = Some((key, e.level, waves));
-        }
-        let Some((_, _, waves)) = &self.xt_slabs else {
-            return;
-        };
-        let gpu = s.drawing.gpu();
+        // The slabs' histories on the GPU are the drawing's.
+        let (waves, gpu) = ([left, right], s.drawing.gpu());
         // A slab round trip either side at least: the waves arriving and ringing on.
         let trip = waves[0].round_trip_s().max(waves[1].round_trip_s());
         let margin = (0.5 * e.duration_s()).max(trip);

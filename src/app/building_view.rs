@@ -8,7 +8,7 @@ use crate::model::building::{Attachment, BuildingResult, Level};
 use crate::model::field::BarWaves;
 use crate::model::motion::{GroundMotion, MotionStats};
 use crate::model::xt::interpolate;
-use crate::render::bars::{GpuBar, GpuHistory, View, Viewport, uniforms};
+use crate::render::bars::{GpuBar, GpuHistory, HistoryEntry, View, Viewport, uniforms};
 use eframe::egui::{self, Color32, Pos2, Stroke};
 use std::sync::Arc;
 
@@ -27,11 +27,6 @@ pub struct BuildingDrawing {
 }
 
 impl BuildingDrawing {
-    /// Unique to this drawing's run (its GPU history's id).
-    pub fn history_id(&self) -> u64 {
-        self.gpu.id
-    }
-
     /// The history on the GPU of every slab with waves.
     pub fn gpu(&self) -> &Arc<GpuHistory> {
         &self.gpu
@@ -39,7 +34,7 @@ impl BuildingDrawing {
 
     /// Where the two slabs of `level` lie in [`BuildingDrawing::gpu`] (`None` unless both
     /// have waves).
-    pub fn slab_entries(&self, level: usize) -> Option<[(u32, u32, f32, f32); 2]> {
+    pub fn slab_entries(&self, level: usize) -> Option<[HistoryEntry; 2]> {
         let entry = |side| {
             let i = self.bars.iter().position(|&b| b == (level, side))?;
             Some(self.gpu.layout[i])

@@ -185,7 +185,7 @@ fn median(xs: &[Duration]) -> Option<Duration> {
 }
 
 fn ms(d: Option<Duration>) -> String {
-    d.map_or("-".into(), |d| format!("{:.1} ms", d.as_secs_f64() * 1e3))
+    d.map_or("-".into(), |d| super::status::ms(d.as_secs_f64(), 1))
 }
 
 #[cfg(test)]

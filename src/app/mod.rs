@@ -451,20 +451,17 @@ impl eframe::App for PoundingApp {
                 ctx.send_viewport_cmd(egui::ViewportCommand::Close);
             }
         }
-        self.ui_ms = start.elapsed().as_secs_f64() * 1e3;
+        let ui_time = start.elapsed();
+        self.ui_ms = ui_time.as_secs_f64() * 1e3;
         if let Some(d) = &mut self.drag {
-            d.ui_time(start.elapsed());
+            d.ui_time(ui_time);
         }
     }
 
-    /// The panels' colour, where they leave the background to the clear (see
-    /// [`PoundingApp::panel_frame`]); else eframe's.
+    /// The panels' colour: where they leave the background to the clear (see
+    /// [`PoundingApp::panel_frame`]) it is theirs, and where they are filled it is hidden.
     fn clear_color(&self, visuals: &egui::Visuals) -> [f32; 4] {
-        if self.launch.background_by_clear {
-            visuals.panel_fill.to_normalized_gamma_f32()
-        } else {
-            egui::Color32::from_rgba_unmultiplied(12, 12, 12, 180).to_normalized_gamma_f32()
-        }
+        visuals.panel_fill.to_normalized_gamma_f32()
     }
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {

@@ -225,8 +225,7 @@ pub struct SolveSlot<I, O> {
     pub error: Option<String>,
     /// Runs landed so far (the ones the timings measure).
     pub runs: u64,
-    /// A change held back while the solve under way finishes its first output, and when it
-    /// was made.
+    /// A change held back while the run under way finishes, and when it was made.
     queued: Option<(I, Instant)>,
     /// When the solve under way was sent, and whether its run has landed.
     sent: Option<(Instant, bool)>,
@@ -284,10 +283,9 @@ impl<I: Send + 'static, O: Send + 'static> SolveSlot<I, O> {
         }
     }
 
-    /// How long a change may wait for the run under way.
-    /// Nothing is held before a first run has landed: with nothing on screen to keep live, the
-    /// newest inputs go at once (and what a window opens with never depends on which of its
-    /// first requests happened to finish first).
+    /// How long a change may wait for the run under way. Nothing is held before a first run
+    /// has landed: with nothing on screen to keep live, the newest inputs go at once (and what
+    /// a window opens with never depends on which of its first requests finished first).
     fn hold(&self) -> Duration {
         self.last_run
             .map_or(Duration::ZERO, |d| (2 * d).min(self.hold_at_most))

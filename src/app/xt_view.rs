@@ -7,7 +7,7 @@
 use crate::model::field::BarWaves;
 use crate::model::impact::ImpactResult;
 use crate::model::scenario::ImpactScenario;
-use crate::render::bars::{BarsLayout, GpuHistory, View, Viewport, XtShown};
+use crate::render::bars::{BarsLayout, GpuHistory, HistoryEntry, View, Viewport, XtShown};
 use eframe::egui::{self, Color32, Pos2, Rect, Stroke};
 use std::sync::Arc;
 
@@ -52,10 +52,10 @@ pub enum XtSource<'a> {
     /// Two slabs meeting at a building level, from their waves; `approach_m_s` sets the
     /// colour scale (the wave-theory stress at that closing speed).
     Slabs {
-        waves: &'a [BarWaves; 2],
+        waves: [&'a BarWaves; 2],
         approach_m_s: f64,
         /// Where the two slabs lie in the diagram's history.
-        entries: [(u32, u32, f32, f32); 2],
+        entries: [HistoryEntry; 2],
     },
 }
 
@@ -108,10 +108,10 @@ impl Frame<'_> {
 
 impl XtDiagram<'_> {
     /// The waves drawn, where the source has them.
-    fn waves(&self) -> Option<&[BarWaves; 2]> {
+    fn waves(&self) -> Option<[&BarWaves; 2]> {
         match &self.source {
-            XtSource::Impact { result, .. } => result.waves.as_ref(),
-            XtSource::Slabs { waves, .. } => Some(waves),
+            XtSource::Impact { result, .. } => result.waves.as_ref().map(|w| [&w[0], &w[1]]),
+            XtSource::Slabs { waves, .. } => Some(*waves),
         }
     }
 
@@ -125,7 +125,7 @@ impl XtDiagram<'_> {
                 waves,
                 approach_m_s,
                 entries,
-            } => BarsLayout::at_entries(waves, *approach_m_s, *entries),
+            } => BarsLayout::at_entries(*waves, *approach_m_s, *entries),
         }
         .xt()
     }

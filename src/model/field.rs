@@ -174,42 +174,44 @@ impl BarWaves {
     /// one pass. A drawing puts a run's waves on such a grid after every run (a million samples
     /// for a pair of slabs over 8 s); walking the stretches in order, and working out each
     /// round trip's attenuation once, takes a fraction of the time looking each one up does.
-    pub fn history_on_grid(&self, dt: f64, n: usize) -> Vec<f64> {
-        let History::Segments { dt_s, segments } = &self.history else {
-            return (0..n).map(|k| self.history_at(k as f64 * dt)).collect();
+    pub fn history_on_grid(&self, dt: f64, n: usize) -> impl Iterator<Item = f64> + '_ {
+        let stretches = match &self.history {
+            History::Segments { dt_s, segments } => Some((*dt_s, segments)),
+            _ => None,
         };
-        let round_steps = self.round_trip_s() / dt_s;
+        let round_steps = stretches.map_or(0.0, |(dt_s, _)| self.round_trip_s() / dt_s);
         let r = self.attenuation(self.round_trip_s());
         // The stretch under way (the last that starts at or before the sample), and the
         // attenuation of the last round-trip count folded back.
         let mut next = 0;
         let mut folds = (0.0, 1.0);
-        (0..n)
-            .map(|k| {
-                let p = (k as f64 * dt) / dt_s;
-                while next < segments.len() && segments[next].first as f64 <= p {
-                    next += 1;
+        (0..n).map(move |k| {
+            let Some((dt_s, segments)) = stretches else {
+                return self.history_at(k as f64 * dt);
+            };
+            let p = (k as f64 * dt) / dt_s;
+            while next < segments.len() && segments[next].first as f64 <= p {
+                next += 1;
+            }
+            let Some(seg) = next.checked_sub(1).map(|i| &segments[i]) else {
+                return 0.0;
+            };
+            let last = (seg.first + seg.values.len()) as f64 - 1.0;
+            let (mut q, mut weight) = (p, 1.0);
+            if p > last && round_steps > 0.0 {
+                let trips = ((p - last) / round_steps).ceil();
+                if folds.0 != trips {
+                    folds = (trips, r.powi(trips as i32));
                 }
-                let Some(seg) = next.checked_sub(1).map(|i| &segments[i]) else {
-                    return 0.0;
-                };
-                let last = (seg.first + seg.values.len()) as f64 - 1.0;
-                let (mut q, mut weight) = (p, 1.0);
-                if p > last && round_steps > 0.0 {
-                    let k = ((p - last) / round_steps).ceil();
-                    if folds.0 != k {
-                        folds = (k, r.powi(k as i32));
-                    }
-                    q -= k * round_steps;
-                    weight = folds.1;
-                }
-                let local = q - seg.first as f64;
-                if local < 0.0 {
-                    return 0.0;
-                }
-                weight * sample_at(&seg.values, 1.0, local)
-            })
-            .collect()
+                q -= trips * round_steps;
+                weight = folds.1;
+            }
+            let local = q - seg.first as f64;
+            if local < 0.0 {
+                return 0.0;
+            }
+            weight * sample_at(&seg.values, 1.0, local)
+        })
     }
 
     /// The body's round trip 2 L / c [s].

@@ -56,11 +56,7 @@ impl GpuBar {
     /// lies on the GPU (`layout`, an entry of [`GpuHistory::layout`]) and the velocity fields,
     /// with `v_scale` saturating the colour map. The geometry on screen and the stress scale are
     /// left for the caller.
-    pub fn of_waves(
-        w: &BarWaves,
-        (offset, count, dt, end): (u32, u32, f32, f32),
-        v_scale: f64,
-    ) -> Self {
+    pub fn of_waves(w: &BarWaves, (offset, count, dt, end): HistoryEntry, v_scale: f64) -> Self {
         GpuBar {
             body_length: w.body_length_m as f32,
             zone_length: w.zone_length_m as f32,
@@ -105,6 +101,10 @@ pub struct GpuUniforms {
     pub _pad: [f32; 3],
 }
 
+/// Where one bar's history lies in a [`GpuHistory`]: its first sample, the number of samples,
+/// their spacing [s] and the end of the run they cover [s].
+pub type HistoryEntry = (u32, u32, f32, f32);
+
 /// The wave histories of a set of bars on uniform grids, ready to upload.
 #[derive(Debug, Clone)]
 pub struct GpuHistory {
@@ -112,8 +112,8 @@ pub struct GpuHistory {
     /// the pipeline never draw each other's waves.
     pub id: u64,
     pub samples: Vec<f32>,
-    /// (offset, count, dt, end time) per bar.
-    pub layout: Vec<(u32, u32, f32, f32)>,
+    /// Each bar's place.
+    pub layout: Vec<HistoryEntry>,
 }
 
 static NEXT_HISTORY: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(1);
@@ -172,7 +172,7 @@ impl GpuHistory {
                 }
                 History::Steps { .. } | History::Segments { .. } => {
                     let (dt, n) = grid(w, per_bar);
-                    samples.extend(w.history_on_grid(dt, n).into_iter().map(|v| v as f32));
+                    samples.extend(w.history_on_grid(dt, n).map(|v| v as f32));
                     dt
                 }
             };
@@ -200,7 +200,7 @@ impl GpuHistory {
             let offset = samples.len() as u32;
             let (dt, n) = grid(&pair[0], per_bar);
             for w in pair {
-                samples.extend(w.history_on_grid(dt, n).into_iter().map(|v| v as f32));
+                samples.extend(w.history_on_grid(dt, n).map(|v| v as f32));
             }
             layout.push((offset, n as u32, dt as f32, pair[0].end_s as f32));
         }
@@ -535,15 +535,19 @@ pub const BAR_Y: (f32, f32) = (0.40, 0.62);
 impl BarsLayout {
     /// `approach_m_s` is the closing velocity v1 - v2; the bars are the first two of `gpu`.
     pub fn new(waves: &[BarWaves; 2], approach_m_s: f64, gpu: &GpuHistory) -> Self {
-        Self::at_entries(waves, approach_m_s, [gpu.layout[0], gpu.layout[1]])
+        Self::at_entries(
+            [&waves[0], &waves[1]],
+            approach_m_s,
+            [gpu.layout[0], gpu.layout[1]],
+        )
     }
 
     /// As `new`, the bars read from the given entries of a history's layout (two slabs of a
     /// history that holds more).
     pub fn at_entries(
-        waves: &[BarWaves; 2],
+        waves: [&BarWaves; 2],
         approach_m_s: f64,
-        entries: [(u32, u32, f32, f32); 2],
+        entries: [HistoryEntry; 2],
     ) -> Self {
         let lengths = [waves[0].length_m(), waves[1].length_m()];
         let to_scale = lengths[0].max(lengths[1]) / lengths[0].min(lengths[1]) < 20.0;

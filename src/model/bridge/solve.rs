@@ -853,6 +853,7 @@ fn run_publishing(
                 let so_far = (done as f64 * h).min(duration);
                 publish(finish(
                     &run,
+                    run.contacts.clone(),
                     hist.clone(),
                     peaks.clone(),
                     (duration, so_far),
@@ -877,8 +878,10 @@ fn run_publishing(
             });
         }
     }
+    let contacts = std::mem::take(&mut run.contacts);
     Ok(finish(
         &run,
+        contacts,
         hist,
         peaks,
         (duration, duration),
@@ -888,9 +891,10 @@ fn run_publishing(
 }
 
 /// The result of the run to `steps` steps, `solved_to` of its `duration` (the two equal once
-/// it is whole).
+/// it is whole), with its contacts so far.
 fn finish(
     run: &Run,
+    contacts: Vec<RawContact>,
     hist: Histories,
     peaks: Peaks,
     (duration, solved_to): (f64, f64),
@@ -938,7 +942,6 @@ fn finish(
             energy.balance_error()
         ));
     }
-    let contacts = run.contacts.clone();
     let impacts = group_impacts(&contacts, sc.merge_gap_s);
     let max_force_by_joint_n: Vec<f64> = run.joints.iter().map(|j| j.max_force).collect();
     BridgeResult {
