@@ -76,3 +76,53 @@ fn every_model_summarises_as_its_full_solve() {
         );
     }
 }
+
+/// A building run keeping only some peaks (what an error estimate or a gap assessment reads)
+/// finds those bit for bit as a run keeping every peak does, on a pair that pounds at several
+/// levels and one that yields; the peaks it leaves out are NaN, never a stale number.
+#[test]
+fn a_building_run_keeping_some_peaks_finds_them_as_a_run_keeping_all() {
+    use pounding::io::building_settings::BuildingSetup;
+    use pounding::io::preset;
+    use pounding::model::building::{ContactModel, Tracked, solve_summary_tracking};
+    use pounding::model::control::Control;
+    for (name, contact) in [
+        ("mdof-3-5", ContactModel::Sears),
+        ("mdof-3-5", ContactModel::None),
+        ("mdof-unequal", ContactModel::Hertz),
+        ("paper-buildings-yielding", ContactModel::Linear),
+    ] {
+        let setup = preset::load_for::<BuildingSetup>(name, "buildings").expect("a preset");
+        let motion = pounding::io::motion::load(&setup.motion).expect("its record");
+        let mut sc = setup.scenario;
+        sc.contact = contact;
+        let run = |t| solve_summary_tracking(&sc, &motion, Control::never(), t).expect("solves");
+        let all = run(Tracked::All);
+        let floors = run(Tracked::Floors);
+        let levels = run(Tracked::Levels);
+        let what = format!("{name}, {}", contact.name());
+        assert!(all.peak_drift_ratio[0].iter().all(|d| *d > 0.0), "{what}");
+        assert_eq!(
+            floors.peak_floor_displacement_m, all.peak_floor_displacement_m,
+            "{what}"
+        );
+        assert!(
+            floors.peak_drift_ratio.iter().flatten().all(|d| d.is_nan()),
+            "{what}"
+        );
+        assert_eq!(levels.max_closing_m, all.max_closing_m, "{what}");
+        assert_eq!(
+            levels.peak_level_displacement_m, all.peak_level_displacement_m,
+            "{what}"
+        );
+        for run in [&floors, &levels] {
+            assert_eq!(run.max_pounding_force_n, all.max_pounding_force_n, "{what}");
+            assert_eq!(run.contacts, all.contacts, "{what}");
+        }
+        // A floor above the levels is not followed for the gaps.
+        let right = &levels.peak_floor_displacement_m[1];
+        if right.len() > levels.levels.len() {
+            assert!(right.last().expect("a roof").is_nan(), "{what}");
+        }
+    }
+}

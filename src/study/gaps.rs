@@ -3,7 +3,7 @@
 
 use super::{Cancelled, Control, par_map};
 use crate::model::building::gaps::{GapAssessment, assess};
-use crate::model::building::{BuildingScenario, ContactModel, solve_summary};
+use crate::model::building::{BuildingScenario, ContactModel, Tracked, solve_summary_tracking};
 use crate::model::error::SolveError;
 use crate::model::motion::{G, GroundMotion};
 
@@ -28,7 +28,8 @@ pub fn record_gaps(
         ..scenario.clone()
     };
     par_map(progress, motions, |m| {
-        let r = solve_summary(&free, m)?;
+        // Only the closings and the floors at the levels count here.
+        let r = solve_summary_tracking(&free, m, Control::never(), Tracked::Levels)?;
         Ok(RecordGaps {
             record: m.name.clone(),
             duration_s: m.duration_s(),

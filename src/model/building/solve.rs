@@ -161,7 +161,7 @@ pub fn solve_with(
     motion: &GroundMotion,
     control: &Control,
 ) -> Result<BuildingResult, SolveError> {
-    run(sc, motion, control, true)
+    run(sc, motion, control, true, Tracked::All)
 }
 
 /// The run's summary alone: contacts, impacts, peaks, forces, energy and warnings, without the
@@ -179,7 +179,30 @@ pub fn solve_summary_with(
     motion: &GroundMotion,
     control: &Control,
 ) -> Result<BuildingResult, SolveError> {
-    run(sc, motion, control, false)
+    run(sc, motion, control, false, Tracked::All)
+}
+
+/// Which peaks a run keeps. A run made for one comparison tracks only the peaks it reads: each
+/// signal's peak is found independently of the others, so those it keeps are bit for bit what a
+/// run keeping all of them finds. The peaks it leaves out are NaN in its result.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Tracked {
+    /// Every floor, every storey's drift ratio, every contact point.
+    All,
+    /// The floors' displacements (what an error estimate compares).
+    Floors,
+    /// The floors at the contact levels (what a gap assessment reads).
+    Levels,
+}
+
+/// [`solve_summary_with`], keeping only the peaks `tracked` names.
+pub fn solve_summary_tracking(
+    sc: &BuildingScenario,
+    motion: &GroundMotion,
+    control: &Control,
+    tracked: Tracked,
+) -> Result<BuildingResult, SolveError> {
+    run(sc, motion, control, false, tracked)
 }
 
 /// [`solve_with`], handing `publish` what the run has solved so far, at most once per `every`
@@ -194,7 +217,14 @@ pub fn solve_streaming(
     every: std::time::Duration,
     publish: &mut dyn FnMut(BuildingResult),
 ) -> Result<BuildingResult, SolveError> {
-    run_publishing(sc, motion, control, true, Some((every, publish)))
+    run_publishing(
+        sc,
+        motion,
+        control,
+        true,
+        Tracked::All,
+        Some((every, publish)),
+    )
 }
 
 /// How much wall time the window lets pass between two partial results of a long run.
@@ -206,8 +236,9 @@ fn run(
     motion: &GroundMotion,
     control: &Control,
     histories: bool,
+    tracked: Tracked,
 ) -> Result<BuildingResult, SolveError> {
-    run_publishing(sc, motion, control, histories, None)
+    run_publishing(sc, motion, control, histories, tracked, None)
 }
 
 /// What every run shares: the levels, the modes, the grid, the warnings known before it starts.
@@ -224,6 +255,7 @@ fn run_publishing(
     motion: &GroundMotion,
     control: &Control,
     histories: bool,
+    tracked: Tracked,
     publish: Option<(std::time::Duration, &mut dyn FnMut(BuildingResult))>,
 ) -> Result<BuildingResult, SolveError> {
     sc.validate()?;
@@ -250,6 +282,7 @@ fn run_publishing(
         &setup.levels,
         setup.modes.clone(),
         histories,
+        tracked,
     );
     match publish {
         None => stepper.run(control)?,

@@ -276,8 +276,7 @@ impl Stepper<'_> {
         for (i, sig) in self.signals.iter().enumerate() {
             w.signal_m4.push(sig.bound(&w.m4));
             w.signal_m5.push(sig.bound(&w.m5));
-            let open = sig.same_as.is_none()
-                && sig.bound(&w.size) * (1.0 + ROUNDING) >= self.peaks.peak(i);
+            let open = sig.watched() && sig.bound(&w.size) * (1.0 + ROUNDING) >= self.peaks.peak(i);
             root.peak.push(open);
             if open {
                 // Its last instant is this one (a stretch that left it alone did not keep it).
@@ -395,7 +394,7 @@ impl Stepper<'_> {
             any = now.closing.iter().any(|&x| x);
         }
         for i in 0..self.signals.len() {
-            if self.signals[i].same_as.is_some() || !parent.is_none_or(|x| x.peak[i]) {
+            if !self.signals[i].watched() || !parent.is_none_or(|x| x.peak[i]) {
                 now.peak.push(false);
                 now.values.push([0.0; 3]);
                 continue;

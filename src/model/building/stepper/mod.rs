@@ -38,7 +38,7 @@ use super::levels::Level;
 use super::modal::{Modes, Propagator, StepIntegrals, joined, propagator, step_integrals};
 use super::result::{BuildingEnergy, RawContact};
 use super::slab::{SlabMark, SlabWaves};
-use super::{BuildingScenario, ContactModel, SlabReading};
+use super::{BuildingScenario, ContactModel, SlabReading, Tracked};
 use crate::model::control::{CHECK_EVERY, Control};
 use crate::model::error::SolveError;
 use crate::model::motion::GroundMotion;
@@ -394,6 +394,7 @@ impl<'a> Stepper<'a> {
         levels: &[Level],
         modes: [Modes; 2],
         histories: bool,
+        tracked: Tracked,
     ) -> Self {
         let sides = [
             Side::new(
@@ -422,7 +423,7 @@ impl<'a> Stepper<'a> {
             .iter()
             .map(|level| new_point(sc, &sides, level, grid.h, sears))
             .collect();
-        let signals = Signal::all(&sides, &points);
+        let signals = Signal::all(&sides, &points, tracked);
         let mut s = Stepper {
             sc,
             motion,

@@ -14,6 +14,8 @@ pub(super) struct Signal {
     /// An earlier signal it is identical to (a contact point on a floor is that floor): its peak
     /// is that one's, and it is not tracked itself.
     pub(super) same_as: Option<usize>,
+    /// Whether the run keeps its peak (see [`super::super::Tracked`]).
+    kept: bool,
     /// Its largest coefficient: a step that moves its side's modes by dq moves it by at most
     /// this times the sum of |dq|.
     largest: f64,
@@ -25,7 +27,7 @@ pub(super) struct Signal {
 impl Signal {
     /// Every signal, in the order [`Stepper::peaks`] reads them: each floor (left, then right),
     /// each storey's drift ratio (left, then right), each point on each side.
-    pub(super) fn all(sides: &[Side; 2], points: &[Point]) -> Vec<Signal> {
+    pub(super) fn all(sides: &[Side; 2], points: &[Point], tracked: Tracked) -> Vec<Signal> {
         let mut out = Vec::new();
         for (s, side) in sides.iter().enumerate() {
             for f in 0..side.heights.len() {
@@ -33,6 +35,7 @@ impl Signal {
                     side: s,
                     coef: (0..side.modes()).map(|k| side.shapes[k][f]).collect(),
                     same_as: None,
+                    kept: true,
                     largest: 0.0,
                     norm: 0.0,
                 });
@@ -47,6 +50,7 @@ impl Signal {
                         .map(|k| (side.shapes[k][f] - below(k)) / side.heights[f])
                         .collect(),
                     same_as: None,
+                    kept: true,
                     largest: 0.0,
                     norm: 0.0,
                 });
@@ -58,6 +62,7 @@ impl Signal {
                     side: s,
                     coef: p.r[s].clone(),
                     same_as: None,
+                    kept: true,
                     largest: 0.0,
                     norm: 0.0,
                 });
@@ -72,7 +77,30 @@ impl Signal {
                 out[j].same_as.is_none() && out[j].side == out[i].side && out[j].coef == out[i].coef
             });
         }
+        let floors: usize = sides.iter().map(|s| s.heights.len()).sum();
+        let first_point = 2 * floors;
+        for i in 0..out.len() {
+            out[i].kept = match tracked {
+                Tracked::All => true,
+                Tracked::Floors => i < floors,
+                Tracked::Levels => i >= first_point,
+            };
+        }
+        if tracked == Tracked::Levels {
+            // A point on a floor is that floor: the floor's signal stands for it.
+            for i in first_point..out.len() {
+                if let Some(j) = out[i].same_as {
+                    out[j].kept = true;
+                }
+            }
+        }
         out
+    }
+
+    /// Whether the run follows this signal's peak itself (not through an identical one, and
+    /// kept).
+    pub(super) fn watched(&self) -> bool {
+        self.same_as.is_none() && self.kept
     }
 
     /// The bound on its fourth derivative, from its modes' bounds.
@@ -225,7 +253,7 @@ impl Stepper<'_> {
     pub(super) fn track_peaks_now(&mut self) {
         let t = self.time();
         for i in 0..self.signals.len() {
-            if self.signals[i].same_as.is_none() {
+            if self.signals[i].watched() {
                 self.read_signal(i, t);
             }
         }
@@ -281,7 +309,7 @@ impl Stepper<'_> {
         });
         for i in 0..self.signals.len() {
             let sig = &self.signals[i];
-            if sig.same_as.is_some() {
+            if !sig.watched() {
                 continue;
             }
             let (s, largest, norm) = (sig.side, sig.largest, sig.norm);
@@ -354,7 +382,11 @@ impl Stepper<'_> {
         let p: Vec<f64> = (0..self.signals.len())
             .map(|i| {
                 let i = self.signals[i].same_as.unwrap_or(i);
-                self.peak_so_far(i)
+                if self.signals[i].kept {
+                    self.peak_so_far(i)
+                } else {
+                    f64::NAN
+                }
             })
             .collect();
         let floors = [p[..n[0]].to_vec(), p[n[0]..n[0] + n[1]].to_vec()];
