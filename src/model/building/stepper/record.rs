@@ -79,8 +79,8 @@ impl Signal {
         }
         let floors: usize = sides.iter().map(|s| s.heights.len()).sum();
         let first_point = 2 * floors;
-        for i in 0..out.len() {
-            out[i].kept = match tracked {
+        for (i, sig) in out.iter_mut().enumerate() {
+            sig.kept = match tracked {
                 Tracked::All => true,
                 Tracked::Floors => i < floors,
                 Tracked::Levels => i >= first_point,
