@@ -162,7 +162,8 @@ impl Stepper<'_> {
             }
             a = part.b;
         }
-        self.states_at(&w.y0, len, &mut w.q, &mut w.v);
+        // Every check ends by working out the states at its part's end (its halves and its walk
+        // end there too): `w` holds the stretch's end.
         {
             let Scratch { y0, q, v, .. } = &*w;
             self.commit_free(
@@ -274,9 +275,17 @@ impl Stepper<'_> {
         w.signal_m5.clear();
         w.signal_acc.clear();
         for (i, sig) in self.signals.iter().enumerate() {
+            if !sig.watched() {
+                w.signal_m4.push(0.0);
+                w.signal_m5.push(0.0);
+                root.peak.push(false);
+                self.stale[i] = true;
+                w.signal_acc.push(0.0);
+                continue;
+            }
             w.signal_m4.push(sig.bound(&w.m4));
             w.signal_m5.push(sig.bound(&w.m5));
-            let open = sig.watched() && sig.bound(&w.size) * (1.0 + ROUNDING) >= self.peaks.peak(i);
+            let open = sig.bound(&w.size) * (1.0 + ROUNDING) >= self.peaks.peak(i);
             root.peak.push(open);
             if open {
                 // Its last instant is this one (a stretch that left it alone did not keep it).
