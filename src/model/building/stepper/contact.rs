@@ -54,7 +54,6 @@ pub(super) struct Scratch {
     trial: Trial,
     /// Each side's modal displacements and velocities where the step started.
     modal_before: [[Vec<f64>; 2]; 2],
-    before: Vec<f64>,
     u_before: Vec<(f64, f64)>,
     /// Yielding storeys: each side's load of their corrections at the trial's end, per mode.
     pseudo1: [Vec<f64>; 2],
@@ -531,18 +530,22 @@ impl Stepper<'_> {
         let hh = tr.hh;
         let t0 = self.time();
         let ground0 = cs.ground0;
-        cs.before.clear();
-        cs.before.extend(self.points.iter().map(|p| p.force));
-        cs.u_before.clear();
         cs.u_before.resize(self.points.len(), (0.0, 0.0));
         for &i in &cs.awake {
             cs.u_before[i] = self.point_now_of(&self.points[i]);
         }
+        // The modes are few: an element-wise copy is cheaper than a call to copy memory.
         for s in 0..2 {
             let side = &self.sides[s];
             let [q, v] = &mut cs.modal_before[s];
-            q.clone_from(&side.q);
-            v.clone_from(&side.v);
+            q.resize(side.q.len(), 0.0);
+            v.resize(side.v.len(), 0.0);
+            for (to, from) in q.iter_mut().zip(&side.q) {
+                *to = *from;
+            }
+            for (to, from) in v.iter_mut().zip(&side.v) {
+                *to = *from;
+            }
         }
         for s in 0..2 {
             let side = &mut self.sides[s];
@@ -606,7 +609,8 @@ impl Stepper<'_> {
         for &i in &cs.awake {
             let u_after = self.point_now(i);
             let p = &mut self.points[i];
-            let (f0, f1) = (cs.before[i], tr.forces[i]);
+            // The point's force is still the step's first until it is set below.
+            let (f0, f1) = (p.force, tr.forces[i]);
             // The contact's work on the buildings: -(F0 + F1)/2 times the closing displacement.
             self.ledger.contact_work_j -= 0.5 * (f0 + f1) * (u_after.0 - cs.u_before[i].0);
             let delta0 = p.delta;

@@ -177,6 +177,19 @@ impl Side {
         dotv(&self.by_floor[f], q)
     }
 
+    /// Every floor's displacement from modal coordinates `q` into `out`: each floor's sum in
+    /// the order [`Side::floor`] takes it (bit for bit), mode by mode over all floors at once,
+    /// which the compiler can vectorise and a sum per floor it cannot.
+    fn floors_into(&self, q: &[f64], out: &mut Vec<f64>) {
+        out.clear();
+        out.extend(self.shapes[0].iter().map(|s| s * q[0]));
+        for (shape, &qk) in self.shapes.iter().zip(q).skip(1) {
+            for (o, s) in out.iter_mut().zip(shape) {
+                *o += s * qk;
+            }
+        }
+    }
+
     /// Mode k's load from the yielding storeys' corrections now (zero for elastic storeys).
     fn pseudo_now(&self, k: usize) -> f64 {
         self.storeys.as_ref().map_or(0.0, |st| st.load0[k])

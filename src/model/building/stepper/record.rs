@@ -191,6 +191,8 @@ pub(in crate::model::building) struct Record {
     /// elastic side: its shear is k times the drift the floors give).
     pub storey_shear: [Vec<Vec<f64>>; 2],
     contact_sample_s: f64,
+    /// One side's floors worked out for a sample, before they go to their columns.
+    scratch: Vec<f64>,
 }
 
 impl Record {
@@ -211,6 +213,7 @@ impl Record {
             force: Vec::new(),
             storey_shear: [Vec::new(), Vec::new()],
             contact_sample_s,
+            scratch: Vec::new(),
         }
     }
 
@@ -303,10 +306,8 @@ impl Stepper<'_> {
         let speeds: [[f64; 2]; 2] = std::array::from_fn(|s| sizes(before[s][1].iter().copied()));
         let speed_after: [[f64; 2]; 2] =
             std::array::from_fn(|s| sizes(self.sides[s].v.iter().copied()));
-        let kicked: [[f64; 2]; 2] = std::array::from_fn(|s| {
-            let (v0, v1) = (&before[s][1], &self.sides[s].v);
-            sizes(v0.iter().zip(v1).map(|(a, b)| b - a))
-        });
+        // What the step changed the modal velocities by, worked out where a proof needs it.
+        let mut kicked: [Option<[f64; 2]>; 2] = [None; 2];
         for i in 0..self.signals.len() {
             let sig = &self.signals[i];
             if !sig.watched() {
@@ -328,7 +329,11 @@ impl Stepper<'_> {
                 }
             }
             if !self.stale[i] {
-                let keeps = self.sign_room[i] - most(kicked[s]);
+                let kick = *kicked[s].get_or_insert_with(|| {
+                    let (v0, v1) = (&before[s][1], &self.sides[s].v);
+                    sizes(v0.iter().zip(v1).map(|(a, b)| b - a))
+                });
+                let keeps = self.sign_room[i] - most(kick);
                 if keeps > 1e-9 * self.sign_room[i].abs().max(f64::MIN_POSITIVE) {
                     self.sign_room[i] = keeps;
                     self.deferred[i] = true;
@@ -430,12 +435,16 @@ impl Stepper<'_> {
         rec.time_s.push(t);
         rec.ground.push(ground);
         for (s, (side, roof_a)) in self.sides.iter().zip(roof_a).enumerate() {
-            for f in 0..side.heights.len() {
-                rec.floors[s][f].push(side.floor(&side.q, f));
-                rec.floor_v[s][f].push(side.floor(&side.v, f));
+            side.floors_into(&side.q, &mut rec.scratch);
+            for (column, x) in rec.floors[s].iter_mut().zip(&rec.scratch) {
+                column.push(*x);
+            }
+            side.floors_into(&side.v, &mut rec.scratch);
+            for (column, x) in rec.floor_v[s].iter_mut().zip(&rec.scratch) {
+                column.push(*x);
             }
             let roof = side.heights.len() - 1;
-            rec.roof_v[s].push(side.floor(&side.v, roof));
+            rec.roof_v[s].push(rec.scratch[roof]);
             rec.roof_a[s].push(roof_a + ground);
             if let Some(st) = &side.storeys {
                 for (j, column) in rec.storey_shear[s].iter_mut().enumerate() {
