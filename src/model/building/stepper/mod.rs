@@ -183,9 +183,12 @@ impl Side {
     fn floors_into(&self, q: &[f64], out: &mut Vec<f64>) {
         out.clear();
         out.extend(self.shapes[0].iter().map(|s| s * q[0]));
+        let n = out.len();
+        let out = &mut out[..];
         for (shape, &qk) in self.shapes.iter().zip(q).skip(1) {
-            for (o, s) in out.iter_mut().zip(shape) {
-                *o += s * qk;
+            let shape = &shape[..n];
+            for f in 0..n {
+                out[f] += shape[f] * qk;
             }
         }
     }
