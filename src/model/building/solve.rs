@@ -182,7 +182,7 @@ pub fn solve_summary_with(
     motion: &GroundMotion,
     control: &Control,
 ) -> Result<BuildingResult, SolveError> {
-    run(sc, motion, control, false, Tracked::All)
+    solve_summary_tracking(sc, motion, control, Tracked::All)
 }
 
 /// Which peaks a run keeps. A run made for one comparison tracks only the peaks it reads: each

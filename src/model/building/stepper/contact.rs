@@ -530,6 +530,8 @@ impl Stepper<'_> {
         let hh = tr.hh;
         let t0 = self.time();
         let ground0 = cs.ground0;
+        // Only the awake points' entries are read (by `account_contacts`): the others may hold
+        // an earlier step's.
         cs.u_before.resize(self.points.len(), (0.0, 0.0));
         for &i in &cs.awake {
             cs.u_before[i] = self.point_now_of(&self.points[i]);

@@ -275,17 +275,12 @@ impl Stepper<'_> {
         w.signal_m5.clear();
         w.signal_acc.clear();
         for (i, sig) in self.signals.iter().enumerate() {
-            if !sig.watched() {
-                w.signal_m4.push(0.0);
-                w.signal_m5.push(0.0);
-                root.peak.push(false);
-                self.stale[i] = true;
-                w.signal_acc.push(0.0);
-                continue;
-            }
-            w.signal_m4.push(sig.bound(&w.m4));
-            w.signal_m5.push(sig.bound(&w.m5));
-            let open = sig.bound(&w.size) * (1.0 + ROUNDING) >= self.peaks.peak(i);
+            // A signal the run does not follow needs no bounds.
+            let watched = sig.watched();
+            let bound = |m: &[Vec<f64>; 2]| if watched { sig.bound(m) } else { 0.0 };
+            w.signal_m4.push(bound(&w.m4));
+            w.signal_m5.push(bound(&w.m5));
+            let open = watched && bound(&w.size) * (1.0 + ROUNDING) >= self.peaks.peak(i);
             root.peak.push(open);
             if open {
                 // Its last instant is this one (a stretch that left it alone did not keep it).
