@@ -54,6 +54,9 @@ pub struct GirderWaves {
     ends: [End; 2],
     /// Steps committed: the grid index of the newest forces.
     n: usize,
+    /// Whether a force has reached either end yet: until then every wave is zero and its
+    /// rings hold nothing but zeros, so a step only counts itself.
+    struck: bool,
     /// Each end's force over the stretches it was loaded (the grid index of the first sample,
     /// the forces), for its stress waves.
     stretches: [Vec<(usize, Vec<f64>)>; 2],
@@ -124,6 +127,7 @@ impl GirderWaves {
             half_trip: Look::of(Tap::new(0.5 * t, h)),
             ends: [end.clone(), end],
             n: 0,
+            struck: false,
             stretches: [Vec::new(), Vec::new()],
             body: BarBody {
                 length_m: girder.length_m,
@@ -148,6 +152,16 @@ impl GirderWaves {
 
     /// The known parts at the next step's end, from the forces now (`forces[0]` at the left end).
     pub fn predict(&mut self, forces: [f64; 2]) -> Predicted {
+        if !self.struck {
+            // What the look-ups below find in a girder at rest, forces zero.
+            for e in &mut self.ends {
+                (e.a_star, e.b_star, e.q_lag) = (0.0, 0.0, 0.0);
+            }
+            return Predicted {
+                left: 0.0,
+                right: 0.0,
+            };
+        }
         let mut own = [0.0; 2];
         let mut far = [0.0; 2];
         for (i, e) in self.ends.iter_mut().enumerate() {
@@ -166,6 +180,13 @@ impl GirderWaves {
 
     /// Takes the step with its new end forces.
     pub fn commit(&mut self, forces: [f64; 2]) {
+        self.struck |= forces != [0.0, 0.0];
+        if !self.struck {
+            // The rings would take zeros where they hold only zeros: a look-up relative to
+            // the newest sample reads the same without them.
+            self.n += 1;
+            return;
+        }
         for (i, e) in self.ends.iter_mut().enumerate() {
             e.a = e.a_star + self.wa[1] * forces[i];
             e.b = e.b_star + self.wb[1] * forces[i];

@@ -55,6 +55,9 @@ struct Frame {
     f_now: f64,
     /// Where the ground's acceleration breaks inside the step being taken.
     jump: Option<Jump>,
+    /// Each mode's state at the step's end without joint forces, as the prediction found it
+    /// (what a step that stays free commits).
+    free_end: [(f64, f64); 2],
 }
 
 /// A break in the ground's acceleration inside a step: a record sample (a kink), or where the
@@ -104,6 +107,7 @@ impl Frame {
             a_next: 0.0,
             f_now: 0.0,
             jump: None,
+            free_end: [(0.0, 0.0); 2],
         }
     }
 
@@ -143,10 +147,8 @@ impl Frame {
             // The forcing just after the start: the same joint force, the ground's right limit.
             self.g[k] += self.gamma[k] * (self.a_now - accel);
         }
-        let u = (0..2)
-            .map(|k| self.girder[k] * self.advance(k, 0.0, h).0)
-            .sum();
-        self.u_star = u;
+        self.free_end = [self.advance(0, 0.0, h), self.advance(1, 0.0, h)];
+        self.u_star = self.girder[0] * self.free_end[0].0 + self.girder[1] * self.free_end[1].0;
     }
 
     /// Mode k's state at the step's end with the net joint force `net_force` there.
@@ -178,6 +180,16 @@ impl Frame {
         }
         self.a_now = self.a_next;
         self.f_now = net_force;
+    }
+
+    /// Takes the step without joint forces: the state the prediction found.
+    fn commit_free(&mut self) {
+        for k in 0..2 {
+            (self.q[k], self.v[k]) = self.free_end[k];
+            self.g[k] = self.girder[k] * 0.0 - self.gamma[k] * self.a_next;
+        }
+        self.a_now = self.a_next;
+        self.f_now = 0.0;
     }
 
     /// A velocity jump of the girder by an impulse on it `since` seconds ago.
@@ -245,6 +257,11 @@ struct Run<'a> {
     contacts: Vec<RawContact>,
     energy: BridgeEnergy,
     contact_steps: usize,
+    /// The frames' damping and input powers now.
+    powers_now: (f64, f64),
+    /// Whether the joints' ground differences are older than the step's start (left so by free
+    /// steps).
+    ground_stale: bool,
 }
 
 impl<'a> Run<'a> {
@@ -306,6 +323,8 @@ impl<'a> Run<'a> {
             contacts: Vec::new(),
             energy,
             contact_steps: 0,
+            powers_now: (0.0, 0.0),
+            ground_stale: false,
         };
         run.compliances();
         run.supports();
@@ -314,6 +333,7 @@ impl<'a> Run<'a> {
         for j in 0..run.joints.len() {
             run.joints[j].ground_difference = run.ground_difference(j);
         }
+        run.powers_now = run.powers();
         run
     }
 
@@ -405,8 +425,14 @@ impl<'a> Run<'a> {
 
     /// Ground displacement difference across joint j now (left member's support minus right's).
     fn ground_difference(&self, j: usize) -> f64 {
+        self.ground_difference_in(&self.ground_now, j)
+    }
+
+    /// The same from a reading of the ground at every support.
+    fn ground_difference_in(&self, readings: &[GroundState], j: usize) -> f64 {
         let joint = &self.joints[j].joint;
-        self.member_end(joint.left, true).2 - self.member_end(joint.right, false).2
+        readings[self.support(joint.left, true)].displacement
+            - readings[self.support(joint.right, false)].displacement
     }
 
     /// The joints' overlaps, rates, openings and seats at time t (the ground's present).
@@ -548,7 +574,6 @@ impl Run<'_> {
 
     /// Keeps the state at the step's start for its bookkeeping.
     fn keep_before(&mut self) {
-        let (damping_power, input_power) = self.powers();
         let b = &mut self.before;
         b.forces.clear();
         b.forces.extend(self.joints.iter().map(|j| j.force));
@@ -558,19 +583,36 @@ impl Run<'_> {
         b.rates.extend(self.joints.iter().map(|j| j.rate));
         b.waves.clear();
         b.waves.extend_from_slice(&self.waves);
-        b.damping_power = damping_power;
-        b.input_power = input_power;
+        (b.damping_power, b.input_power) = self.powers_now;
     }
 
     /// One step from t0 = n h.
     fn step(&mut self, n: usize) {
         let h = self.h;
         let (t0, t1) = (n as f64 * h, (n + 1) as f64 * h);
-        self.keep_before();
-        self.predict_frames(t0, t1);
         let forces_act = !matches!(self.sc.contact, ContactModel::None | ContactModel::Stereo);
+        // A step from rest at every joint (no stereomechanical exchange pending) that closes
+        // none stays free: what the step's force solve and bookkeeping would find, without them.
+        let free_start =
+            self.sc.contact != ContactModel::Stereo && self.joints.iter().all(|js| js.force == 0.0);
+        self.predict_frames(t0, t1);
         if forces_act {
             self.predict_joints();
+        }
+        if free_start && (!forces_act || self.joints.iter().all(|js| js.k_star <= 0.0)) {
+            self.commit_free(t1);
+            return;
+        }
+        if self.ground_stale {
+            // The free steps before left the ground across each joint as it was; the step's
+            // work on it starts from its start.
+            for j in 0..self.joints.len() {
+                self.joints[j].ground_difference = self.ground_difference_in(&self.ground_then, j);
+            }
+            self.ground_stale = false;
+        }
+        self.keep_before();
+        if forces_act {
             self.solve_forces();
         }
         for j in 0..self.joints.len() {
@@ -590,10 +632,40 @@ impl Run<'_> {
         // The powers at the step's end are those the step arrived with: an exchange after it
         // is a jump whose loss the exchange counts itself.
         let powers = self.powers();
+        self.powers_now = powers;
         if self.sc.contact == ContactModel::Stereo {
             self.exchange(t1);
+            self.powers_now = self.powers();
         }
         self.account(powers, t0, t1);
+    }
+
+    /// Ends a step that no joint force acts in: the frames and girders take the states their
+    /// predictions found, and of the bookkeeping only the ledger's damping and input change
+    /// (every joint's work is zero, no contact starts); the ground across the joints, which
+    /// only a force's work reads, is brought up to date at the next step with a force.
+    fn commit_free(&mut self, t1: f64) {
+        for f in &mut self.frames {
+            f.commit_free();
+        }
+        for (i, g) in self.girders.iter_mut().enumerate() {
+            if let Some(g) = g {
+                g.commit([0.0, 0.0]);
+                let (s, b) = (g.own_compliance(), g.rigid_compliance());
+                let p = self.predicted[i];
+                self.waves[i] = [
+                    p[0] + (s - b) * 0.0 + b * 0.0,
+                    p[1] - b * 0.0 - (s - b) * 0.0,
+                ];
+            }
+        }
+        self.read_joints(t1);
+        let before = self.powers_now;
+        self.powers_now = self.powers();
+        let h = self.h;
+        self.energy.damping_j += 0.5 * h * (before.0 + self.powers_now.0);
+        self.energy.input_j += 0.5 * h * (before.1 + self.powers_now.1);
+        self.ground_stale = true;
     }
 
     /// Stereomechanics: every joint still approaching while overlapped reverses its rigid
