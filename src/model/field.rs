@@ -10,7 +10,7 @@
 //! arrival by exp(-tau / t_d), tau its travel time: then H(t) = F(t) + r H(t - T) with
 //! r = exp(-T / t_d), and each term above carries exp(-x / (c t_d)) or exp(-(2l - x) / (c t_d)).
 
-use super::history::{Tap, sample_at};
+use super::history::{Tap, sample_at, sample_at_unit};
 use super::ring::{Look, Ring};
 
 /// How a history is stored.
@@ -185,21 +185,32 @@ impl BarWaves {
         // attenuation of the last round-trip count folded back.
         let mut next = 0;
         let mut folds = (0.0, 1.0);
+        // Where the next stretch starts (its first sample), and the last sample of the one
+        // under way: kept as the stretch changes, not worked out for every sample.
+        let first_of = |i: usize, segments: &[HistorySegment]| {
+            segments.get(i).map_or(f64::INFINITY, |s| s.first as f64)
+        };
+        let mut next_first = stretches.map_or(f64::INFINITY, |(_, s)| first_of(0, s));
+        let mut last = 0.0;
         (0..n).map(move |k| {
             let Some((dt_s, segments)) = stretches else {
                 return self.history_at(k as f64 * dt);
             };
             let p = (k as f64 * dt) / dt_s;
-            while next < segments.len() && segments[next].first as f64 <= p {
-                next += 1;
+            if next_first <= p {
+                while next < segments.len() && segments[next].first as f64 <= p {
+                    next += 1;
+                }
+                next_first = first_of(next, segments);
+                let seg = &segments[next - 1];
+                last = (seg.first + seg.values.len()) as f64 - 1.0;
             }
             let Some(seg) = next.checked_sub(1).map(|i| &segments[i]) else {
                 return 0.0;
             };
-            let last = (seg.first + seg.values.len()) as f64 - 1.0;
             let (mut q, mut weight) = (p, 1.0);
             if p > last && round_steps > 0.0 {
-                let trips = ((p - last) / round_steps).ceil();
+                let trips = ceil_positive((p - last) / round_steps);
                 if folds.0 != trips {
                     folds = (trips, r.powi(trips as i32));
                 }
@@ -210,7 +221,8 @@ impl BarWaves {
             if local < 0.0 {
                 return 0.0;
             }
-            weight * sample_at(&seg.values, 1.0, local)
+            // sample_at with a unit step (its division by one left out: the same bits).
+            weight * sample_at_unit(&seg.values, local)
         })
     }
 
@@ -386,4 +398,12 @@ fn integrate_square_steps(times: &[f64], values: &[f64], a: f64, b: f64) -> f64 
         }
     }
     sum
+}
+
+/// ceil(x) for x > 0 (below 2^63): truncation, up by one where it cut something off; exactly
+/// what `f64::ceil` gives there, without a call to libm's (a grid's every sample takes one).
+#[inline]
+fn ceil_positive(x: f64) -> f64 {
+    let t = x as i64 as f64;
+    if t < x { t + 1.0 } else { t }
 }

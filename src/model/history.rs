@@ -319,12 +319,21 @@ pub fn sample_at(values: &[f64], dt_s: f64, t_s: f64) -> f64 {
     if values.is_empty() || t_s < 0.0 {
         return 0.0;
     }
-    let p = t_s / dt_s;
+    sample_at_unit(values, t_s / dt_s)
+}
+
+/// [`sample_at`] at the fractional sample index `p` (the time over the step).
+#[inline]
+pub fn sample_at_unit(values: &[f64], p: f64) -> f64 {
+    if values.is_empty() || p < 0.0 {
+        return 0.0;
+    }
     let n = values.len();
     if p >= (n - 1) as f64 {
         return values[n - 1];
     }
-    let j = p.floor() as isize;
+    // p >= 0 here, where truncation is the floor (without a call to libm's).
+    let j = p as isize;
     let x = p - j as f64;
     let at = |i: isize| {
         if i < 0 {

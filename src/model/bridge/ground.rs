@@ -16,6 +16,9 @@ pub struct Ground {
     pub baseline: Baseline,
     velocity: Vec<f64>,
     displacement: Vec<f64>,
+    /// The record's length and the round-off [`Ground::side`] allows at its ends [s].
+    end_s: f64,
+    edge_eps: f64,
 }
 
 /// Acceleration, velocity and displacement of the ground at one support and instant.
@@ -35,6 +38,8 @@ impl Ground {
         let (corrected, baseline) = motion.baseline_corrected();
         let (velocity, displacement) = corrected.integrated().unzip();
         Ground {
+            end_s: corrected.duration_s(),
+            edge_eps: 1e-9 * corrected.dt_s,
             corrected,
             baseline,
             velocity,
@@ -99,13 +104,31 @@ impl Ground {
 
     /// [`Ground::accel_after`] from the ground `now` at that instant and support (read once
     /// for every look at it).
+    #[inline]
     pub fn accel_after_from(&self, t_s: f64, delay_s: f64, now: &GroundState) -> f64 {
-        self.side(t_s - delay_s, true, false).unwrap_or(now.accel)
+        let t = t_s - delay_s;
+        if self.inside(t) {
+            return now.accel;
+        }
+        self.side(t, true, false).unwrap_or(now.accel)
     }
 
     /// [`Ground::accel_before`] from the ground `now` at that instant and support.
+    #[inline]
     pub fn accel_before_from(&self, t_s: f64, delay_s: f64, now: &GroundState) -> f64 {
-        self.side(t_s - delay_s, false, true).unwrap_or(now.accel)
+        let t = t_s - delay_s;
+        if self.inside(t) {
+            return now.accel;
+        }
+        self.side(t, false, true).unwrap_or(now.accel)
+    }
+
+    /// Whether `t` (time since the wave arrived) lies inside the record, clear of its ends by
+    /// more than [`Ground::side`]'s round-off: where `side` has nothing to say (the common
+    /// case, told by two comparisons).
+    #[inline]
+    fn inside(&self, t: f64) -> bool {
+        t > self.edge_eps && t < self.end_s - self.edge_eps
     }
 
     /// The acceleration just after `t_s` (its right limit): the record's first sample at the

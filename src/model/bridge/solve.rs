@@ -55,6 +55,8 @@ struct Frame {
     f_now: f64,
     /// Where the ground's acceleration breaks inside the step being taken.
     jump: Option<Jump>,
+    /// The index of the record sample the last step looked for (a ceiling kept).
+    sample: f64,
     /// Each mode's state at the step's end without joint forces, as the prediction found it
     /// (what a step that stays free commits).
     free_end: [(f64, f64); 2],
@@ -107,6 +109,7 @@ impl Frame {
             a_next: 0.0,
             f_now: 0.0,
             jump: None,
+            sample: f64::NAN,
             free_end: [(0.0, 0.0); 2],
         }
     }
@@ -201,10 +204,20 @@ impl Frame {
     }
 }
 
+/// One side of a joint, as a step reads it: the support whose ground it stands on, and the
+/// girder with the end of it at the joint (none for an abutment).
+#[derive(Debug, Clone, Copy)]
+struct Side {
+    support: usize,
+    girder: Option<(usize, usize)>,
+}
+
 /// One joint's state.
 #[derive(Debug, Clone)]
 struct JointState {
     joint: Joint,
+    /// Its left and right members' sides.
+    sides: [Side; 2],
     element: Element,
     force: f64,
     delta: f64,
@@ -262,6 +275,9 @@ struct Run<'a> {
     /// Whether the joints' ground differences are older than the step's start (left so by free
     /// steps).
     ground_stale: bool,
+    /// Every girder's displacement and velocity (relative to its ground) as the joints last
+    /// read them.
+    girder_now: Vec<(f64, f64)>,
 }
 
 impl<'a> Run<'a> {
@@ -277,6 +293,13 @@ impl<'a> Run<'a> {
             .joints()
             .into_iter()
             .map(|joint| JointState {
+                sides: [(joint.left, true), (joint.right, false)].map(|(member, on_left)| Side {
+                    support: support_of(sc.spans, member, on_left),
+                    girder: match member {
+                        Member::Girder(i) => Some((i, usize::from(on_left))),
+                        Member::Abutment => None,
+                    },
+                }),
                 element: Element::new(
                     sc.contact,
                     sc.joint_stiffness(&joint),
@@ -325,6 +348,7 @@ impl<'a> Run<'a> {
             contact_steps: 0,
             powers_now: (0.0, 0.0),
             ground_stale: false,
+            girder_now: Vec::new(),
         };
         run.compliances();
         run.supports();
@@ -358,13 +382,17 @@ impl<'a> Run<'a> {
     fn refresh_ground(&mut self, t: f64) {
         std::mem::swap(&mut self.ground_now, &mut self.ground_then);
         for s in 0..self.support_delay.len() {
-            let o = self.same_ground[s];
-            self.ground_now[s] = if o < s {
-                self.ground_now[o]
-            } else {
-                self.ground.at(t, self.support_delay[s])
-            };
+            // A support sharing another's ground is read there (see `same_ground`).
+            if self.same_ground[s] == s {
+                self.ground_now[s] = self.ground.at(t, self.support_delay[s]);
+            }
         }
+    }
+
+    /// Support s's ground in a reading of every support's (`ground_now`, `ground_then`).
+    #[inline(always)]
+    fn at_support<'r>(&self, readings: &'r [GroundState], s: usize) -> &'r GroundState {
+        &readings[self.same_ground[s]]
     }
 
     /// The joints' own compliances S and the girders' couplings p, fixed by the step.
@@ -390,17 +418,27 @@ impl<'a> Run<'a> {
     /// A member's support: its frame's, or an abutment's (the left one where the abutment is
     /// on a joint's left).
     fn support(&self, member: Member, on_left: bool) -> usize {
-        match member {
-            Member::Girder(i) => i + 1,
-            Member::Abutment if on_left => 0,
-            Member::Abutment => self.frames.len() + 1,
+        support_of(self.frames.len(), member, on_left)
+    }
+
+    /// A joint side's absolute displacement and rigid velocity now, from every girder's
+    /// (displacement, velocity) `girders`: what [`Run::member_end`] gives, term for term.
+    #[inline(always)]
+    fn side_now(&self, side: &Side, girders: &[(f64, f64)]) -> (f64, f64) {
+        let g = self.at_support(&self.ground_now, side.support);
+        match side.girder {
+            None => (g.displacement, g.velocity),
+            Some((i, end)) => (
+                g.displacement + girders[i].0 + self.waves[i][end],
+                g.velocity + girders[i].1,
+            ),
         }
     }
 
     /// A member's end at a joint now: (absolute displacement, rigid velocity, its ground's
     /// displacement).
     fn member_end(&self, member: Member, on_left: bool) -> (f64, f64, f64) {
-        let g = self.ground_now[self.support(member, on_left)];
+        let g = *self.at_support(&self.ground_now, self.support(member, on_left));
         match member {
             Member::Abutment => (g.displacement, g.velocity, g.displacement),
             Member::Girder(i) => {
@@ -431,15 +469,24 @@ impl<'a> Run<'a> {
     /// The same from a reading of the ground at every support.
     fn ground_difference_in(&self, readings: &[GroundState], j: usize) -> f64 {
         let joint = &self.joints[j].joint;
-        readings[self.support(joint.left, true)].displacement
-            - readings[self.support(joint.right, false)].displacement
+        self.at_support(readings, self.support(joint.left, true))
+            .displacement
+            - self
+                .at_support(readings, self.support(joint.right, false))
+                .displacement
     }
 
     /// The joints' overlaps, rates, openings and seats at time t (the ground's present).
     fn read_joints(&mut self, t: f64) {
+        let mut girders = std::mem::take(&mut self.girder_now);
+        girders.clear();
+        girders.extend(self.frames.iter().map(|f| (f.girder_u(), f.girder_v())));
+        let seat = self.sc.seat_length_m;
         for j in 0..self.joints.len() {
-            let (closing, rate) = self.closing(j);
-            let seat = self.sc.seat_length_m;
+            let [left, right] = self.joints[j].sides;
+            let (xl, vl) = self.side_now(&left, &girders);
+            let (xr, vr) = self.side_now(&right, &girders);
+            let (closing, rate) = (xl - xr, vl - vr);
             let js = &mut self.joints[j];
             js.delta = closing - js.joint.gap_m;
             js.rate = rate;
@@ -449,6 +496,7 @@ impl<'a> Run<'a> {
                 js.unseated = Some(t);
             }
         }
+        self.girder_now = girders;
     }
 
     /// The known parts of every joint's overlap at the step's end (the frames predicted, the
@@ -462,16 +510,14 @@ impl<'a> Run<'a> {
             }
         }
         for j in 0..self.joints.len() {
-            let joint = self.joints[j].joint;
-            let mut k = -joint.gap_m;
-            for (member, on_left, sign) in [(joint.left, true, 1.0), (joint.right, false, -1.0)] {
-                let ground = self.ground_now[self.support(member, on_left)].displacement;
+            let js = &self.joints[j];
+            let mut k = -js.joint.gap_m;
+            for (side, sign) in js.sides.iter().zip([1.0, -1.0]) {
+                let ground = self.at_support(&self.ground_now, side.support).displacement;
                 k += sign
-                    * match member {
-                        Member::Abutment => ground,
-                        Member::Girder(i) => {
-                            ground + self.frames[i].u_star + self.predicted[i][usize::from(on_left)]
-                        }
+                    * match side.girder {
+                        None => ground,
+                        Some((i, end)) => ground + self.frames[i].u_star + self.predicted[i][end],
                     };
             }
             self.joints[j].k_star = k;
@@ -488,14 +534,25 @@ impl<'a> Run<'a> {
         self.refresh_ground(t1);
         for (i, f) in self.frames.iter_mut().enumerate() {
             let accel = [
-                self.ground
-                    .accel_after_from(t0, f.delay_s, &self.ground_then[i + 1]),
-                self.ground
-                    .accel_before_from(t1, f.delay_s, &self.ground_now[i + 1]),
+                self.ground.accel_after_from(
+                    t0,
+                    f.delay_s,
+                    &self.ground_then[self.same_ground[i + 1]],
+                ),
+                self.ground.accel_before_from(
+                    t1,
+                    f.delay_s,
+                    &self.ground_now[self.same_ground[i + 1]],
+                ),
             ];
             // The record's samples are its acceleration's kinks, and its first and last are
             // where it jumps from and back to rest: at most one lies inside a step (h <= dt).
-            let m = ((t0 + eps - f.delay_s) / dt).ceil().max(0.0);
+            let x = (t0 + eps - f.delay_s) / dt;
+            // ceil(x), from the last step's where x has not passed it (a call saved a step).
+            if !(x <= f.sample && x > f.sample - 1.0) {
+                f.sample = x.ceil();
+            }
+            let m = f.sample.max(0.0);
             let t = f.delay_s + m * dt;
             let jump = (m <= last && t > t0 + eps && t < t1 - eps).then(|| Jump {
                 at: t - t0,
@@ -567,7 +624,7 @@ impl Run<'_> {
             .iter()
             .enumerate()
             .fold((0.0, 0.0), |(d, i), (k, f)| {
-                let (pd, pi) = f.powers(self.ground_now[k + 1].accel);
+                let (pd, pi) = f.powers(self.at_support(&self.ground_now, k + 1).accel);
                 (d + pd, i + pi)
             })
     }
@@ -790,6 +847,16 @@ impl Run<'_> {
     }
 }
 
+/// The support of a member of a bridge of `spans` spans: its frame's, or an abutment's (the
+/// left one where the abutment is on a joint's left).
+fn support_of(spans: usize, member: Member, on_left: bool) -> usize {
+    match member {
+        Member::Girder(i) => i + 1,
+        Member::Abutment if on_left => 0,
+        Member::Abutment => spans + 1,
+    }
+}
+
 /// The histories, kept every `stride` steps.
 #[derive(Clone, Default)]
 struct Histories {
@@ -822,7 +889,8 @@ impl Histories {
         for (i, f) in run.frames.iter().enumerate() {
             self.girder[i].push(f.girder_u());
             self.pier[i].push(f.pier_u());
-            self.absolute[i].push(f.girder_u() + run.ground_now[i + 1].displacement);
+            self.absolute[i]
+                .push(f.girder_u() + run.at_support(&run.ground_now, i + 1).displacement);
         }
     }
 }
@@ -837,11 +905,15 @@ struct Peaks {
 
 impl Peaks {
     fn read(&mut self, frames: &[Frame]) {
-        for (i, f) in frames.iter().enumerate() {
+        let peaks = self
+            .girder
+            .iter_mut()
+            .zip(self.pier.iter_mut().zip(self.bearing.iter_mut()));
+        for (f, (girder, (pier, bearing))) in frames.iter().zip(peaks) {
             let (g, p) = (f.girder_u(), f.pier_u());
-            self.girder[i] = self.girder[i].max(g.abs());
-            self.pier[i] = self.pier[i].max(p.abs());
-            self.bearing[i] = self.bearing[i].max((g - p).abs());
+            *girder = girder.max(g.abs());
+            *pier = pier.max(p.abs());
+            *bearing = bearing.max((g - p).abs());
         }
     }
 }
@@ -939,11 +1011,13 @@ fn run_publishing(
         if n % stride == 0 || n == steps {
             hist.push(&run, n as f64 * h);
         }
-        if !run
+        // x * 0 is zero for every finite x and NaN otherwise: one sum tells them all apart.
+        let not_finite: f64 = run
             .frames
             .iter()
-            .all(|f| f.q.iter().chain(&f.v).all(|x| x.is_finite()))
-        {
+            .map(|f| (f.q[0] * 0.0 + f.q[1] * 0.0) + (f.v[0] * 0.0 + f.v[1] * 0.0))
+            .sum();
+        if not_finite != 0.0 {
             return Err(SolveError::Diverged {
                 at_s: n as f64 * h,
                 why: "the frames' motion is no longer finite; lower solver.max_step or the contact stiffness".into(),
