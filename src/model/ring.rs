@@ -82,7 +82,7 @@ impl Ring {
     }
 
     /// The look-up's part from stored samples, for the sample about to be pushed.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn known(&self, l: &Look) -> f64 {
         let base = self.next as isize + l.first;
         let w = &l.w;

@@ -155,6 +155,7 @@ impl Frame {
     }
 
     /// Mode k's state at the step's end with the net joint force `net_force` there.
+    #[inline(always)]
     fn advance(&self, k: usize, net_force: f64, h: f64) -> (f64, f64) {
         let g1 = self.girder[k] * net_force - self.gamma[k] * self.a_next;
         let Some(j) = self.jump else {
