@@ -12,7 +12,7 @@ use super::export::{Exporter, ShownPlot};
 use super::later::{Later, StageTimes, pending_note};
 use super::params::Fields;
 use super::playback::Playback;
-use super::series::decimate;
+use super::series::for_plot;
 use super::worker::{Landed, SolveSlot};
 use crate::io::bridge_settings::BridgeSetup;
 use crate::model::bridge::{BridgeErrorEstimate, BridgeResult};
@@ -403,9 +403,13 @@ impl BridgeScene {
             .filter(|&j| self.joint.is_none_or(|k| k == j))
             .collect();
         let named = |j: usize| format!("joint {j}");
+        let (shown, px) = (x_range(&self.shown_forces), ui.available_width());
         let forces: Vec<(String, Vec<[f64; 2]>)> = joints
             .iter()
-            .map(|&j| (named(j), decimate(&r.time_s, &r.joint_force_n[j], 1e-6)))
+            .map(|&j| {
+                let f = for_plot(&r.time_s, &r.joint_force_n[j], 1e-6, shown, px);
+                (named(j), f)
+            })
             .collect();
         let zoom = self.zoom.take();
         let top = r.max_pounding_force_n.max(1.0) * 1e-6;
@@ -462,12 +466,13 @@ impl BridgeScene {
         let Some(s) = &self.shown.solved else { return };
         let (r, seat) = (&s.drawing.result, s.drawing.setup.scenario.seat_length_m);
         let width = super::lecture::line_width(ui);
+        let (shown, px) = (x_range(&self.shown_openings), ui.available_width());
         let openings: Vec<(String, Vec<[f64; 2]>)> = joints
             .iter()
             .map(|&j| {
                 (
                     format!("joint {j}"),
-                    decimate(&r.time_s, &r.joint_opening_m[j], 1e3),
+                    for_plot(&r.time_s, &r.joint_opening_m[j], 1e3, shown, px),
                 )
             })
             .collect();
@@ -507,11 +512,12 @@ impl BridgeScene {
         let Some(s) = &self.shown.solved else { return };
         let r = &s.drawing.result;
         let width = super::lecture::line_width(ui);
+        let (shown, px) = (x_range(&self.shown_girders), ui.available_width());
         let mut lines: Vec<(String, Vec<[f64; 2]>)> = (0..r.girder_displacement_m.len())
             .map(|i| {
                 (
                     format!("girder {}", i + 1),
-                    decimate(&r.time_s, &r.girder_displacement_m[i], 1e3),
+                    for_plot(&r.time_s, &r.girder_displacement_m[i], 1e3, shown, px),
                 )
             })
             .collect();
@@ -521,7 +527,7 @@ impl BridgeScene {
             for i in 0..spans {
                 lines.push((
                     format!("girder {}, no pounding", i + 1),
-                    decimate(&b.time_s, &b.girder_displacement_m[i], 1e3),
+                    for_plot(&b.time_s, &b.girder_displacement_m[i], 1e3, shown, px),
                 ));
             }
         }
@@ -678,3 +684,8 @@ impl BridgeScene {
 #[cfg(test)]
 #[path = "bridge_scene_tests.rs"]
 mod tests;
+
+/// The x range a plot showed last frame.
+fn x_range(plot: &ShownPlot) -> Option<(f64, f64)> {
+    plot.bounds.map(|(min, max)| (min[0], max[0]))
+}
