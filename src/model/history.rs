@@ -335,6 +335,25 @@ pub fn sample_at_unit(values: &[f64], p: f64) -> f64 {
     // p >= 0 here, where truncation is the floor (without a call to libm's).
     let j = p as isize;
     let x = p - j as f64;
+    // Inside the series the four samples are read as one slice (a bounds check, not four);
+    // the weights and their sum are the same below.
+    let (a, b, c, d) = if j >= 1 && (j as usize) + 2 < n {
+        let s = &values[j as usize - 1..j as usize + 3];
+        (s[0], s[1], s[2], s[3])
+    } else {
+        sample_edges(values, j)
+    };
+    // Cubic through (-1, a), (0, b), (1, c), (2, d) evaluated at x.
+    let wa = -x * (x - 1.0) * (x - 2.0) / 6.0;
+    let wb = (x + 1.0) * (x - 1.0) * (x - 2.0) / 2.0;
+    let wc = -(x + 1.0) * x * (x - 2.0) / 2.0;
+    let wd = (x + 1.0) * x * (x - 1.0) / 6.0;
+    wa * a + wb * b + wc * c + wd * d
+}
+
+/// The four samples around index j near the series' ends: zero before it, the last after it.
+fn sample_edges(values: &[f64], j: isize) -> (f64, f64, f64, f64) {
+    let n = values.len();
     let at = |i: isize| {
         if i < 0 {
             0.0
@@ -342,13 +361,7 @@ pub fn sample_at_unit(values: &[f64], p: f64) -> f64 {
             values[(i as usize).min(n - 1)]
         }
     };
-    let (a, b, c, d) = (at(j - 1), at(j), at(j + 1), at(j + 2));
-    // Cubic through (-1, a), (0, b), (1, c), (2, d) evaluated at x.
-    let wa = -x * (x - 1.0) * (x - 2.0) / 6.0;
-    let wb = (x + 1.0) * (x - 1.0) * (x - 2.0) / 2.0;
-    let wc = -(x + 1.0) * x * (x - 2.0) / 2.0;
-    let wd = (x + 1.0) * x * (x - 1.0) / 6.0;
-    wa * a + wb * b + wc * c + wd * d
+    (at(j - 1), at(j), at(j + 1), at(j + 2))
 }
 
 #[cfg(test)]
