@@ -12,7 +12,7 @@ use super::export::{Exporter, ShownPlot};
 use super::later::{Later, StageTimes, pending_note};
 use super::params::Fields;
 use super::playback::Playback;
-use super::series::for_plot;
+use super::series::{decimate, for_plot};
 use super::worker::{Landed, SolveSlot};
 use crate::io::bridge_settings::BridgeSetup;
 use crate::model::bridge::{BridgeErrorEstimate, BridgeResult};
@@ -403,15 +403,18 @@ impl BridgeScene {
             .filter(|&j| self.joint.is_none_or(|k| k == j))
             .collect();
         let named = |j: usize| format!("joint {j}");
-        let (shown, px) = (x_range(&self.shown_forces), ui.available_width());
+        let zoom = self.zoom.take();
+        // A zoom onto an impact is drawn at the samples it shows from its first frame.
+        let shown = zoom.or(x_range(&self.shown_forces));
+        let px = ui.available_width();
+        let drawn: Vec<Vec<[f64; 2]>> = joints
+            .iter()
+            .map(|&j| for_plot(&r.time_s, &r.joint_force_n[j], 1e-6, shown, px))
+            .collect();
         let forces: Vec<(String, Vec<[f64; 2]>)> = joints
             .iter()
-            .map(|&j| {
-                let f = for_plot(&r.time_s, &r.joint_force_n[j], 1e-6, shown, px);
-                (named(j), f)
-            })
+            .map(|&j| (named(j), decimate(&r.time_s, &r.joint_force_n[j], 1e-6)))
             .collect();
-        let zoom = self.zoom.take();
         let top = r.max_pounding_force_n.max(1.0) * 1e-6;
         let force_plot = Plot::new("bridge-force")
             .height(h)
@@ -419,8 +422,8 @@ impl BridgeScene {
             .x_axis_label("time [s]")
             .y_axis_label("joint force [MN]")
             .show(ui, |p| {
-                for (name, pts) in &forces {
-                    p.line(Line::new(name.as_str(), pts.clone()).width(width));
+                for ((name, _), pts) in forces.iter().zip(drawn) {
+                    p.line(Line::new(name.as_str(), pts).width(width));
                 }
                 p.vline(VLine::new("t", t));
                 if let Some((a, b)) = zoom {
@@ -467,12 +470,16 @@ impl BridgeScene {
         let (r, seat) = (&s.drawing.result, s.drawing.setup.scenario.seat_length_m);
         let width = super::lecture::line_width(ui);
         let (shown, px) = (x_range(&self.shown_openings), ui.available_width());
+        let drawn: Vec<Vec<[f64; 2]>> = joints
+            .iter()
+            .map(|&j| for_plot(&r.time_s, &r.joint_opening_m[j], 1e3, shown, px))
+            .collect();
         let openings: Vec<(String, Vec<[f64; 2]>)> = joints
             .iter()
             .map(|&j| {
                 (
                     format!("joint {j}"),
-                    for_plot(&r.time_s, &r.joint_opening_m[j], 1e3, shown, px),
+                    decimate(&r.time_s, &r.joint_opening_m[j], 1e3),
                 )
             })
             .collect();
@@ -482,8 +489,8 @@ impl BridgeScene {
             .x_axis_label("time [s]")
             .y_axis_label("joint opening [mm]")
             .show(ui, |p| {
-                for (name, pts) in &openings {
-                    p.line(Line::new(name.as_str(), pts.clone()).width(width));
+                for ((name, _), pts) in openings.iter().zip(drawn) {
+                    p.line(Line::new(name.as_str(), pts).width(width));
                 }
                 p.hline(
                     HLine::new("seat length", seat * 1e3)
@@ -513,32 +520,36 @@ impl BridgeScene {
         let r = &s.drawing.result;
         let width = super::lecture::line_width(ui);
         let (shown, px) = (x_range(&self.shown_girders), ui.available_width());
-        let mut lines: Vec<(String, Vec<[f64; 2]>)> = (0..r.girder_displacement_m.len())
+        let spans = r.girder_displacement_m.len();
+        let mut sources: Vec<(String, &[f64], &[f64])> = (0..spans)
             .map(|i| {
-                (
-                    format!("girder {}", i + 1),
-                    for_plot(&r.time_s, &r.girder_displacement_m[i], 1e3, shown, px),
-                )
+                let y = &r.girder_displacement_m[i];
+                (format!("girder {}", i + 1), &r.time_s[..], &y[..])
             })
             .collect();
-        let spans = lines.len();
         // The run without pounding, dashed, once it has landed.
         if let Some(b) = s.baseline.ready() {
             for i in 0..spans {
-                lines.push((
-                    format!("girder {}, no pounding", i + 1),
-                    for_plot(&b.time_s, &b.girder_displacement_m[i], 1e3, shown, px),
-                ));
+                let y = &b.girder_displacement_m[i];
+                sources.push((format!("girder {}, no pounding", i + 1), &b.time_s, y));
             }
         }
+        let drawn: Vec<Vec<[f64; 2]>> = sources
+            .iter()
+            .map(|(_, time, y)| for_plot(time, y, 1e3, shown, px))
+            .collect();
+        let lines: Vec<(String, Vec<[f64; 2]>)> = sources
+            .into_iter()
+            .map(|(name, time, y)| (name, decimate(time, y, 1e3)))
+            .collect();
         let plot = Plot::new("bridge-girders")
             .height(h)
             .legend(Legend::default())
             .x_axis_label("time [s]")
             .y_axis_label("girder displacement [mm]")
             .show(ui, |p| {
-                for (k, (name, pts)) in lines.iter().enumerate() {
-                    let l = Line::new(name.as_str(), pts.clone()).width(width);
+                for (k, ((name, _), pts)) in lines.iter().zip(drawn).enumerate() {
+                    let l = Line::new(name.as_str(), pts).width(width);
                     p.line(if k >= spans {
                         l.style(egui_plot::LineStyle::dashed_loose())
                     } else {

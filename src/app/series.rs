@@ -55,7 +55,8 @@ pub fn decimate_to(time: &[f64], y: &[f64], scale: f64, buckets: usize) -> Vec<[
 /// over the part of the run it showed last frame (`shown`, its x range; the whole run if none),
 /// at least 1 000 and at most 10 000 over the run. Zoomed out, a long run's line is drawn
 /// from a few thousand points instead of every sample (a frame's tessellation and the
-/// rasterizer's triangles), and zooming in brings the samples back.
+/// rasterizer's triangles), and zooming in brings the samples back. What a plot exports stays
+/// [`decimate`]'s: the samples.
 pub fn for_plot(
     time: &[f64],
     y: &[f64],

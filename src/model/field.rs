@@ -202,8 +202,9 @@ impl BarWaves {
                     next += 1;
                 }
                 next_first = first_of(next, segments);
-                let seg = &segments[next - 1];
-                last = (seg.first + seg.values.len()) as f64 - 1.0;
+                if let Some(seg) = next.checked_sub(1).map(|i| &segments[i]) {
+                    last = (seg.first + seg.values.len()) as f64 - 1.0;
+                }
             }
             let Some(seg) = next.checked_sub(1).map(|i| &segments[i]) else {
                 return 0.0;

@@ -233,7 +233,8 @@ struct JointState {
     /// Integrals for the ledger: F d(delta), F d(ground difference).
     work_delta: f64,
     work_ground: f64,
-    /// The ground displacement across the joint now (left member's support less right's).
+    /// The ground displacement across the joint (left member's support less right's) at the
+    /// last step a force acted in, which is all its work reads (see `Run::ground_stale`).
     ground_difference: f64,
     /// The known part of the overlap at the step's end, and its compliance to the joint's own
     /// force (the same every step).
@@ -253,10 +254,12 @@ struct Run<'a> {
     joints: Vec<JointState>,
     /// The supports' delays: the left abutment, each frame, the right abutment.
     support_delay: Vec<f64>,
-    /// For each support, the first support with the same delay (whose ground it shares).
+    /// For each support, the first support with the same delay (whose ground it shares): the
+    /// only way into `ground_now` and `ground_then` (`Run::at_support`).
     same_ground: Vec<usize>,
-    /// The ground at every support at the run's present instant, and at the reading before
-    /// (a step's start, once the step has read its end).
+    /// The ground at the run's present instant, and at the reading before (a step's start,
+    /// once the step has read its end), by support; only the first support of each delay is
+    /// read (the others' entries stay unwritten).
     ground_now: Vec<GroundState>,
     ground_then: Vec<GroundState>,
     /// The girders' end waves known before the step's new forces.
@@ -276,8 +279,8 @@ struct Run<'a> {
     /// Whether the joints' ground differences are older than the step's start (left so by free
     /// steps).
     ground_stale: bool,
-    /// Every girder's displacement and velocity (relative to its ground) as the joints last
-    /// read them.
+    /// A buffer kept between steps: every girder's displacement and velocity (relative to its
+    /// ground) for the joints' reading.
     girder_now: Vec<(f64, f64)>,
 }
 
@@ -378,8 +381,8 @@ impl<'a> Run<'a> {
         self.ground_then = self.ground_now.clone();
     }
 
-    /// The ground at every support at time t: what every later look at the ground reads (the
-    /// reading it replaces kept as the one before).
+    /// The ground at time t at the first support of each delay: what every later look at the
+    /// ground reads (the reading it replaces kept as the one before).
     fn refresh_ground(&mut self, t: f64) {
         std::mem::swap(&mut self.ground_now, &mut self.ground_then);
         for s in 0..self.support_delay.len() {
@@ -630,7 +633,8 @@ impl Run<'_> {
             })
     }
 
-    /// Keeps the state at the step's start for its bookkeeping.
+    /// Keeps the state at the step's start for its bookkeeping. It runs after the step has
+    /// read the ground at its end: the powers at its start are the ones the last step left.
     fn keep_before(&mut self) {
         let b = &mut self.before;
         b.forces.clear();
