@@ -162,6 +162,14 @@ impl<I: Send + 'static, O: Send + 'static> Worker<I, O> {
         let _ = self.to_worker.send((self.next_id, input, control));
     }
 
+    /// Asks the job under way to wait before its later stages until it is cancelled
+    /// ([`Control::pause_after_first`]).
+    pub fn pause_after_first(&self) {
+        if let Some((_, _, control)) = &self.pending {
+            control.pause_after_first();
+        }
+    }
+
     /// Asks the solve under way to stop; its outcome (a cancellation) still arrives.
     pub fn cancel(&self) {
         if let Some((_, _, control)) = &self.pending {
@@ -278,6 +286,9 @@ impl<I: Send + 'static, O: Send + 'static> SolveSlot<I, O> {
         match self.sent {
             Some((at, false)) if self.worker.busy() && now - at < self.hold() => {
                 self.queued = Some((input, now));
+                // Its checks after the run would be cancelled when the change goes: they wait
+                // instead, leaving the machine to the frames until then.
+                self.worker.pause_after_first();
             }
             _ => self.send(input, now),
         }
@@ -600,6 +611,45 @@ mod tests {
         // runs through.
         assert_eq!(drain_runs(&mut slot), [11, 21, 29]);
         assert_eq!(slot.runs, 3);
+    }
+
+    #[test]
+    fn a_job_whose_run_a_change_waits_for_does_no_checks_before_that_change_goes() {
+        let (told, checks) = channel::<(u64, bool)>();
+        let (go, gate) = channel::<()>();
+        let gate = std::sync::Mutex::new(gate);
+        // After its run a job starts its checks as the scenes' do (a later stage), and says
+        // whether it was cancelled by then: the checks of a run a change waited for would
+        // only be thrown away. Request 1 gives its run once the change is held.
+        let mut slot = SolveSlot::staged(
+            move |n: u64, control: &Control, stages: &Stages<u64>| {
+                if n == 0 {
+                    std::thread::sleep(WARM_UP);
+                }
+                if n == 1 {
+                    let gate = gate.lock().expect("one job at a time");
+                    gate.recv_timeout(Duration::from_secs(60))
+                        .expect("the test says go");
+                }
+                stages.send(10 * n + 1);
+                control.stage(1, 2);
+                told.send((n, control.cancelled()))
+                    .expect("the test listens");
+                10 * n + 9
+            },
+            || {},
+        );
+        slot.hold_at_most = Duration::from_secs(3600);
+        slot.request(0);
+        assert_eq!(drain_runs(&mut slot), [1, 9]);
+        slot.request(1);
+        slot.request(2);
+        go.send(()).expect("request 1 waits");
+        assert_eq!(drain_runs(&mut slot), [11, 21, 29]);
+        let told: Vec<(u64, bool)> = checks.try_iter().collect();
+        // Request 0 ran its checks (nothing waited for it), request 1 only once cancelled by
+        // request 2, which ran them.
+        assert_eq!(told, [(0, false), (1, true), (2, false)]);
     }
 
     #[test]

@@ -12,6 +12,10 @@ use std::sync::atomic::{AtomicBool, AtomicU32, AtomicUsize, Ordering};
 /// How many steps a solver loop may take between two looks at its [`Control`].
 pub const CHECK_EVERY: usize = 4096;
 
+/// The longest a paused job waits before a later stage, unless told otherwise: longer than a
+/// window holds a change for a run (a second), so the change always decides first.
+pub const PAUSE_LIMIT_MS: u32 = 3000;
+
 /// A cancel flag and the fraction done, shared between a solve and its caller.
 #[derive(Debug, Default)]
 pub struct Control {
@@ -28,6 +32,10 @@ pub struct Control {
     /// A job of many solves: how many it planned and how many are done.
     jobs_total: AtomicUsize,
     jobs_done: AtomicUsize,
+    /// Whether the job's later stages wait for a cancel before they start (its first result is
+    /// all that is wanted of it), and for at most how many milliseconds.
+    pause_after_first: AtomicBool,
+    pause_limit_ms: AtomicU32,
 }
 
 static NEVER: Control = Control::new();
@@ -49,6 +57,8 @@ impl Control {
             stop_at_look: AtomicU32::new(0),
             jobs_total: AtomicUsize::new(0),
             jobs_done: AtomicUsize::new(0),
+            pause_after_first: AtomicBool::new(false),
+            pause_limit_ms: AtomicU32::new(PAUSE_LIMIT_MS),
         }
     }
 
@@ -77,12 +87,45 @@ impl Control {
     }
 
     /// The solves that follow are part `stage` (from 0) of `stages` equal parts of one job:
-    /// their fractions map into that part of the whole.
+    /// their fractions map into that part of the whole. A later part (`stage` above 0) of a
+    /// job asked to [pause after its first](Control::pause_after_first) waits here.
     pub fn stage(&self, stage: u32, stages: u32) {
         if !std::ptr::eq(self, &NEVER) {
             self.stages.store(stages.max(1), Ordering::Relaxed);
             self.stage
                 .store(stage.min(stages.max(1) - 1), Ordering::Relaxed);
+            if stage > 0 {
+                self.wait_if_paused();
+            }
+        }
+    }
+
+    /// Asks a job of stages to wait before each later stage until it is cancelled (at most
+    /// a few seconds): the window asks it of a job whose first result a newer change waits
+    /// for, whose checks that change will cancel. Waiting, they leave the machine to the
+    /// drawing instead of doing work that is thrown away.
+    pub fn pause_after_first(&self) {
+        if !std::ptr::eq(self, &NEVER) {
+            self.pause_after_first.store(true, Ordering::Relaxed);
+        }
+    }
+
+    /// The longest a paused stage waits before it goes on anyway [ms].
+    pub fn set_pause_limit_ms(&self, ms: u32) {
+        self.pause_limit_ms.store(ms, Ordering::Relaxed);
+    }
+
+    /// Waits, if paused, until cancelled or the limit runs out.
+    fn wait_if_paused(&self) {
+        if !self.pause_after_first.load(Ordering::Relaxed) {
+            return;
+        }
+        let start = std::time::Instant::now();
+        let limit = std::time::Duration::from_millis(u64::from(
+            self.pause_limit_ms.load(Ordering::Relaxed),
+        ));
+        while !self.cancelled() && start.elapsed() < limit {
+            std::thread::sleep(std::time::Duration::from_millis(1));
         }
     }
 
@@ -173,5 +216,39 @@ mod tests {
         Control::never().plan(7);
         Control::never().tick();
         assert_eq!((Control::never().done(), Control::never().total()), (0, 0));
+    }
+
+    #[test]
+    fn a_paused_job_waits_before_its_later_stages_until_it_is_cancelled() {
+        use std::sync::Arc;
+        let c = Arc::new(Control::new());
+        // Unpaused, and paused in its first stage: nothing waits.
+        c.stage(1, 3);
+        c.pause_after_first();
+        c.stage(0, 3);
+        assert_eq!(c.report(0.5), Ok(()));
+        // A limit no scheduling reaches: the wait below ends by the cancel alone.
+        c.set_pause_limit_ms(600_000);
+        let said = Arc::new(AtomicBool::new(false));
+        let canceller = {
+            let (c, said) = (c.clone(), said.clone());
+            std::thread::spawn(move || {
+                said.store(true, Ordering::SeqCst);
+                c.cancel();
+            })
+        };
+        c.stage(1, 3);
+        assert!(
+            said.load(Ordering::SeqCst),
+            "the stage went on before the cancel"
+        );
+        assert_eq!(c.report(0.0), Err(Cancelled));
+        canceller.join().unwrap();
+        // With a limit, a pause nobody cancels ends by itself.
+        let c = Control::new();
+        c.pause_after_first();
+        c.set_pause_limit_ms(5);
+        c.stage(2, 3);
+        assert_eq!(c.report(0.0), Ok(()));
     }
 }
