@@ -12,7 +12,7 @@ use super::export::{Exporter, ShownPlot};
 use super::later::{Later, StageTimes, pending_note};
 use super::params::Fields;
 use super::playback::Playback;
-use super::series::{decimate, for_plot};
+use super::series::plot_lines;
 use super::worker::{Landed, SolveSlot};
 use crate::io::bridge_settings::BridgeSetup;
 use crate::model::bridge::{BridgeErrorEstimate, BridgeResult};
@@ -407,14 +407,11 @@ impl BridgeScene {
         // A zoom onto an impact is drawn at the samples it shows from its first frame.
         let shown = zoom.or(x_range(&self.shown_forces));
         let px = ui.available_width();
-        let drawn: Vec<Vec<[f64; 2]>> = joints
+        let lines = joints
             .iter()
-            .map(|&j| for_plot(&r.time_s, &r.joint_force_n[j], 1e-6, shown, px))
+            .map(|&j| (named(j), &r.time_s[..], &r.joint_force_n[j][..]))
             .collect();
-        let forces: Vec<(String, Vec<[f64; 2]>)> = joints
-            .iter()
-            .map(|&j| (named(j), decimate(&r.time_s, &r.joint_force_n[j], 1e-6)))
-            .collect();
+        let (forces, drawn) = plot_lines(lines, 1e-6, shown, px);
         let top = r.max_pounding_force_n.max(1.0) * 1e-6;
         let force_plot = Plot::new("bridge-force")
             .height(h)
@@ -470,19 +467,17 @@ impl BridgeScene {
         let (r, seat) = (&s.drawing.result, s.drawing.setup.scenario.seat_length_m);
         let width = super::lecture::line_width(ui);
         let (shown, px) = (x_range(&self.shown_openings), ui.available_width());
-        let drawn: Vec<Vec<[f64; 2]>> = joints
-            .iter()
-            .map(|&j| for_plot(&r.time_s, &r.joint_opening_m[j], 1e3, shown, px))
-            .collect();
-        let openings: Vec<(String, Vec<[f64; 2]>)> = joints
+        let lines = joints
             .iter()
             .map(|&j| {
                 (
                     format!("joint {j}"),
-                    decimate(&r.time_s, &r.joint_opening_m[j], 1e3),
+                    &r.time_s[..],
+                    &r.joint_opening_m[j][..],
                 )
             })
             .collect();
+        let (openings, drawn) = plot_lines(lines, 1e3, shown, px);
         let plot = Plot::new("bridge-openings")
             .height(h)
             .legend(Legend::default())
@@ -534,14 +529,7 @@ impl BridgeScene {
                 sources.push((format!("girder {}, no pounding", i + 1), &b.time_s, y));
             }
         }
-        let drawn: Vec<Vec<[f64; 2]>> = sources
-            .iter()
-            .map(|(_, time, y)| for_plot(time, y, 1e3, shown, px))
-            .collect();
-        let lines: Vec<(String, Vec<[f64; 2]>)> = sources
-            .into_iter()
-            .map(|(name, time, y)| (name, decimate(time, y, 1e3)))
-            .collect();
+        let (lines, drawn) = plot_lines(sources, 1e3, shown, px);
         let plot = Plot::new("bridge-girders")
             .height(h)
             .legend(Legend::default())

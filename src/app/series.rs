@@ -76,6 +76,29 @@ pub fn for_plot(
     decimate_to(time, y, scale, buckets.clamp(1_000.0, 10_000.0) as usize)
 }
 
+/// A plot's line as it keeps it: its name and its points.
+pub type NamedLine = (String, Vec<[f64; 2]>);
+
+/// Named lines of a plot (name, times, values), scaled by `scale`: what the plot keeps to export
+/// ([`decimate`]: the samples) and what it draws this frame ([`for_plot`] over the x range it
+/// showed last, `shown`, `width_px` wide).
+pub fn plot_lines(
+    lines: Vec<(String, &[f64], &[f64])>,
+    scale: f64,
+    shown: Option<(f64, f64)>,
+    width_px: f32,
+) -> (Vec<NamedLine>, Vec<Vec<[f64; 2]>>) {
+    let drawn = lines
+        .iter()
+        .map(|(_, time, y)| for_plot(time, y, scale, shown, width_px))
+        .collect();
+    let kept = lines
+        .into_iter()
+        .map(|(name, time, y)| (name, decimate(time, y, scale)))
+        .collect();
+    (kept, drawn)
+}
+
 /// At most about 20 000 points of a line given as pairs (see [`decimate`]).
 pub fn thin(points: Vec<[f64; 2]>) -> Vec<[f64; 2]> {
     if points.len() <= 20_000 {

@@ -197,14 +197,11 @@ impl BarWaves {
                 return self.history_at(k as f64 * dt);
             };
             let p = (k as f64 * dt) / dt_s;
-            if next_first <= p {
-                while next < segments.len() && segments[next].first as f64 <= p {
-                    next += 1;
-                }
+            while next_first <= p && next < segments.len() {
+                let seg = &segments[next];
+                last = (seg.first + seg.values.len()) as f64 - 1.0;
+                next += 1;
                 next_first = first_of(next, segments);
-                if let Some(seg) = next.checked_sub(1).map(|i| &segments[i]) {
-                    last = (seg.first + seg.values.len()) as f64 - 1.0;
-                }
             }
             let Some(seg) = next.checked_sub(1).map(|i| &segments[i]) else {
                 return 0.0;

@@ -153,10 +153,8 @@ impl GirderWaves {
     /// The known parts at the next step's end, from the forces now (`forces[0]` at the left end).
     pub fn predict(&mut self, forces: [f64; 2]) -> Predicted {
         if !self.struck {
-            // What the look-ups below find in a girder at rest, forces zero.
-            for e in &mut self.ends {
-                (e.a_star, e.b_star, e.q_lag) = (0.0, 0.0, 0.0);
-            }
+            // What the look-ups below find in a girder at rest, forces zero (its ends' a*, b*
+            // and lag are still the zeros they started with).
             return Predicted {
                 left: 0.0,
                 right: 0.0,
@@ -176,6 +174,13 @@ impl GirderWaves {
             left: own[0] - far[1],
             right: far[0] - own[1],
         }
+    }
+
+    /// The ends' elastic displacements at the step's end from their known parts `p` (the
+    /// prediction's, left then right) and the step's new end forces.
+    pub fn end_waves(&self, p: [f64; 2], [fl, fr]: [f64; 2]) -> [f64; 2] {
+        let (s, b) = (self.own_compliance(), self.rigid_compliance());
+        [p[0] + (s - b) * fl + b * fr, p[1] - b * fl - (s - b) * fr]
     }
 
     /// Takes the step with its new end forces.

@@ -254,8 +254,8 @@ struct Run<'a> {
     joints: Vec<JointState>,
     /// The supports' delays: the left abutment, each frame, the right abutment.
     support_delay: Vec<f64>,
-    /// For each support, the first support with the same delay (whose ground it shares): the
-    /// only way into `ground_now` and `ground_then` (`Run::at_support`).
+    /// For each support, the first support with the same delay (whose ground it shares): every
+    /// read of `ground_now` and `ground_then` goes through it (`Run::at_support`).
     same_ground: Vec<usize>,
     /// The ground at the run's present instant, and at the reading before (a step's start,
     /// once the step has read its end), by support; only the first support of each delay is
@@ -279,9 +279,6 @@ struct Run<'a> {
     /// Whether the joints' ground differences are older than the step's start (left so by free
     /// steps).
     ground_stale: bool,
-    /// A buffer kept between steps: every girder's displacement and velocity (relative to its
-    /// ground) for the joints' reading.
-    girder_now: Vec<(f64, f64)>,
 }
 
 impl<'a> Run<'a> {
@@ -352,7 +349,6 @@ impl<'a> Run<'a> {
             contact_steps: 0,
             powers_now: (0.0, 0.0),
             ground_stale: false,
-            girder_now: Vec::new(),
         };
         run.compliances();
         run.supports();
@@ -419,38 +415,17 @@ impl<'a> Run<'a> {
             .collect();
     }
 
-    /// A member's support: its frame's, or an abutment's (the left one where the abutment is
-    /// on a joint's left).
-    fn support(&self, member: Member, on_left: bool) -> usize {
-        support_of(self.frames.len(), member, on_left)
-    }
-
-    /// A joint side's absolute displacement and rigid velocity now, from every girder's
-    /// (displacement, velocity) `girders`: what [`Run::member_end`] gives, term for term.
+    /// A joint side's absolute displacement and rigid velocity now.
     #[inline(always)]
-    fn side_now(&self, side: &Side, girders: &[(f64, f64)]) -> (f64, f64) {
+    fn side_now(&self, side: &Side) -> (f64, f64) {
         let g = self.at_support(&self.ground_now, side.support);
         match side.girder {
             None => (g.displacement, g.velocity),
-            Some((i, end)) => (
-                g.displacement + girders[i].0 + self.waves[i][end],
-                g.velocity + girders[i].1,
-            ),
-        }
-    }
-
-    /// A member's end at a joint now: (absolute displacement, rigid velocity, its ground's
-    /// displacement).
-    fn member_end(&self, member: Member, on_left: bool) -> (f64, f64, f64) {
-        let g = *self.at_support(&self.ground_now, self.support(member, on_left));
-        match member {
-            Member::Abutment => (g.displacement, g.velocity, g.displacement),
-            Member::Girder(i) => {
+            Some((i, end)) => {
                 let f = &self.frames[i];
                 (
-                    g.displacement + f.girder_u() + self.waves[i][usize::from(on_left)],
+                    g.displacement + f.girder_u() + self.waves[i][end],
                     g.velocity + f.girder_v(),
-                    g.displacement,
                 )
             }
         }
@@ -458,10 +433,11 @@ impl<'a> Run<'a> {
 
     /// Closing (left member minus right member, absolute) and rigid closing rate of joint j
     /// now.
+    #[inline(always)]
     fn closing(&self, j: usize) -> (f64, f64) {
-        let joint = &self.joints[j].joint;
-        let (xl, vl, _) = self.member_end(joint.left, true);
-        let (xr, vr, _) = self.member_end(joint.right, false);
+        let [left, right] = &self.joints[j].sides;
+        let (xl, vl) = self.side_now(left);
+        let (xr, vr) = self.side_now(right);
         (xl - xr, vl - vr)
     }
 
@@ -472,25 +448,16 @@ impl<'a> Run<'a> {
 
     /// The same from a reading of the ground at every support.
     fn ground_difference_in(&self, readings: &[GroundState], j: usize) -> f64 {
-        let joint = &self.joints[j].joint;
-        self.at_support(readings, self.support(joint.left, true))
-            .displacement
-            - self
-                .at_support(readings, self.support(joint.right, false))
-                .displacement
+        let [left, right] = &self.joints[j].sides;
+        self.at_support(readings, left.support).displacement
+            - self.at_support(readings, right.support).displacement
     }
 
     /// The joints' overlaps, rates, openings and seats at time t (the ground's present).
     fn read_joints(&mut self, t: f64) {
-        let mut girders = std::mem::take(&mut self.girder_now);
-        girders.clear();
-        girders.extend(self.frames.iter().map(|f| (f.girder_u(), f.girder_v())));
         let seat = self.sc.seat_length_m;
         for j in 0..self.joints.len() {
-            let [left, right] = self.joints[j].sides;
-            let (xl, vl) = self.side_now(&left, &girders);
-            let (xr, vr) = self.side_now(&right, &girders);
-            let (closing, rate) = (xl - xr, vl - vr);
+            let (closing, rate) = self.closing(j);
             let js = &mut self.joints[j];
             js.delta = closing - js.joint.gap_m;
             js.rate = rate;
@@ -500,7 +467,6 @@ impl<'a> Run<'a> {
                 js.unseated = Some(t);
             }
         }
-        self.girder_now = girders;
     }
 
     /// The known parts of every joint's overlap at the step's end (the frames predicted, the
@@ -685,9 +651,7 @@ impl Run<'_> {
             self.frames[i].commit(fl - fr, h);
             if let Some(g) = self.girders[i].as_mut() {
                 g.commit([fl, fr]);
-                let (s, b) = (g.own_compliance(), g.rigid_compliance());
-                let p = self.predicted[i];
-                self.waves[i] = [p[0] + (s - b) * fl + b * fr, p[1] - b * fl - (s - b) * fr];
+                self.waves[i] = g.end_waves(self.predicted[i], [fl, fr]);
             }
         }
         self.read_joints(t1);
@@ -713,12 +677,7 @@ impl Run<'_> {
         for (i, g) in self.girders.iter_mut().enumerate() {
             if let Some(g) = g {
                 g.commit([0.0, 0.0]);
-                let (s, b) = (g.own_compliance(), g.rigid_compliance());
-                let p = self.predicted[i];
-                self.waves[i] = [
-                    p[0] + (s - b) * 0.0 + b * 0.0,
-                    p[1] - b * 0.0 - (s - b) * 0.0,
-                ];
+                self.waves[i] = g.end_waves(self.predicted[i], [0.0, 0.0]);
             }
         }
         self.read_joints(t1);

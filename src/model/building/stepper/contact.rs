@@ -536,18 +536,11 @@ impl Stepper<'_> {
         for &i in &cs.awake {
             cs.u_before[i] = self.point_now_of(&self.points[i]);
         }
-        // The modes are few: an element-wise copy is cheaper than a call to copy memory.
         for s in 0..2 {
             let side = &self.sides[s];
             let [q, v] = &mut cs.modal_before[s];
-            q.resize(side.q.len(), 0.0);
-            v.resize(side.v.len(), 0.0);
-            for (to, from) in q.iter_mut().zip(&side.q) {
-                *to = *from;
-            }
-            for (to, from) in v.iter_mut().zip(&side.v) {
-                *to = *from;
-            }
+            copy_few(q, &side.q);
+            copy_few(v, &side.v);
         }
         for s in 0..2 {
             let side = &mut self.sides[s];
@@ -694,5 +687,14 @@ impl Stepper<'_> {
             [&self.sides[0].q, &self.sides[1].q],
             [&self.sides[0].v, &self.sides[1].v],
         )
+    }
+}
+
+/// `to` made a copy of `from`, a few modes long: element by element, which is cheaper there
+/// than a call to copy memory.
+fn copy_few(to: &mut Vec<f64>, from: &[f64]) {
+    to.resize(from.len(), 0.0);
+    for (t, f) in to.iter_mut().zip(from) {
+        *t = *f;
     }
 }
