@@ -30,6 +30,7 @@ pub mod impact;
 pub mod material;
 pub mod motion;
 pub(crate) mod ring;
+pub(crate) mod ringing;
 pub mod root;
 pub mod scenario;
 pub mod settings;

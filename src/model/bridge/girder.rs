@@ -19,11 +19,32 @@
 //! lag is read from the stored Q (a ring a round trip deep) by a [`Tap`]'s cubic through four
 //! samples (the step is at most a sixteenth of a round trip, so every lag reaches samples
 //! already known).
+//!
+//! **Between contacts the girder only rings**, and the ringing is known in closed form
+//! (`model::ringing`): once both end forces are zero the girder falls quiet, keeps the last
+//! samples of each end's Q, and reads its end waves at any later grid index without being
+//! stepped; since 2/Z = T/m, each end's waves repeat every round trip attenuated by r, so their
+//! largest values over the first two round trips bound every later one. At the next contact it
+//! is revived: its rings are rebuilt from the closed form.
 
 use super::scenario::Girder;
 use crate::model::field::{BarBody, BarWaves};
 use crate::model::history::Tap;
 use crate::model::ring::{Look, Ring};
+use crate::model::ringing::{Frozen, Ringing, read_four};
+
+/// What the ringing between grid points, and at the phases of later round trips that fall
+/// between grid points, can exceed its largest value on the grid by (the slabs' margin).
+const WINDOW_OVERSHOOT: f64 = 1.5;
+
+/// A quiet girder: each end's history frozen when both forces stopped, and the largest end
+/// waves over the two round trips after that, once asked for.
+#[derive(Debug, Clone, Default)]
+struct Quiet {
+    ends: [Frozen; 2],
+    /// `[first round trip, second]`, each `[left end, right end]`.
+    envelope: std::cell::OnceCell<[[f64; 2]; 2]>,
+}
 
 /// One end's force history: A and B now, Q on the grid.
 #[derive(Debug, Clone)]
@@ -61,6 +82,15 @@ pub struct GirderWaves {
     /// the forces), for its stress waves.
     stretches: [Vec<(usize, Vec<f64>)>; 2],
     body: BarBody,
+    /// The constants of the quiet ringing, and the samples a quiet end keeps (the deepest
+    /// look-up and a stencil more).
+    ringing: Ringing,
+    window: usize,
+    /// The forces of the last step committed (a girder falls quiet only after zeros).
+    last_forces: [f64; 2],
+    /// `Some` while quiet; the buffers of the last quiet spell are kept for the next.
+    quiet: Option<Box<Quiet>>,
+    spare: Option<Box<Quiet>>,
 }
 
 /// The known parts of the two ends' elastic displacements at the step's end, before the new
@@ -105,6 +135,7 @@ impl GirderWaves {
         let lam = 2.0 * std::f64::consts::PI * zeta / t;
         let [i0, i1, i2] = moments(lam, h);
         let round_trip = Look::of(Tap::new(t, h));
+        let half_trip = Look::of(Tap::new(0.5 * t, h));
         let end = End {
             a: 0.0,
             b: 0.0,
@@ -124,7 +155,7 @@ impl GirderWaves {
             wb: [i2 / h, i1 - i2 / h],
             h,
             round_trip,
-            half_trip: Look::of(Tap::new(0.5 * t, h)),
+            half_trip,
             ends: [end.clone(), end],
             n: 0,
             struck: false,
@@ -137,6 +168,17 @@ impl GirderWaves {
                 decay_per_s: lam,
                 push_direction: 1.0,
             },
+            ringing: Ringing {
+                h,
+                step_decay: (-lam * h).exp(),
+                round_decay: (-lam * t).exp(),
+                round_steps: t / h,
+                decay_per_s: lam,
+            },
+            window: round_trip.reach().max(half_trip.reach()) + 4,
+            last_forces: [0.0; 2],
+            quiet: None,
+            spare: None,
         }
     }
 
@@ -152,6 +194,10 @@ impl GirderWaves {
 
     /// The known parts at the next step's end, from the forces now (`forces[0]` at the left end).
     pub fn predict(&mut self, forces: [f64; 2]) -> Predicted {
+        debug_assert!(
+            self.quiet.is_none(),
+            "a quiet girder is revived before it is stepped"
+        );
         if !self.struck {
             // What the look-ups below find in a girder at rest, forces zero (its ends' a*, b*
             // and lag are still the zeros they started with).
@@ -185,6 +231,11 @@ impl GirderWaves {
 
     /// Takes the step with its new end forces.
     pub fn commit(&mut self, forces: [f64; 2]) {
+        debug_assert!(
+            self.quiet.is_none(),
+            "a quiet girder is revived before it is stepped"
+        );
+        self.last_forces = forces;
         self.struck |= forces != [0.0, 0.0];
         if !self.struck {
             // The rings would take zeros where they hold only zeros: a look-up relative to
@@ -201,6 +252,139 @@ impl GirderWaves {
         for (stretches, f) in self.stretches.iter_mut().zip(forces) {
             record(stretches, self.n, f);
         }
+    }
+
+    /// Whether its ringing is read in closed form (quiet, or never struck: then it is still).
+    pub fn is_quiet(&self) -> bool {
+        self.quiet.is_some() || !self.struck
+    }
+
+    /// The grid index of its newest step.
+    pub fn newest_index(&self) -> usize {
+        self.n
+    }
+
+    /// Falls quiet once the last step committed had no force at either end: from then on its
+    /// ringing is read in closed form and it is not stepped. A girder never struck stays as it
+    /// is (still, and as cheap).
+    pub fn settle(&mut self) {
+        if self.quiet.is_some() || !self.struck || self.last_forces != [0.0, 0.0] {
+            return;
+        }
+        let mut q = self.spare.take().unwrap_or_default();
+        for (frozen, e) in q.ends.iter_mut().zip(&self.ends) {
+            frozen.n = self.n;
+            frozen.a = e.a;
+            frozen.b = e.b;
+            e.q.newest(self.window, &mut frozen.q);
+        }
+        q.envelope = std::cell::OnceCell::new();
+        self.quiet = Some(q);
+    }
+
+    /// Moves a quiet girder on by `steps` grid steps without force (nothing to step).
+    pub fn skip(&mut self, steps: usize) {
+        debug_assert!(self.is_quiet());
+        self.n += steps;
+    }
+
+    /// Starts stepping again at its newest index: each end's ring is rebuilt from the closed
+    /// form of its ringing, and A and B brought there.
+    pub fn revive(&mut self) {
+        let Some(q) = self.quiet.take() else {
+            return;
+        };
+        let n = self.n;
+        let from = (n as isize - self.window as isize + 1).max(0) as usize;
+        for (e, frozen) in self.ends.iter_mut().zip(&q.ends) {
+            e.q.next = from;
+            self.ringing.rebuild(frozen, &mut e.q, from, n);
+            e.a = self.ringing.a_at(frozen, n as f64);
+            e.b = self.ringing.b_at(frozen, n as f64);
+        }
+        self.spare = Some(q);
+    }
+
+    /// The end waves `[left, right]` at grid index `n` (at or after its newest) of a quiet
+    /// girder: each end's own and far readings from the closed form of its history.
+    pub fn waves_at(&self, n: usize) -> [f64; 2] {
+        let Some(q) = &self.quiet else {
+            debug_assert!(
+                !self.struck,
+                "a struck girder is read in closed form only when quiet"
+            );
+            return [0.0; 2];
+        };
+        let [left, right] = [0, 1].map(|k| self.readings_at(&q.ends[k], n as f64));
+        // Each end's own reading less the other end's far one (see the module's sign rule).
+        [left[0] - right[1], left[1] - right[0]]
+    }
+
+    /// Bounds on |end waves| `[left, right]` at every grid index from `n` on (zero for a girder
+    /// never struck); only for a quiet girder.
+    pub fn envelope_from(&self, n: usize) -> [f64; 2] {
+        let Some(q) = &self.quiet else {
+            debug_assert!(!self.struck, "a live girder has no envelope");
+            return [0.0; 2];
+        };
+        let [early, late] = *q.envelope.get_or_init(|| self.tabulate_envelope(q));
+        let trips = (n as f64 - q.ends[0].n as f64) / self.ringing.round_steps;
+        std::array::from_fn(|e| {
+            let bound = if trips <= 1.0 {
+                early[e].max(late[e])
+            } else {
+                late[e] * self.r.powi((trips - 1.0).floor() as i32)
+            };
+            WINDOW_OVERSHOOT * bound
+        })
+    }
+
+    /// The largest |end waves| on the grid over the first round trip after the girder fell
+    /// quiet and over the second (from the second on, w(t + T) = r w(t)): the recursion
+    /// stepped with zero force from copies of its windows, as [`GirderWaves::commit`] steps it.
+    fn tabulate_envelope(&self, q: &Quiet) -> [[f64; 2]; 2] {
+        let steps = self.ringing.round_steps.ceil() as usize + 1;
+        let len = q.ends[0].q.len();
+        let mut bufs = [q.ends[0].buffer(2 * steps), q.ends[1].buffer(2 * steps)];
+        let (round, half) = (self.round_trip.stored_four(), self.half_trip.stored_four());
+        debug_assert!(round.0.max(half.0) <= len);
+        let mut ab = [(q.ends[0].a, q.ends[0].b), (q.ends[1].a, q.ends[1].b)];
+        let (e, h) = (self.decay, self.h);
+        let mut most = [[0.0f64; 2]; 2];
+        for i in 0..2 * steps {
+            let at = len + i;
+            let mut readings = [[0.0; 2]; 2];
+            for ((buf, (a, b)), out) in bufs.iter_mut().zip(ab.iter_mut()).zip(&mut readings) {
+                *b = e * (*b + h * *a);
+                *a *= e;
+                let lag = read_four(buf, at, round);
+                let rigid = *b * self.inv_m;
+                out[0] = self.inv_z * (*a + 2.0 * self.r * lag) - rigid;
+                out[1] = 2.0 * self.inv_z * self.r_half * read_four(buf, at, half) - rigid;
+                buf[at] = *a + self.r * lag;
+            }
+            let k = usize::from(i >= steps);
+            let waves = [
+                readings[0][0] - readings[1][1],
+                readings[0][1] - readings[1][0],
+            ];
+            for (m, w) in most[k].iter_mut().zip(waves) {
+                *m = m.max(w.abs());
+            }
+        }
+        most
+    }
+
+    /// One end's own and far readings at the (fractional) grid index `m` from its frozen
+    /// history: (1/Z) (A + 2 r Q(m - T)) - B/m, and (2/Z) r_h Q(m - T/2) - B/m.
+    fn readings_at(&self, w: &Frozen, m: f64) -> [f64; 2] {
+        let r = &self.ringing;
+        let a = r.a_at(w, m);
+        let b = r.b_at(w, m) * self.inv_m;
+        let back = |lag: f64| r.fold_q(w, m - lag, a * r.decay(-lag));
+        let own = self.inv_z * (a + 2.0 * self.r * back(r.round_steps)) - b;
+        let far = 2.0 * self.inv_z * self.r_half * back(0.5 * r.round_steps) - b;
+        [own, far]
     }
 
     /// The stress waves from each end over the run (`[0]` from the left end, pushed towards

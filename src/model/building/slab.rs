@@ -35,45 +35,19 @@ use super::Slab;
 use crate::model::field::{BarBody, BarWaves};
 use crate::model::history::Tap;
 use crate::model::ring::{Look, Ring};
+use crate::model::ringing::{Frozen, Ringing, read_four};
 
 /// The slab's state frozen when it fell quiet: its last samples, from which every later instant
 /// is read until the next contact.
 #[derive(Debug, Clone, Default)]
 struct Quiet {
-    /// Index of the newest sample when it fell quiet.
-    n: usize,
-    a: f64,
-    b: f64,
-    /// Q at indices n - len + 1 ..= n.
-    q: Vec<f64>,
+    /// Its last samples, and A and B then.
+    w: Frozen,
     /// The largest |e| over the first round trip after `n` and over the second (from which
     /// the ringing repeats, attenuated), once asked for.
     envelope: std::cell::OnceCell<[f64; 2]>,
     /// Whether it has never been struck (nothing rings).
     silent: bool,
-}
-
-/// Cubic Lagrange interpolation in a window whose last sample has index `last`, at the fractional
-/// index `s` (at most `last`); zero before index 0.
-fn window_at(values: &[f64], last: usize, s: f64) -> f64 {
-    let len = values.len() as isize;
-    let first = last as isize - len + 1;
-    // Four points j - 1 ..= j + 2 around s, moved back so that none lies past the window's end.
-    let j = (s.floor() as isize).min(last as isize - 2);
-    let x = s - j as f64;
-    let at = |i: isize| {
-        if i < 0 || i < first {
-            0.0
-        } else {
-            values[(i - first) as usize]
-        }
-    };
-    let (a, b, c, d) = (at(j - 1), at(j), at(j + 1), at(j + 2));
-    let wa = -x * (x - 1.0) * (x - 2.0) / 6.0;
-    let wb = (x + 1.0) * (x - 1.0) * (x - 2.0) / 2.0;
-    let wc = -(x + 1.0) * x * (x - 2.0) / 2.0;
-    let wd = (x + 1.0) * x * (x - 1.0) / 6.0;
-    wa * a + wb * b + wc * c + wd * d
 }
 
 /// What the ringing between grid points, and at the phases of later round trips that fall
@@ -87,20 +61,15 @@ const WINDOW_OVERSHOOT: f64 = 1.5;
 pub struct SlabWaves {
     inv_z: f64,
     inv_m: f64,
-    h: f64,
-    step_decay: f64,
-    round_decay: f64,
+    /// The constants of its ringing (the step, the decays, the round trip in steps).
+    ringing: Ringing,
     near_weight: f64,
     far_weight: f64,
     recur: Look,
     near: Look,
     far: Look,
-    /// T / h: the round trip in grid steps.
-    round_steps: f64,
     /// Samples a quiet window keeps: the deepest look-up and a stencil more.
     window: usize,
-    /// Material damping 1 / t_d [1/s].
-    decay_per_s: f64,
     /// The step's constants: 1 / (1 - r w) for the recursion's newest weight w, the weight of
     /// the newest Q in the plane's look-ups, and e1 (what the newest force moves the plane by).
     gain: f64,
@@ -174,17 +143,19 @@ impl SlabWaves {
         SlabWaves {
             inv_z: 1.0 / slab.impedance_n_s_m(mass_kg),
             inv_m: 1.0 / mass_kg,
-            h,
-            step_decay: decay(h),
-            round_decay: decay(t),
+            ringing: Ringing {
+                h,
+                step_decay: decay(h),
+                round_decay: decay(t),
+                round_steps,
+                decay_per_s: 1.0 / decay_time,
+            },
             near_weight: decay(tau),
             far_weight: decay(t - tau),
             recur,
             near,
             far,
-            round_steps,
             window,
-            decay_per_s: 1.0 / decay_time,
             gain,
             top,
             e1,
@@ -197,7 +168,10 @@ impl SlabWaves {
             zero_run: 0,
             predicted: std::cell::Cell::new(None),
             quiet: Some(Quiet {
-                q: vec![0.0; window],
+                w: Frozen {
+                    q: vec![0.0; window],
+                    ..Frozen::default()
+                },
                 silent: true,
                 ..Quiet::default()
             }),
@@ -235,11 +209,11 @@ impl SlabWaves {
         {
             return ((e0, e1), recur);
         }
-        let (e, h) = (self.step_decay, self.h);
+        let (e, h) = (self.ringing.step_decay, self.ringing.h);
         let a0 = e * self.a + 0.5 * h * e * self.f_prev;
         let b0 = e * self.b + 0.5 * h * (e * self.a + a0);
         let recur = self.q.known(&self.recur);
-        let q0 = (a0 + self.round_decay * recur) * self.gain;
+        let q0 = (a0 + self.ringing.round_decay * recur) * self.gain;
         let known =
             self.near_weight * self.q.known(&self.near) + self.far_weight * self.q.known(&self.far);
         let e0 = self.inv_z * (known + self.top * q0) - self.inv_m * b0;
@@ -268,11 +242,11 @@ impl SlabWaves {
     /// Advances one step with the force F_{n+1} (while live).
     pub fn push(&mut self, force: f64) {
         let ((e0, e1), recur) = self.prediction();
-        let (e, h) = (self.step_decay, self.h);
+        let (e, h) = (self.ringing.step_decay, self.ringing.h);
         let a1 = e * self.a + 0.5 * h * (e * self.f_prev + force);
         self.b = e * self.b + 0.5 * h * (e * self.a + a1);
         self.a = a1;
-        let q1 = (a1 + self.round_decay * recur) * self.gain;
+        let q1 = (a1 + self.ringing.round_decay * recur) * self.gain;
         self.q.push(q1);
         self.f_prev = force;
         self.elastic = e0 + e1 * force;
@@ -285,7 +259,7 @@ impl SlabWaves {
     /// Index of the newest sample.
     pub fn newest_index(&self) -> usize {
         match &self.quiet {
-            Some(q) => q.n,
+            Some(q) => q.w.n,
             None => self.q.next - 1,
         }
     }
@@ -311,46 +285,16 @@ impl SlabWaves {
     /// rigid part B / m (one exponential: the decays at the two look-ups differ from the one at
     /// n by the look-ups' own weights).
     fn quiet_elastic(&self, q: &Quiet, n: f64) -> f64 {
-        let base = self.decay(n - q.n as f64);
-        let near = self.fold_q(q, n - self.tau_steps, q.a * base / self.near_weight);
-        let far = self.fold_q(
-            q,
-            n - (self.round_steps - self.tau_steps),
-            q.a * base / self.far_weight,
+        let (r, w) = (&self.ringing, &q.w);
+        let base = r.decay(n - w.n as f64);
+        let near = r.fold_q(w, n - self.tau_steps, w.a * base / self.near_weight);
+        let far = r.fold_q(
+            w,
+            n - (r.round_steps - self.tau_steps),
+            w.a * base / self.far_weight,
         );
-        let b = base * (q.b + (n - q.n as f64) * self.h * q.a);
+        let b = base * (w.b + (n - w.n as f64) * r.h * w.a);
         self.inv_z * (self.near_weight * near + self.far_weight * far) - self.inv_m * b
-    }
-
-    /// Q at the fractional grid index `s` of a quiet slab, given A(s): J A(s) + r^J Q(s - J T),
-    /// with s - J T inside the window.
-    fn fold_q(&self, q: &Quiet, s: f64, a: f64) -> f64 {
-        let past = s - q.n as f64;
-        if past <= 0.0 {
-            return window_at(&q.q, q.n, s);
-        }
-        let j = (past / self.round_steps).ceil();
-        j * a + self.round_decay.powi(j as i32) * window_at(&q.q, q.n, s - j * self.round_steps)
-    }
-
-    /// A(s) after the slab fell quiet: its value then, decayed.
-    fn quiet_a(&self, q: &Quiet, s: f64) -> f64 {
-        q.a * self.decay(s - q.n as f64)
-    }
-
-    /// B(s) after the slab fell quiet (exact for the grid's recursion at grid points).
-    fn quiet_b(&self, q: &Quiet, s: f64) -> f64 {
-        let steps = s - q.n as f64;
-        self.decay(steps) * (q.b + steps * self.h * q.a)
-    }
-
-    /// exp(-steps h / t_d).
-    fn decay(&self, steps: f64) -> f64 {
-        if self.decay_per_s == 0.0 {
-            1.0
-        } else {
-            (-steps * self.h * self.decay_per_s).exp()
-        }
     }
 
     /// A bound on |e| at every grid index from `n` on (infinite while live: the waves are
@@ -363,11 +307,11 @@ impl SlabWaves {
             return 0.0;
         }
         let [early, late] = *q.envelope.get_or_init(|| self.tabulate_envelope(q));
-        let trips = (n as f64 - q.n as f64) / self.round_steps;
+        let trips = (n as f64 - q.w.n as f64) / self.ringing.round_steps;
         let bound = if trips <= 1.0 {
             early.max(late)
         } else {
-            late * self.round_decay.powi((trips - 1.0).floor() as i32)
+            late * self.ringing.round_decay.powi((trips - 1.0).floor() as i32)
         };
         WINDOW_OVERSHOOT * bound
     }
@@ -377,38 +321,27 @@ impl SlabWaves {
     /// zero force from the quiet window (a copy of its samples), the cheapest way to every grid
     /// point of two round trips.
     fn tabulate_envelope(&self, q: &Quiet) -> [f64; 2] {
-        let steps = self.round_steps.ceil() as usize + 1;
-        // Q at indices q.n + 1 - len ..= q.n + 2 steps, in one buffer: the window, then the
-        // steps taken (before index 0 the history is zero).
-        let len = q.q.len();
-        let base = q.n as isize + 1 - len as isize;
-        let mut buf = vec![0.0; len + 2 * steps];
-        for (k, (b, &v)) in buf.iter_mut().zip(&q.q).enumerate() {
-            if base + k as isize >= 0 {
-                *b = v;
-            }
-        }
+        let steps = self.ringing.round_steps.ceil() as usize + 1;
+        let len = q.w.q.len();
+        let mut buf = q.w.buffer(2 * steps);
         let (recur, near, far) = (
             self.recur.stored_four(),
             self.near.stored_four(),
             self.far.stored_four(),
         );
         debug_assert!(recur.0.max(near.0).max(far.0) <= len);
-        let read = |buf: &[f64], at: usize, (back, w): (usize, [f64; 4])| {
-            let s = &buf[at - back..at - back + 4];
-            (w[0] * s[0] + w[1] * s[1]) + (w[2] * s[2] + w[3] * s[3])
-        };
-        let (e, h) = (self.step_decay, self.h);
-        let gain = 1.0 / (1.0 - self.round_decay * self.recur.newest);
+        let read = read_four;
+        let (e, h) = (self.ringing.step_decay, self.ringing.h);
+        let gain = 1.0 / (1.0 - self.ringing.round_decay * self.recur.newest);
         let top = self.near_weight * self.near.newest + self.far_weight * self.far.newest;
-        let (mut a, mut b) = (q.a, q.b);
+        let (mut a, mut b) = (q.w.a, q.w.b);
         let mut most = [0.0f64; 2];
         for i in 0..2 * steps {
             let at = len + i;
             let a1 = e * a;
             b = e * b + 0.5 * h * (e * a + a1);
             a = a1;
-            let q1 = (a1 + self.round_decay * read(&buf, at, recur)) * gain;
+            let q1 = (a1 + self.ringing.round_decay * read(&buf, at, recur)) * gain;
             let near_far =
                 self.near_weight * read(&buf, at, near) + self.far_weight * read(&buf, at, far);
             let elastic = self.inv_z * (near_far + top * q1) - self.inv_m * b;
@@ -425,12 +358,12 @@ impl SlabWaves {
             return;
         }
         let mut q = std::mem::take(&mut self.spare);
-        q.n = self.q.next - 1;
-        q.a = self.a;
-        q.b = self.b;
+        q.w.n = self.q.next - 1;
+        q.w.a = self.a;
+        q.w.b = self.b;
         q.envelope = std::cell::OnceCell::new();
-        self.q.newest(self.window, &mut q.q);
-        q.silent = q.a == 0.0 && q.b == 0.0 && q.q.iter().all(|&x| x == 0.0);
+        self.q.newest(self.window, &mut q.w.q);
+        q.silent = q.w.silent();
         self.quiet = Some(q);
     }
 
@@ -443,65 +376,14 @@ impl SlabWaves {
         self.predicted.set(None);
         let from = (n as isize - self.window as isize + 1).max(0) as usize;
         self.q.next = from;
-        self.rebuild(&q, from, n);
-        self.a = self.quiet_a(&q, n as f64);
-        self.b = self.quiet_b(&q, n as f64);
+        self.ringing.rebuild(&q.w, &mut self.q, from, n);
+        self.a = self.ringing.a_at(&q.w, n as f64);
+        self.b = self.ringing.b_at(&q.w, n as f64);
         self.f_prev = 0.0;
         self.elastic = self.quiet_elastic(&q, n as f64);
         self.zero_run = 0;
         self.forces.push((n + 1, Vec::new()));
         self.spare = q;
-    }
-
-    /// Pushes Q at grid indices `from..=to` from the quiet slab's closed form. Along a run of
-    /// indices folded back the same number of round trips J the look-up's fraction is the
-    /// same, so its weights are too, and A(i) decays by one factor per step.
-    fn rebuild(&mut self, q: &Quiet, from: usize, to: usize) {
-        let (r_steps, last) = (self.round_steps, q.n as isize);
-        let first = last - q.q.len() as isize + 1;
-        let mut a = self.quiet_a(q, from as f64);
-        let mut i = from;
-        while i <= to {
-            if i <= q.n {
-                let k = i as isize - first;
-                self.q.push(if k >= 0 { q.q[k as usize] } else { 0.0 });
-                i += 1;
-                a *= self.step_decay;
-                continue;
-            }
-            let j = ((i - q.n) as f64 / r_steps).ceil();
-            let shift = j * r_steps;
-            let run_end = ((q.n as f64 + shift).floor() as usize).min(to);
-            let weight = self.round_decay.powi(j as i32);
-            let s0 = i as f64 - shift;
-            let x = s0 - s0.floor();
-            let w = [
-                -x * (x - 1.0) * (x - 2.0) / 6.0,
-                (x + 1.0) * (x - 1.0) * (x - 2.0) / 2.0,
-                -(x + 1.0) * x * (x - 2.0) / 2.0,
-                (x + 1.0) * x * (x - 1.0) / 6.0,
-            ];
-            let at = |k: isize| {
-                if k < first.max(0) {
-                    0.0
-                } else {
-                    q.q[(k - first) as usize]
-                }
-            };
-            while i <= run_end {
-                let s = i as f64 - shift;
-                let base = s.floor() as isize;
-                let v = if base <= last - 2 {
-                    (w[0] * at(base - 1) + w[1] * at(base))
-                        + (w[2] * at(base + 1) + w[3] * at(base + 2))
-                } else {
-                    window_at(&q.q, q.n, s)
-                };
-                self.q.push(j * a + weight * v);
-                i += 1;
-                a *= self.step_decay;
-            }
-        }
     }
 
     /// The state to come back to if one trial step is taken again (while live).
@@ -535,6 +417,6 @@ impl SlabWaves {
     /// them, read as any bar's (stress from the contact end to the free end). `end_s` is the
     /// run's end.
     pub fn waves(&self, end_s: f64) -> BarWaves {
-        BarWaves::from_stretches(self.geometry, self.h, &self.forces, end_s)
+        BarWaves::from_stretches(self.geometry, self.ringing.h, &self.forces, end_s)
     }
 }

@@ -1,0 +1,171 @@
+//! A Sears bar's wave history once the force on it has stopped, in closed form: what the
+//! buildings' slabs and the bridges' girders read between contacts instead of stepping.
+//!
+//! A bar loaded at one end keeps Q(t) = A(t) + r Q(t - T) on the grid (A the force's integral
+//! against the material damping's kernel, r = exp(-T/t_d), T the round trip). Once the force is
+//! zero A decays as exp(-t/t_d), B (its integral) as (B_q + A_q (t - t_q)) exp(-(t - t_q)/t_d),
+//! and unrolling the recursion J round trips (r^j A(t - j T) = A(t)) gives
+//!   Q(t) = J A(t) + r^J Q(t - J T),
+//! with t - J T inside the last round trip before the force stopped: a window of Q's last
+//! samples, frozen then, gives Q at any later instant.
+
+use crate::model::ring::Ring;
+
+/// The constants of the recursion on a grid of step h.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Ringing {
+    pub h: f64,
+    /// exp(-h / t_d) and r = exp(-T / t_d).
+    pub step_decay: f64,
+    pub round_decay: f64,
+    /// T / h: the round trip in grid steps.
+    pub round_steps: f64,
+    /// 1 / t_d [1/s].
+    pub decay_per_s: f64,
+}
+
+/// The history frozen when its force stopped: Q at grid indices n - len + 1 ..= n, and A and B
+/// at n.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Frozen {
+    pub n: usize,
+    pub a: f64,
+    pub b: f64,
+    pub q: Vec<f64>,
+}
+
+impl Frozen {
+    /// Whether nothing was ever pushed into it (a bar never struck rings with nothing).
+    pub fn silent(&self) -> bool {
+        self.a == 0.0 && self.b == 0.0 && self.q.iter().all(|&x| x == 0.0)
+    }
+
+    /// Q at indices n + 1 - len ..= n + `extra`, in one buffer: the window, then `extra` zeros
+    /// for the steps a tabulation takes (before index 0 the history is zero).
+    pub fn buffer(&self, extra: usize) -> Vec<f64> {
+        let len = self.q.len();
+        let base = self.n as isize + 1 - len as isize;
+        let mut buf = vec![0.0; len + extra];
+        for (k, (b, &v)) in buf.iter_mut().zip(&self.q).enumerate() {
+            if base + k as isize >= 0 {
+                *b = v;
+            }
+        }
+        buf
+    }
+}
+
+/// A look-up's four weights on four samples `back` before index `at` of a buffer (a
+/// [`Look::stored_four`](crate::model::ring::Look::stored_four)).
+#[inline]
+pub(crate) fn read_four(buf: &[f64], at: usize, (back, w): (usize, [f64; 4])) -> f64 {
+    let s = &buf[at - back..at - back + 4];
+    (w[0] * s[0] + w[1] * s[1]) + (w[2] * s[2] + w[3] * s[3])
+}
+
+/// Cubic Lagrange interpolation in a window whose last sample has index `last`, at the fractional
+/// index `s` (at most `last`); zero before index 0.
+pub(crate) fn window_at(values: &[f64], last: usize, s: f64) -> f64 {
+    let len = values.len() as isize;
+    let first = last as isize - len + 1;
+    // Four points j - 1 ..= j + 2 around s, moved back so that none lies past the window's end.
+    let j = (s.floor() as isize).min(last as isize - 2);
+    let x = s - j as f64;
+    let at = |i: isize| {
+        if i < 0 || i < first {
+            0.0
+        } else {
+            values[(i - first) as usize]
+        }
+    };
+    let (a, b, c, d) = (at(j - 1), at(j), at(j + 1), at(j + 2));
+    let wa = -x * (x - 1.0) * (x - 2.0) / 6.0;
+    let wb = (x + 1.0) * (x - 1.0) * (x - 2.0) / 2.0;
+    let wc = -(x + 1.0) * x * (x - 2.0) / 2.0;
+    let wd = (x + 1.0) * x * (x - 1.0) / 6.0;
+    wa * a + wb * b + wc * c + wd * d
+}
+
+impl Ringing {
+    /// exp(-steps h / t_d).
+    pub fn decay(&self, steps: f64) -> f64 {
+        if self.decay_per_s == 0.0 {
+            1.0
+        } else {
+            (-steps * self.h * self.decay_per_s).exp()
+        }
+    }
+
+    /// A(s) after the force stopped: its value then, decayed.
+    pub fn a_at(&self, w: &Frozen, s: f64) -> f64 {
+        w.a * self.decay(s - w.n as f64)
+    }
+
+    /// B(s) after the force stopped (exact for the grid's recursion at grid points).
+    pub fn b_at(&self, w: &Frozen, s: f64) -> f64 {
+        let steps = s - w.n as f64;
+        self.decay(steps) * (w.b + steps * self.h * w.a)
+    }
+
+    /// Q at the fractional grid index `s`, given A(s): J A(s) + r^J Q(s - J T), with s - J T
+    /// inside the window.
+    pub fn fold_q(&self, w: &Frozen, s: f64, a: f64) -> f64 {
+        let past = s - w.n as f64;
+        if past <= 0.0 {
+            return window_at(&w.q, w.n, s);
+        }
+        let j = (past / self.round_steps).ceil();
+        j * a + self.round_decay.powi(j as i32) * window_at(&w.q, w.n, s - j * self.round_steps)
+    }
+
+    /// Pushes Q at grid indices `from..=to` from the closed form into `ring`. Along a run of
+    /// indices folded back the same number of round trips J the look-up's fraction is the
+    /// same, so its weights are too, and A(i) decays by one factor per step.
+    pub fn rebuild(&self, w: &Frozen, ring: &mut Ring, from: usize, to: usize) {
+        let (r_steps, last) = (self.round_steps, w.n as isize);
+        let first = last - w.q.len() as isize + 1;
+        let mut a = self.a_at(w, from as f64);
+        let mut i = from;
+        while i <= to {
+            if i <= w.n {
+                let k = i as isize - first;
+                ring.push(if k >= 0 { w.q[k as usize] } else { 0.0 });
+                i += 1;
+                a *= self.step_decay;
+                continue;
+            }
+            let j = ((i - w.n) as f64 / r_steps).ceil();
+            let shift = j * r_steps;
+            let run_end = ((w.n as f64 + shift).floor() as usize).min(to);
+            let weight = self.round_decay.powi(j as i32);
+            let s0 = i as f64 - shift;
+            let x = s0 - s0.floor();
+            let wt = [
+                -x * (x - 1.0) * (x - 2.0) / 6.0,
+                (x + 1.0) * (x - 1.0) * (x - 2.0) / 2.0,
+                -(x + 1.0) * x * (x - 2.0) / 2.0,
+                (x + 1.0) * x * (x - 1.0) / 6.0,
+            ];
+            let at = |k: isize| {
+                if k < first.max(0) {
+                    0.0
+                } else {
+                    w.q[(k - first) as usize]
+                }
+            };
+            while i <= run_end {
+                let s = i as f64 - shift;
+                let base = s.floor() as isize;
+                let v = if base <= last - 2 {
+                    (wt[0] * at(base - 1) + wt[1] * at(base))
+                        + (wt[2] * at(base + 1) + wt[3] * at(base + 2))
+                } else {
+                    window_at(&w.q, w.n, s)
+                };
+                ring.push(j * a + weight * v);
+                i += 1;
+                a *= self.step_decay;
+            }
+        }
+    }
+}
