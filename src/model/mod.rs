@@ -18,6 +18,7 @@ macro_rules! names_of {
 pub(crate) use names_of;
 
 pub mod bar;
+pub(crate) mod bound;
 pub mod bridge;
 pub mod building;
 pub mod contact;

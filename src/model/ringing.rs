@@ -169,3 +169,73 @@ impl Ringing {
         }
     }
 }
+
+/// A look-up of a frozen history at the grid indices m - lag for integer m, folded back `j`
+/// round trips: where m - lag - j T falls between grid points depends on the lag and j alone, so
+/// its stencil does too (made once for a run of grid indices with the same j).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Fold {
+    /// The round trips folded back, and r^j.
+    pub j: f64,
+    weight: f64,
+    /// floor(-lag - j T) in grid steps: the stencil's base is m plus this.
+    offset: isize,
+    /// The stencil's fraction, and its cubic Lagrange weights on base - 1 ..= base + 2.
+    x: f64,
+    w: [f64; 4],
+}
+
+impl Ringing {
+    /// How many round trips back grid index m - `lag` lies in the window frozen at `n` (0
+    /// inside it).
+    #[inline]
+    pub fn trips_back(&self, n: usize, m: usize, lag: f64) -> f64 {
+        let past = m as f64 - lag - n as f64;
+        if past <= 0.0 {
+            return 0.0;
+        }
+        // A ceiling of a positive value by truncation (no libm call).
+        let x = past / self.round_steps;
+        let t = x as u64 as f64;
+        if t < x { t + 1.0 } else { t }
+    }
+
+    /// The look-up at m - `lag` folded back `j` round trips.
+    pub fn fold(&self, lag: f64, j: f64) -> Fold {
+        let at = -lag - j * self.round_steps;
+        let base = at.floor();
+        let x = at - base;
+        Fold {
+            j,
+            weight: self.round_decay.powi(j as i32),
+            offset: base as isize,
+            x,
+            w: [
+                -x * (x - 1.0) * (x - 2.0) / 6.0,
+                (x + 1.0) * (x - 1.0) * (x - 2.0) / 2.0,
+                -(x + 1.0) * x * (x - 2.0) / 2.0,
+                (x + 1.0) * x * (x - 1.0) / 6.0,
+            ],
+        }
+    }
+}
+
+impl Fold {
+    /// Q at grid index m - lag from the frozen window `w`, given A there: j A + r^j Q(m - lag -
+    /// j T), as [`Ringing::fold_q`] reads it.
+    #[inline]
+    pub fn read(&self, w: &Frozen, m: usize, a: f64) -> f64 {
+        let base = m as isize + self.offset;
+        let last = w.n as isize;
+        let first = last - w.q.len() as isize + 1;
+        let inside = if base > first.max(0) && base <= last - 2 {
+            let k = (base - 1 - first) as usize;
+            let s = &w.q[k..k + 4];
+            self.w[0] * s[0] + self.w[1] * s[1] + self.w[2] * s[2] + self.w[3] * s[3]
+        } else {
+            // Near the window's ends (its start, or its last two samples) the generic reading.
+            window_at(&w.q, w.n, base as f64 + self.x)
+        };
+        self.j * a + self.weight * inside
+    }
+}

@@ -31,7 +31,7 @@ use super::scenario::Girder;
 use crate::model::field::{BarBody, BarWaves};
 use crate::model::history::Tap;
 use crate::model::ring::{Look, Ring};
-use crate::model::ringing::{Frozen, Ringing, read_four};
+use crate::model::ringing::{Fold, Frozen, Ringing, read_four};
 
 /// What the ringing between grid points, and at the phases of later round trips that fall
 /// between grid points, can exceed its largest value on the grid by (the slabs' margin).
@@ -42,6 +42,9 @@ const WINDOW_OVERSHOOT: f64 = 1.5;
 #[derive(Debug, Clone, Default)]
 struct Quiet {
     ends: [Frozen; 2],
+    /// The look-ups a round trip and half a round trip back last made (each is the same for
+    /// every grid index folded back as many round trips).
+    folds: [std::cell::Cell<Option<Fold>>; 2],
     /// `[first round trip, second]`, each `[left end, right end]`.
     envelope: std::cell::OnceCell<[[f64; 2]; 2]>,
 }
@@ -86,6 +89,9 @@ pub struct GirderWaves {
     /// look-up and a stencil more).
     ringing: Ringing,
     window: usize,
+    /// exp(lam T) and exp(lam T / 2): A a round trip and half a round trip back, relative to
+    /// A now.
+    grow: [f64; 2],
     /// The forces of the last step committed (a girder falls quiet only after zeros).
     last_forces: [f64; 2],
     /// `Some` while quiet; the buffers of the last quiet spell are kept for the next.
@@ -176,6 +182,7 @@ impl GirderWaves {
                 decay_per_s: lam,
             },
             window: round_trip.reach().max(half_trip.reach()) + 4,
+            grow: [(lam * t).exp(), (0.5 * lam * t).exp()],
             last_forces: [0.0; 2],
             quiet: None,
             spare: None,
@@ -259,6 +266,11 @@ impl GirderWaves {
         self.quiet.is_some() || !self.struck
     }
 
+    /// Whether it keeps a frozen history (struck, then quiet): stepping it needs a revival.
+    pub fn is_frozen(&self) -> bool {
+        self.quiet.is_some()
+    }
+
     /// The grid index of its newest step.
     pub fn newest_index(&self) -> usize {
         self.n
@@ -279,6 +291,7 @@ impl GirderWaves {
             e.q.newest(self.window, &mut frozen.q);
         }
         q.envelope = std::cell::OnceCell::new();
+        q.folds.iter().for_each(|f| f.set(None));
         self.quiet = Some(q);
     }
 
@@ -315,9 +328,46 @@ impl GirderWaves {
             );
             return [0.0; 2];
         };
-        let [left, right] = [0, 1].map(|k| self.readings_at(&q.ends[k], n as f64));
+        let r = &self.ringing;
+        let [w0, w1] = &q.ends;
+        let steps = (n - w0.n) as f64;
+        // One exponential for both ends: A and B decay alike since both fell quiet at once.
+        let base = r.decay(steps);
+        let (back, half) = (self.fold_at(q, 0, n), self.fold_at(q, 1, n));
+        let (a0, a1) = (w0.a * base, w1.a * base);
+        let k = steps * r.h;
+        let (b0, b1) = (
+            base * (w0.b + k * w0.a) * self.inv_m,
+            base * (w1.b + k * w1.a) * self.inv_m,
+        );
+        let (z, r2, rh2) = (self.inv_z, 2.0 * self.r, 2.0 * self.inv_z * self.r_half);
+        let own0 = z * (a0 + r2 * back.read(w0, n, a0 * self.grow[0])) - b0;
+        let far0 = rh2 * half.read(w0, n, a0 * self.grow[1]) - b0;
+        let own1 = z * (a1 + r2 * back.read(w1, n, a1 * self.grow[0])) - b1;
+        let far1 = rh2 * half.read(w1, n, a1 * self.grow[1]) - b1;
         // Each end's own reading less the other end's far one (see the module's sign rule).
-        [left[0] - right[1], left[1] - right[0]]
+        [own0 - far1, far0 - own1]
+    }
+
+    /// The look-up a round trip (`l` 0) or half a round trip (1) back from grid index n of a
+    /// quiet girder, made once for all the grid indices folded back as many round trips.
+    #[inline]
+    fn fold_at(&self, q: &Quiet, l: usize, n: usize) -> Fold {
+        let r = &self.ringing;
+        let lag = if l == 0 {
+            r.round_steps
+        } else {
+            0.5 * r.round_steps
+        };
+        let j = r.trips_back(q.ends[0].n, n, lag);
+        match q.folds[l].get() {
+            Some(f) if f.j == j => f,
+            _ => {
+                let f = r.fold(lag, j);
+                q.folds[l].set(Some(f));
+                f
+            }
+        }
     }
 
     /// Bounds on |end waves| `[left, right]` at every grid index from `n` on (zero for a girder
@@ -373,18 +423,6 @@ impl GirderWaves {
             }
         }
         most
-    }
-
-    /// One end's own and far readings at the (fractional) grid index `m` from its frozen
-    /// history: (1/Z) (A + 2 r Q(m - T)) - B/m, and (2/Z) r_h Q(m - T/2) - B/m.
-    fn readings_at(&self, w: &Frozen, m: f64) -> [f64; 2] {
-        let r = &self.ringing;
-        let a = r.a_at(w, m);
-        let b = r.b_at(w, m) * self.inv_m;
-        let back = |lag: f64| r.fold_q(w, m - lag, a * r.decay(-lag));
-        let own = self.inv_z * (a + 2.0 * self.r * back(r.round_steps)) - b;
-        let far = 2.0 * self.inv_z * self.r_half * back(0.5 * r.round_steps) - b;
-        [own, far]
     }
 
     /// The stress waves from each end over the run (`[0]` from the left end, pushed towards

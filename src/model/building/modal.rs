@@ -414,6 +414,69 @@ pub fn step_integrals(omega: f64, zeta: f64, s: f64) -> StepIntegrals {
 /// round-off of eps e^(2 zeta w s) into the decaying block, so the span stays near 1.
 const MAX_DECAY: f64 = 1.0;
 
+/// The integrals and exact maps over 1, 2, 4, ... fine steps of one mode, as many as `steps`
+/// needs.
+pub(crate) fn doublings(
+    omega: f64,
+    zeta: f64,
+    h: f64,
+    steps: usize,
+) -> Vec<(StepIntegrals, [[f64; 4]; 4])> {
+    let mut out = vec![(step_integrals(omega, zeta, h), full_map(omega, zeta, h))];
+    while (1usize << out.len()) <= steps {
+        let (ints, phi) = out.last().expect("one at least");
+        out.push((joined(ints, phi, ints), mul4(phi, phi)));
+    }
+    out
+}
+
+/// A mode's integrals over j fine steps, joined from its [`doublings`].
+pub(crate) fn integrals_over(
+    doublings: &[(StepIntegrals, [[f64; 4]; 4])],
+    j: usize,
+) -> StepIntegrals {
+    let mut acc: Option<(StepIntegrals, [[f64; 4]; 4])> = None;
+    for (b, (ints, phi)) in doublings.iter().enumerate() {
+        if j & (1 << b) == 0 {
+            continue;
+        }
+        acc = Some(match acc {
+            None => (*ints, *phi),
+            Some((a_ints, a_phi)) => (joined(&a_ints, &a_phi, ints), mul4(phi, &a_phi)),
+        });
+    }
+    acc.map_or_else(StepIntegrals::default, |(ints, _)| ints)
+}
+
+/// A mode's exact steps over h, 2h, ... `count` h, each the one before times the first (one
+/// product per step instead of an exponential).
+pub(crate) fn step_powers(omega: f64, zeta: f64, h: f64, count: usize) -> Vec<Propagator> {
+    let first = full_map(omega, zeta, h);
+    let mut current = first;
+    let mut out = Vec::with_capacity(count);
+    for j in 0..count {
+        if j > 0 {
+            current = mul4(&current, &first);
+        }
+        out.push(Propagator {
+            q: current[0],
+            v: current[1],
+        });
+    }
+    out
+}
+
+/// The exact step's full 4 x 4 map in y = [q, q', g, g'].
+pub(crate) fn full_map(omega: f64, zeta: f64, h: f64) -> [[f64; 4]; 4] {
+    let p = propagator(omega, zeta, h);
+    // g(s) = g + g' s, g' constant.
+    [p.q, p.v, [0.0, 0.0, 1.0, h], [0.0, 0.0, 0.0, 1.0]]
+}
+
+pub(crate) fn mul4(a: &[[f64; 4]; 4], b: &[[f64; 4]; 4]) -> [[f64; 4]; 4] {
+    std::array::from_fn(|i| std::array::from_fn(|j| (0..4).map(|k| a[i][k] * b[k][j]).sum()))
+}
+
 /// The integrals over a step of length a + b from those over a (whose exact map is `phi_a`) and
 /// those over b: the second part's integrands start from the state at a, y(a) = Phi(a) y0.
 pub fn joined(

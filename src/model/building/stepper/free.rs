@@ -1,8 +1,8 @@
 //! The free stretch: the exact motion between contacts, checked at a few points and walked grid
 //! point by grid point only where a bound cannot rule out an onset or a new peak.
 
-use super::bound::{cubic_bound, cubic_margin, cubic_max, cubic_max_abs, mode_bounds};
 use super::*;
+use crate::model::bound::{cubic_bound, cubic_margin, cubic_max, cubic_max_abs, mode_bounds};
 use crate::model::building::modal::evaluate;
 
 /// What the rounding of the states at two points can move a cubic's maximum by, relative to the

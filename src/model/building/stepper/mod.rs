@@ -22,7 +22,6 @@
 //! to round-off and what it reports (work of the ground, damping, energy taken by the contact)
 //! is exact for the discrete solution.
 
-mod bound;
 mod contact;
 mod free;
 mod onset;
@@ -35,7 +34,10 @@ use yielding::Storeys;
 
 use super::elements::Element;
 use super::levels::Level;
-use super::modal::{Modes, Propagator, StepIntegrals, joined, propagator, step_integrals};
+use super::modal::{
+    Modes, Propagator, StepIntegrals, doublings, integrals_over, propagator, step_integrals,
+    step_powers,
+};
 use super::result::{BuildingEnergy, RawContact};
 use super::slab::{SlabMark, SlabWaves};
 use super::{BuildingScenario, ContactModel, SlabReading, Tracked};
@@ -108,25 +110,19 @@ impl Side {
     fn new(modes: &Modes, heights: Vec<f64>, v0: f64, grid: &Grid) -> Self {
         let n = modes.count();
         let h = grid.h;
-        let first: Vec<[[f64; 4]; 4]> = (0..n)
-            .map(|k| full_map(modes.omega_rad_s[k], modes.damping[k], h))
+        let powers: Vec<Vec<Propagator>> = (0..n)
+            .map(|k| {
+                step_powers(
+                    modes.omega_rad_s[k],
+                    modes.damping[k],
+                    h,
+                    grid.per_free_step,
+                )
+            })
             .collect();
-        // E((j + 1) h) = E(j h) E(h): one product per point instead of an exponential.
-        let mut sub = Vec::with_capacity(grid.per_free_step);
-        let mut current = first.clone();
-        for j in 0..grid.per_free_step {
-            if j > 0 {
-                for k in 0..n {
-                    current[k] = mul4(&current[k], &first[k]);
-                }
-            }
-            sub.push(
-                current
-                    .iter()
-                    .map(|e| Propagator { q: e[0], v: e[1] })
-                    .collect(),
-            );
-        }
+        let sub = (0..grid.per_free_step)
+            .map(|j| powers.iter().map(|p| p[j]).collect())
+            .collect();
         let free_len = grid.per_free_step as f64 * h;
         Side {
             full: (0..n)
@@ -199,43 +195,11 @@ impl Side {
     }
 }
 
-/// The integrals and exact maps over 1, 2, 4, ... fine steps of one mode, as many as `steps`
-/// needs.
-fn doublings(omega: f64, zeta: f64, h: f64, steps: usize) -> Vec<(StepIntegrals, [[f64; 4]; 4])> {
-    let mut out = vec![(step_integrals(omega, zeta, h), full_map(omega, zeta, h))];
-    while (1usize << out.len()) <= steps {
-        let (ints, phi) = out.last().expect("one at least");
-        out.push((joined(ints, phi, ints), mul4(phi, phi)));
-    }
-    out
-}
-
 impl Side {
     /// Mode k's integrals over j fine steps, joined from its doublings.
     fn integrals_over(&self, k: usize, j: usize) -> StepIntegrals {
-        let mut acc: Option<(StepIntegrals, [[f64; 4]; 4])> = None;
-        for (b, (ints, phi)) in self.doublings[k].iter().enumerate() {
-            if j & (1 << b) == 0 {
-                continue;
-            }
-            acc = Some(match acc {
-                None => (*ints, *phi),
-                Some((a_ints, a_phi)) => (joined(&a_ints, &a_phi, ints), mul4(phi, &a_phi)),
-            });
-        }
-        acc.map_or_else(StepIntegrals::default, |(ints, _)| ints)
+        integrals_over(&self.doublings[k], j)
     }
-}
-
-/// The exact step's full 4 x 4 map in y = [q, q', g, g'].
-fn full_map(omega: f64, zeta: f64, h: f64) -> [[f64; 4]; 4] {
-    let p = propagator(omega, zeta, h);
-    // g(s) = g + g' s, g' constant.
-    [p.q, p.v, [0.0, 0.0, 1.0, h], [0.0, 0.0, 0.0, 1.0]]
-}
-
-fn mul4(a: &[[f64; 4]; 4], b: &[[f64; 4]; 4]) -> [[f64; 4]; 4] {
-    std::array::from_fn(|i| std::array::from_fn(|j| (0..4).map(|k| a[i][k] * b[k][j]).sum()))
 }
 
 fn newmark_k_hat(omega: f64, zeta: f64, h: f64) -> f64 {

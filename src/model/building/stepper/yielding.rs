@@ -11,8 +11,8 @@
 //! fixed point, since the end drift depends on the correction. Over a fine step the map is a
 //! strong contraction (its factor is about (w h)^2 / 6), so it settles in two or three passes.
 
-use super::bound::{Envelope, envelope};
 use super::*;
+use crate::model::bound::{Envelope, envelope};
 use crate::model::hysteresis::{Hysteresis, StoreyLaw, StoreyState};
 
 /// The most passes of the fixed point over one step.

@@ -10,6 +10,8 @@
 //! `solve_step`), swept joint by joint until the forces agree (the coupling p / S is of the
 //! order of h^2 k / m, tiny where the step resolves the contact).
 
+mod stretch;
+
 use super::girder::GirderWaves;
 use super::ground::{Ground, GroundState};
 use super::result::{BridgeEnergy, BridgeResult, BridgeStats, Unseating};
@@ -279,6 +281,11 @@ struct Run<'a> {
     /// Whether the joints' ground differences are older than the step's start (left so by free
     /// steps).
     ground_stale: bool,
+    /// Each frame's exact maps for free stretches, the grid steps a stretch's check spans at
+    /// most, and the stretch's buffers.
+    stretch_steps: Vec<stretch::FrameSteps>,
+    check: usize,
+    stretch_scratch: stretch::Scratch,
 }
 
 impl<'a> Run<'a> {
@@ -349,6 +356,9 @@ impl<'a> Run<'a> {
             contact_steps: 0,
             powers_now: (0.0, 0.0),
             ground_stale: false,
+            stretch_steps: Vec::new(),
+            check: 1,
+            stretch_scratch: stretch::Scratch::default(),
         };
         run.compliances();
         run.supports();
@@ -471,12 +481,18 @@ impl<'a> Run<'a> {
 
     /// The known parts of every joint's overlap at the step's end (the frames predicted, the
     /// ground already there).
-    fn predict_joints(&mut self) {
+    fn predict_joints(&mut self, next: usize) {
         for (i, g) in self.girders.iter_mut().enumerate() {
             if let Some(g) = g {
-                let forces = [self.joints[i].force, self.joints[i + 1].force];
-                let p = g.predict(forces);
-                self.predicted[i] = [p.left, p.right];
+                // A quiet girder (no force at its ends since it fell quiet) rings in closed
+                // form: its known part is its ringing at the step's end.
+                self.predicted[i] = if g.is_quiet() {
+                    g.waves_at(next)
+                } else {
+                    let forces = [self.joints[i].force, self.joints[i + 1].force];
+                    let p = g.predict(forces);
+                    [p.left, p.right]
+                };
             }
         }
         for j in 0..self.joints.len() {
@@ -625,7 +641,7 @@ impl Run<'_> {
             self.sc.contact != ContactModel::Stereo && self.joints.iter().all(|js| js.force == 0.0);
         self.predict_frames(t0, t1);
         if forces_act {
-            self.predict_joints();
+            self.predict_joints(n + 1);
         }
         if free_start && (!forces_act || self.joints.iter().all(|js| js.k_star <= 0.0)) {
             self.commit_free(t1);
@@ -642,6 +658,12 @@ impl Run<'_> {
         self.keep_before();
         if forces_act {
             self.solve_forces();
+            // A quiet girder a force now reaches is stepped again from here: its rings are
+            // rebuilt and the step solved again with its stepped prediction.
+            while self.revive_pushed() {
+                self.predict_joints(n + 1);
+                self.solve_forces();
+            }
         }
         for j in 0..self.joints.len() {
             self.joints[j].force = if forces_act { self.solved[j].1 } else { 0.0 };
@@ -650,8 +672,7 @@ impl Run<'_> {
             let (fl, fr) = (self.joints[i].force, self.joints[i + 1].force);
             self.frames[i].commit(fl - fr, h);
             if let Some(g) = self.girders[i].as_mut() {
-                g.commit([fl, fr]);
-                self.waves[i] = g.end_waves(self.predicted[i], [fl, fr]);
+                self.waves[i] = girder_step(g, self.predicted[i], [fl, fr]);
             }
         }
         self.read_joints(t1);
@@ -676,8 +697,7 @@ impl Run<'_> {
         }
         for (i, g) in self.girders.iter_mut().enumerate() {
             if let Some(g) = g {
-                g.commit([0.0, 0.0]);
-                self.waves[i] = g.end_waves(self.predicted[i], [0.0, 0.0]);
+                self.waves[i] = girder_step(g, self.predicted[i], [0.0, 0.0]);
             }
         }
         self.read_joints(t1);
@@ -811,6 +831,34 @@ impl Run<'_> {
     }
 }
 
+/// Takes a girder's step with its end forces: a quiet girder without force rings on (its
+/// predicted waves are its ringing), any other is stepped. Returns its end waves.
+fn girder_step(g: &mut GirderWaves, predicted: [f64; 2], forces: [f64; 2]) -> [f64; 2] {
+    if g.is_quiet() && forces == [0.0, 0.0] {
+        g.skip(1);
+        return predicted;
+    }
+    g.commit(forces);
+    g.end_waves(predicted, forces)
+}
+
+impl Run<'_> {
+    /// Revives every quiet girder the solved forces push at either end; whether any was (its
+    /// prediction then changes from the closed form to the stepped one).
+    fn revive_pushed(&mut self) -> bool {
+        let mut any = false;
+        for (i, g) in self.girders.iter_mut().enumerate() {
+            let Some(g) = g else { continue };
+            let pushed = self.solved[i].1 != 0.0 || self.solved[i + 1].1 != 0.0;
+            if pushed && g.is_frozen() {
+                g.revive();
+                any = true;
+            }
+        }
+        any
+    }
+}
+
 /// The support of a member of a bridge of `spans` spans: its frame's, or an abutment's (the
 /// left one where the abutment is on a joint's left).
 fn support_of(spans: usize, member: Member, on_left: bool) -> usize {
@@ -903,7 +951,24 @@ pub fn solve_with(
     motion: &GroundMotion,
     control: &Control,
 ) -> Result<BridgeResult, SolveError> {
-    run_publishing(sc, motion, control, None)
+    run_publishing(sc, motion, control, None, Stretches::Taken)
+}
+
+/// [`solve`] stepping every grid point between contacts too, instead of jumping over free
+/// stretches (the girders still ring in closed form there): what the stretches must find, for
+/// tests and comparisons; slower.
+pub fn solve_stepped(
+    sc: &BridgeScenario,
+    motion: &GroundMotion,
+) -> Result<BridgeResult, SolveError> {
+    run_publishing(sc, motion, Control::never(), None, Stretches::Stepped)
+}
+
+/// Whether a run jumps over its free stretches or steps them grid point by grid point.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Stretches {
+    Taken,
+    Stepped,
 }
 
 /// [`solve_with`], handing `publish` what the run has solved so far, at most once per `every`
@@ -917,7 +982,13 @@ pub fn solve_streaming(
     every: std::time::Duration,
     publish: &mut dyn FnMut(BridgeResult),
 ) -> Result<BridgeResult, SolveError> {
-    run_publishing(sc, motion, control, Some((every, publish)))
+    run_publishing(
+        sc,
+        motion,
+        control,
+        Some((every, publish)),
+        Stretches::Taken,
+    )
 }
 
 fn run_publishing(
@@ -925,6 +996,7 @@ fn run_publishing(
     motion: &GroundMotion,
     control: &Control,
     mut publish: Option<(std::time::Duration, &mut dyn FnMut(BridgeResult))>,
+    stretches: Stretches,
 ) -> Result<BridgeResult, SolveError> {
     sc.validate()?;
     let start = std::time::Instant::now();
@@ -939,6 +1011,7 @@ fn run_publishing(
         });
     }
     let mut run = Run::new(sc, motion, h);
+    run.tabulate_stretches(steps);
     let stride = steps.div_ceil(MAX_SAMPLES).max(1);
     let mut hist = Histories::new(run.joints.len(), sc.spans);
     let mut peaks = Peaks {
@@ -949,31 +1022,51 @@ fn run_publishing(
     hist.push(&run, 0.0);
     peaks.read(&run.frames);
     let mut published = start;
-    for n in 1..=steps {
-        if n % 4096 == 1 {
-            control.report((n - 1) as f64 / steps as f64)?;
+    let mut n = 0;
+    let mut look_at = 0;
+    while n < steps {
+        if n >= look_at {
+            look_at = n + 4096;
+            control.report(n as f64 / steps as f64)?;
             if let Some((every, publish)) = publish.as_mut()
-                && n > 1
+                && n > 0
                 && published.elapsed() >= *every
             {
                 published = std::time::Instant::now();
-                let done = n - 1;
-                let so_far = (done as f64 * h).min(duration);
+                let so_far = (n as f64 * h).min(duration);
                 publish(finish(
                     &run,
                     run.contacts.clone(),
                     hist.clone(),
                     peaks.clone(),
                     (duration, so_far),
-                    done,
+                    n,
                     start,
                 ));
             }
         }
-        run.step(n - 1);
-        peaks.read(&run.frames);
-        if n % stride == 0 || n == steps {
-            hist.push(&run, n as f64 * h);
+        let mut sink = stretch::Sink {
+            hist: &mut hist,
+            peaks: &mut peaks,
+            stride,
+            steps,
+        };
+        let taken = match stretches {
+            Stretches::Taken => run.free_stretch(n, &mut sink),
+            Stretches::Stepped => {
+                run.settle_if_free();
+                0
+            }
+        };
+        if taken > 0 {
+            n += taken;
+        } else {
+            run.step(n);
+            n += 1;
+            peaks.read(&run.frames);
+            if n % stride == 0 || n == steps {
+                hist.push(&run, n as f64 * h);
+            }
         }
         // x * 0 is zero for every finite x and NaN otherwise: one sum tells them all apart.
         let not_finite: f64 = run

@@ -14,7 +14,7 @@
 /// from the augmented state y = [q, q', g, g'] at its start: on |q| itself (the free
 /// vibration's amplitude plus the particular line's larger end), on its fourth derivative and on
 /// its fifth.
-pub(super) fn mode_bounds(omega: f64, zeta: f64, y: &[f64; 4], len: f64) -> [f64; 3] {
+pub(crate) fn mode_bounds(omega: f64, zeta: f64, y: &[f64; 4], len: f64) -> [f64; 3] {
     let (m4, m5) = derivative_bounds(omega, zeta, y);
     let Some(Envelope { alpha, beta, free }) = envelope(omega, zeta, y) else {
         return [f64::INFINITY, m4, m5];
@@ -25,7 +25,7 @@ pub(super) fn mode_bounds(omega: f64, zeta: f64, y: &[f64; 4], len: f64) -> [f64
 /// A mode's response where its forcing is linear: the particular line alpha + beta t, and a
 /// bound on how far the free vibration takes it from that line.
 #[derive(Debug, Clone, Copy)]
-pub(super) struct Envelope {
+pub(crate) struct Envelope {
     pub alpha: f64,
     pub beta: f64,
     pub free: f64,
@@ -33,7 +33,7 @@ pub(super) struct Envelope {
 
 /// The envelope of one mode from its augmented state y = [q, q', g, g'] (none for a mode
 /// without stiffness).
-pub(super) fn envelope(omega: f64, zeta: f64, y: &[f64; 4]) -> Option<Envelope> {
+pub(crate) fn envelope(omega: f64, zeta: f64, y: &[f64; 4]) -> Option<Envelope> {
     if omega <= 0.0 || !omega.is_finite() {
         return None;
     }
@@ -60,7 +60,7 @@ pub(super) fn envelope(omega: f64, zeta: f64, y: &[f64; 4]) -> Option<Envelope> 
 /// The bounds on the fourth and fifth time derivatives of one mode's response over a stretch
 /// where its forcing is linear, from the augmented state y = [q, q', g, g'] at the stretch's
 /// start: those of its value, and of its rate.
-pub(super) fn derivative_bounds(omega: f64, zeta: f64, y: &[f64; 4]) -> (f64, f64) {
+pub(crate) fn derivative_bounds(omega: f64, zeta: f64, y: &[f64; 4]) -> (f64, f64) {
     let m4 = fourth_derivative(omega, zeta, y);
     // Each derivative of the free vibration is at most |lambda| times the one before, with
     // |lambda| = w (underdamped), or the larger root (overdamped), or w with the (A + B t)
@@ -77,7 +77,7 @@ pub(super) fn derivative_bounds(omega: f64, zeta: f64, y: &[f64; 4]) -> (f64, f6
 
 /// The bound on the fourth time derivative of one mode's response over a stretch where its
 /// forcing is linear, from the augmented state y = [q, q', g, g'] at the stretch's start.
-pub(super) fn fourth_derivative(omega: f64, zeta: f64, y: &[f64; 4]) -> f64 {
+pub(crate) fn fourth_derivative(omega: f64, zeta: f64, y: &[f64; 4]) -> f64 {
     if omega <= 0.0 || !omega.is_finite() {
         return f64::INFINITY;
     }
@@ -108,7 +108,7 @@ pub(super) fn fourth_derivative(omega: f64, zeta: f64, y: &[f64; 4]) -> f64 {
 
 /// The cubic through (0, y0) and (l, y1) with slopes v0 and v1: its largest value over [0, l],
 /// the ends included.
-pub(super) fn cubic_max(y0: f64, v0: f64, y1: f64, v1: f64, l: f64) -> f64 {
+pub(crate) fn cubic_max(y0: f64, v0: f64, y1: f64, v1: f64, l: f64) -> f64 {
     let mut best = y0.max(y1);
     // p(s) for s in [0, 1] with p'(0) = l v0, p'(1) = l v1: p'(s) = a s^2 + b s + c.
     let (m0, m1) = (l * v0, l * v1);
@@ -151,12 +151,12 @@ pub(super) fn cubic_max(y0: f64, v0: f64, y1: f64, v1: f64, l: f64) -> f64 {
 /// A bound on the cubic's largest value over [0, l] at the cost of a few operations: its Hermite
 /// weights on the ends sum to one and are positive, those on the slopes are at most 4/27 in size.
 #[inline]
-pub(super) fn cubic_bound(y0: f64, v0: f64, y1: f64, v1: f64, l: f64) -> f64 {
+pub(crate) fn cubic_bound(y0: f64, v0: f64, y1: f64, v1: f64, l: f64) -> f64 {
     y0.max(y1) + 4.0 / 27.0 * l * (v0.abs() + v1.abs())
 }
 
 /// The cubic's largest |value| over [0, l].
-pub(super) fn cubic_max_abs(y0: f64, v0: f64, y1: f64, v1: f64, l: f64) -> f64 {
+pub(crate) fn cubic_max_abs(y0: f64, v0: f64, y1: f64, v1: f64, l: f64) -> f64 {
     cubic_max(y0, v0, y1, v1, l).max(cubic_max(-y0, -v0, -y1, -v1, l))
 }
 
@@ -166,7 +166,7 @@ pub(super) fn cubic_max_abs(y0: f64, v0: f64, y1: f64, v1: f64, l: f64) -> f64 {
 /// check that clears a span clears every shorter cubic in it, as a walk would draw them), and
 /// once for the rounding of the bound itself.
 #[inline]
-pub(super) fn cubic_margin(m4: f64, l: f64) -> f64 {
+pub(crate) fn cubic_margin(m4: f64, l: f64) -> f64 {
     let l2 = l * l;
     3.0 * m4 * l2 * l2 / 384.0
 }
