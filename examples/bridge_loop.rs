@@ -8,7 +8,8 @@
 //!
 //! Arguments, all optional and in this order: the contact element (`sears`, the preset's, or
 //! `linear`, or any `--contact` name), the number of spans (3, the preset's), the stage (`solve`:
-//! one run with its histories; `estimate`: the error estimate's run with half the step; `none`:
+//! one run with its histories; `estimate`: the error estimate's run with half the step (a
+//! summary: no histories); `none`:
 //! the run without contact; `all`: the three, the whole work of `pounding bridge --json` but
 //! for reading the record and writing the report), the number of repeats (1), then `KEY=VALUE`
 //! settings (as `--set`). The scene is the `bridge-3-span` preset on its record (the first 8 s
@@ -25,7 +26,9 @@
 use pounding::io::bridge_settings::{BRIDGE, BridgeSetup};
 use pounding::io::preset;
 use pounding::io::settings::SettingValue;
-use pounding::model::bridge::{BridgeScenario, estimate, estimate_error, solve, solve_with};
+use pounding::model::bridge::{
+    BridgeScenario, estimate, estimate_error, solve, solve_summary, solve_with,
+};
 use pounding::model::building::ContactModel;
 use pounding::model::control::Control;
 use pounding::model::settings::{BRIDGE_SETTINGS, Kind};
@@ -121,9 +124,8 @@ fn main() {
     for _ in 0..repeats {
         let runs = match stage {
             "solve" => solve(sc, &motion).map(|r| vec![("solve", r)]),
-            "estimate" => {
-                solve(&estimate::refined(sc, 2.0), &motion).map(|r| vec![("estimate", r)])
-            }
+            "estimate" => solve_summary(&estimate::refined(sc, 2.0), &motion, control)
+                .map(|r| vec![("estimate", r)]),
             "none" => solve(&free, &motion).map(|r| vec![("none", r)]),
             // As `pounding bridge`: the run, its error estimate (a failed one is left out of the
             // report, not an error) and the run without contact.

@@ -10,6 +10,21 @@
 //! that margin below the gap has proved that no contact starts there, without looking at the
 //! points in between; and likewise for a peak.
 
+/// What the rounding of the states at two points can move a cubic's maximum by, relative to the
+/// size of its ends and slopes: far above the states' round-off, far below any gap or peak.
+pub(crate) const ROUNDING: f64 = 1e-12;
+
+/// Whether a signal's rate, known with its own rate (the acceleration) at both ends of a span
+/// `l`, keeps one sign over it: the cubic through them, widened by its margin from the bound `m5`
+/// on the rate's fourth derivative, stays off zero.
+pub(crate) fn monotone(start: [f64; 2], end: [f64; 2], l: f64, m5: f64) -> bool {
+    let margin = cubic_margin(m5, l)
+        + ROUNDING * (start[0].abs() + end[0].abs() + l * (start[1].abs() + end[1].abs()));
+    let high = cubic_max(start[0], start[1], end[0], end[1], l);
+    let low = -cubic_max(-start[0], -start[1], -end[0], -end[1], l);
+    low - margin > 0.0 || high + margin < 0.0
+}
+
 /// Bounds on one mode's response over a stretch of length `len` where its forcing is linear,
 /// from the augmented state y = [q, q', g, g'] at its start: on |q| itself (the free
 /// vibration's amplitude plus the particular line's larger end), on its fourth derivative and on

@@ -51,7 +51,7 @@ pub fn estimate_error(
     control: &Control,
 ) -> Result<BridgeErrorEstimate, SolveError> {
     let start = std::time::Instant::now();
-    let fine = super::solve_with(&refined(sc, 2.0), motion, control)?;
+    let fine = super::solve::solve_summary(&refined(sc, 2.0), motion, control)?;
     let mut e = compare(r, &fine);
     e.max_force *= 2.0;
     e.peak_displacement *= 2.0;

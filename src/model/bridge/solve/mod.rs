@@ -892,6 +892,19 @@ impl Histories {
         }
     }
 
+    fn reserve(&mut self, samples: usize) {
+        self.time_s.reserve(samples);
+        for v in [
+            &mut self.force,
+            &mut self.opening,
+            &mut self.girder,
+            &mut self.pier,
+            &mut self.absolute,
+        ] {
+            v.iter_mut().for_each(|x| x.reserve(samples));
+        }
+    }
+
     fn push(&mut self, run: &Run, t: f64) {
         self.time_s.push(t);
         for (j, js) in run.joints.iter().enumerate() {
@@ -964,11 +977,24 @@ pub fn solve_stepped(
     run_publishing(sc, motion, Control::never(), None, Stretches::Stepped)
 }
 
-/// Whether a run jumps over its free stretches or steps them grid point by grid point.
+/// [`solve_with`] for a run only compared with another (the error estimate's): the same
+/// contacts, peaks, largest closings and openings and ledger, without the histories and the
+/// girders' waves for drawing (left empty).
+pub fn solve_summary(
+    sc: &BridgeScenario,
+    motion: &GroundMotion,
+    control: &Control,
+) -> Result<BridgeResult, SolveError> {
+    run_publishing(sc, motion, control, None, Stretches::Summary)
+}
+
+/// Whether a run jumps over its free stretches or steps them grid point by grid point, and
+/// whether it keeps its histories and girder waves.
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Stretches {
     Taken,
     Stepped,
+    Summary,
 }
 
 /// [`solve_with`], handing `publish` what the run has solved so far, at most once per `every`
@@ -1012,8 +1038,18 @@ fn run_publishing(
     }
     let mut run = Run::new(sc, motion, h);
     run.tabulate_stretches(steps);
-    let stride = steps.div_ceil(MAX_SAMPLES).max(1);
+    let histories = stretches != Stretches::Summary;
+    // A summary records nothing: its only sample is the start's (a grid point it never
+    // reaches again).
+    let stride = if histories {
+        steps.div_ceil(MAX_SAMPLES).max(1)
+    } else {
+        usize::MAX
+    };
     let mut hist = Histories::new(run.joints.len(), sc.spans);
+    if histories {
+        hist.reserve(steps / stride + 2);
+    }
     let mut peaks = Peaks {
         girder: vec![0.0; sc.spans],
         pier: vec![0.0; sc.spans],
@@ -1052,7 +1088,7 @@ fn run_publishing(
             steps,
         };
         let taken = match stretches {
-            Stretches::Taken => run.free_stretch(n, &mut sink),
+            Stretches::Taken | Stretches::Summary => run.free_stretch(n, &mut sink),
             Stretches::Stepped => {
                 run.settle_if_free();
                 0
@@ -1064,7 +1100,7 @@ fn run_publishing(
             run.step(n);
             n += 1;
             peaks.read(&run.frames);
-            if n % stride == 0 || n == steps {
+            if histories && (n.is_multiple_of(stride) || n == steps) {
                 hist.push(&run, n as f64 * h);
             }
         }
@@ -1080,6 +1116,9 @@ fn run_publishing(
                 why: "the frames' motion is no longer finite; lower solver.max_step or the contact stiffness".into(),
             });
         }
+    }
+    if !histories {
+        run.girders.iter_mut().for_each(|g| *g = None);
     }
     let contacts = std::mem::take(&mut run.contacts);
     Ok(finish(

@@ -13,20 +13,20 @@
 //! before it, where the stepped run takes over.
 
 use super::*;
-use crate::model::bound::{cubic_bound, cubic_margin, cubic_max, mode_bounds};
+use crate::model::bound::{ROUNDING, cubic_bound, cubic_margin, cubic_max, mode_bounds, monotone};
 use crate::model::building::modal::{StepIntegrals, doublings, integrals_over, step_powers};
 
 /// The longest stretch, in grid steps: each frame's exact maps over 1 to this many steps are
 /// tabulated once a run.
 const MAX_STRETCH: usize = 2048;
 
-/// What the rounding of the states at two points can move a cubic's maximum by, relative to the
-/// size of its ends and slopes (as the buildings' free stretches allow).
-const ROUNDING: f64 = 1e-12;
+/// A part no longer than twice this (in grid steps) is walked rather than halved again.
+const WALK_SPAN: usize = 8;
 
 /// A check spans at most this many radians of the fastest frame mode: the cubic between two
-/// checks is then within (w l)^4 / 128 = 5e-4 of the amplitude.
-const CHECK_RADIANS: f64 = 0.5;
+/// checks is then within (w l)^4 / 128 = 8e-3 of the amplitude (a part it cannot clear is
+/// halved).
+const CHECK_RADIANS: f64 = 1.0;
 
 /// One frame's exact maps over 1..=count grid steps, and the ledger's integrals over a number
 /// of steps (joined from doublings, kept once made).
@@ -71,7 +71,7 @@ pub(super) struct Sink<'s> {
 
 impl Sink<'_> {
     fn records(&self, n: usize) -> bool {
-        n.is_multiple_of(self.stride) || n == self.steps
+        self.stride != usize::MAX && (n.is_multiple_of(self.stride) || n == self.steps)
     }
 }
 
@@ -91,24 +91,30 @@ pub(super) struct Scratch {
     y0: Vec<[[f64; 4]; 2]>,
     /// The ground acceleration at each frame's support at the stretch's start and end.
     accel: Vec<(f64, f64)>,
-    /// Bounds on each joint's smooth closing's fourth derivative and on its girders' waves.
+    /// Bounds on each joint's smooth closing's fourth and fifth derivatives and on its
+    /// girders' waves.
     joint_m4: Vec<f64>,
+    joint_m5: Vec<f64>,
     joint_env: Vec<f64>,
     /// Bounds on each frame signal's fourth derivative, and whether it can reach its peak at
     /// all in the stretch.
     signal_m4: Vec<[f64; 3]>,
+    signal_m5: Vec<[f64; 3]>,
     signal_open: Vec<[bool; 3]>,
     /// Each frame's modal (q, q') at the last check and at the one being made.
     modes_a: Vec<[(f64, f64); 2]>,
     modes_b: Vec<[(f64, f64); 2]>,
     /// The ground at every support at the check being made (the first of each delay read).
     ground: Vec<GroundState>,
-    /// Each joint's closing without the waves, and its rate, at the last check and this one.
-    joint_a: Vec<[f64; 2]>,
-    joint_b: Vec<[f64; 2]>,
-    /// Each frame signal's value and rate at the last check and this one.
-    signal_a: Vec<[[f64; 2]; 3]>,
-    signal_b: Vec<[[f64; 2]; 3]>,
+    /// Each frame's modal accelerations at the check being made.
+    accel_b: Vec<[f64; 2]>,
+    /// Each joint's closing without the waves, its rate and acceleration, at the last check
+    /// and this one.
+    joint_a: Vec<[f64; 3]>,
+    joint_b: Vec<[f64; 3]>,
+    /// Each frame signal's value, rate and acceleration at the last check and this one.
+    signal_a: Vec<[[f64; 3]; 3]>,
+    signal_b: Vec<[[f64; 3]; 3]>,
     /// What a part must be walked for: per joint, per frame signal.
     joint_look: Vec<bool>,
     signal_look: Vec<[bool; 3]>,
@@ -120,6 +126,52 @@ pub(super) struct Scratch {
     frame_read: Vec<bool>,
     modes_walk: Vec<[(f64, f64); 2]>,
     ground_walk: Vec<GroundState>,
+    /// The `_b` values of the parts being halved, outermost first (and spares, reused).
+    saved: Vec<Saved>,
+    depth: usize,
+}
+
+/// A check's values at one grid point, kept while the part before it is halved.
+#[derive(Default)]
+struct Saved {
+    modes: Vec<[(f64, f64); 2]>,
+    ground: Vec<GroundState>,
+    joint: Vec<[f64; 3]>,
+    signal: Vec<[[f64; 3]; 3]>,
+}
+
+impl Scratch {
+    /// The part's end becomes the next part's start.
+    fn swap_ends(&mut self) {
+        std::mem::swap(&mut self.modes_a, &mut self.modes_b);
+        std::mem::swap(&mut self.joint_a, &mut self.joint_b);
+        std::mem::swap(&mut self.signal_a, &mut self.signal_b);
+    }
+
+    fn save_b(&mut self) {
+        if self.saved.len() <= self.depth {
+            self.saved.push(Saved::default());
+        }
+        let s = &mut self.saved[self.depth];
+        s.modes.clone_from(&self.modes_b);
+        s.ground.clone_from(&self.ground);
+        s.joint.clone_from(&self.joint_b);
+        s.signal.clone_from(&self.signal_b);
+        self.depth += 1;
+    }
+
+    fn restore_b(&mut self) {
+        self.depth -= 1;
+        let s = &mut self.saved[self.depth];
+        std::mem::swap(&mut s.modes, &mut self.modes_b);
+        std::mem::swap(&mut s.ground, &mut self.ground);
+        std::mem::swap(&mut s.joint, &mut self.joint_b);
+        std::mem::swap(&mut s.signal, &mut self.signal_b);
+    }
+
+    fn drop_saved(&mut self) {
+        self.depth -= 1;
+    }
 }
 
 impl<'a> Run<'a> {
@@ -159,18 +211,31 @@ impl<'a> Run<'a> {
         let mut a = 0;
         let mut reached = len;
         while a < len {
-            let next_record = (n0 + a) / sink.stride * sink.stride + sink.stride;
-            let b = (a + self.check).min(len).min(next_record - n0);
-            if let Some(m) = self.check_part(&mut w, n0, a, b, sink) {
+            let b = (a + self.check).min(len);
+            self.values_at(&mut w, n0, b);
+            let onset = self.check_part(&mut w, n0, a, b, sink);
+            // The samples the part holds, up to the grid point before an onset.
+            let to = onset.map_or(b, |m| m - 1);
+            let first = ((n0 + a) / sink.stride)
+                .saturating_add(1)
+                .saturating_mul(sink.stride);
+            let mut r = first;
+            while r <= n0 + to {
+                self.record_at(&mut w, n0, r - n0, b, sink);
+                r = r.saturating_add(sink.stride);
+            }
+            if let Some(m) = onset {
                 reached = m - 1;
                 break;
             }
-            if sink.records(n0 + b) {
-                self.record_at(&mut w, n0, b, sink);
+            // The run's last grid point is always a sample.
+            if n0 + b == sink.steps
+                && sink.records(sink.steps)
+                && !sink.steps.is_multiple_of(sink.stride)
+            {
+                self.record_at(&mut w, n0, b, b, sink);
             }
-            std::mem::swap(&mut w.modes_a, &mut w.modes_b);
-            std::mem::swap(&mut w.joint_a, &mut w.joint_b);
-            std::mem::swap(&mut w.signal_a, &mut w.signal_b);
+            w.swap_ends();
             a = b;
         }
         if reached > 0 {
@@ -226,6 +291,7 @@ impl<'a> Run<'a> {
         w.y0.clear();
         w.accel.clear();
         w.signal_m4.clear();
+        w.signal_m5.clear();
         w.signal_open.clear();
         let mut mode_m4 = Vec::with_capacity(nf);
         for (i, f) in self.frames.iter().enumerate() {
@@ -238,7 +304,7 @@ impl<'a> Run<'a> {
                 std::array::from_fn(|k| [f.q[k], f.v[k], -f.gamma[k] * a0, -f.gamma[k] * slope]);
             let bounds = [0, 1].map(|k| mode_bounds(f.omega[k], f.zeta[k], &y[k], span));
             w.y0.push(y);
-            mode_m4.push([bounds[0][1], bounds[1][1]]);
+            mode_m4.push([[bounds[0][1], bounds[1][1]], [bounds[0][2], bounds[1][2]]]);
             let peaks = [
                 sink.peaks.girder[i],
                 sink.peaks.pier[i],
@@ -247,6 +313,8 @@ impl<'a> Run<'a> {
             let shapes = signal_shapes(f);
             w.signal_m4
                 .push(shapes.map(|c| c[0].abs() * bounds[0][1] + c[1].abs() * bounds[1][1]));
+            w.signal_m5
+                .push(shapes.map(|c| c[0].abs() * bounds[0][2] + c[1].abs() * bounds[1][2]));
             // A signal whose modes' amplitudes cannot reach its peak anywhere in the stretch is
             // left alone for all of it.
             w.signal_open.push(std::array::from_fn(|s| {
@@ -256,19 +324,22 @@ impl<'a> Run<'a> {
             }));
         }
         w.joint_m4.clear();
+        w.joint_m5.clear();
         w.joint_env.clear();
         for js in &self.joints {
-            let (mut m4, mut env) = (0.0, 0.0);
+            let (mut m4, mut m5, mut env) = (0.0, 0.0, 0.0);
             for side in &js.sides {
                 if let Some((i, end)) = side.girder {
-                    let f = &self.frames[i];
-                    m4 += f.girder[0].abs() * mode_m4[i][0] + f.girder[1].abs() * mode_m4[i][1];
+                    let (f, [b4, b5]) = (&self.frames[i], mode_m4[i]);
+                    m4 += f.girder[0].abs() * b4[0] + f.girder[1].abs() * b4[1];
+                    m5 += f.girder[0].abs() * b5[0] + f.girder[1].abs() * b5[1];
                     if let Some(g) = &self.girders[i] {
                         env += g.envelope_from(n0 + 1)[end];
                     }
                 }
             }
             w.joint_m4.push(m4);
+            w.joint_m5.push(m5);
             w.joint_env.push(env);
         }
         w.waves.clear();
@@ -284,10 +355,10 @@ impl<'a> Run<'a> {
                 .map(|f| [(f.q[0], f.v[0]), (f.q[1], f.v[1])]),
         );
         w.modes_b.clone_from(&w.modes_a);
+        w.modes_walk.clone_from(&w.modes_a);
         self.ground_into(t0, &mut w.ground);
-        self.smooth_values(w);
-        std::mem::swap(&mut w.joint_a, &mut w.joint_b);
-        std::mem::swap(&mut w.signal_a, &mut w.signal_b);
+        self.smooth_values(w, 0);
+        w.swap_ends();
     }
 
     /// The ground at every support at t, read once per delay.
@@ -312,34 +383,59 @@ impl<'a> Run<'a> {
 
     /// Each joint's closing without the girders' waves and each frame signal, with their rates,
     /// from `w.modes_b` and `w.ground`, into `w.joint_b` and `w.signal_b`.
-    fn smooth_values(&self, w: &mut Scratch) {
+    fn smooth_values(&self, w: &mut Scratch, j: usize) {
+        // Each mode's acceleration from its equation of motion, its forcing linear in time.
+        let s = j as f64 * self.h;
+        w.accel_b.clear();
+        for ((f, y), m) in self.frames.iter().zip(&w.y0).zip(&w.modes_b) {
+            w.accel_b.push(std::array::from_fn(|k| {
+                y[k][2] + y[k][3] * s
+                    - 2.0 * f.zeta[k] * f.omega[k] * m[k].1
+                    - f.omega[k] * f.omega[k] * m[k].0
+            }));
+        }
         w.joint_b.clear();
         for js in &self.joints {
-            let mut out = [0.0; 2];
+            let mut out = [0.0; 3];
             for (side, sign) in js.sides.iter().zip([1.0, -1.0]) {
                 let g = &w.ground[side.support];
-                let (mut u, mut v) = (g.displacement, g.velocity);
+                let mut x = [g.displacement, g.velocity, g.accel];
                 if let Some((i, _)) = side.girder {
-                    let (f, m) = (&self.frames[i], &w.modes_b[i]);
-                    u += f.girder[0] * m[0].0 + f.girder[1] * m[1].0;
-                    v += f.girder[0] * m[0].1 + f.girder[1] * m[1].1;
+                    let (f, m, acc) = (&self.frames[i], &w.modes_b[i], &w.accel_b[i]);
+                    x[0] += f.girder[0] * m[0].0 + f.girder[1] * m[1].0;
+                    x[1] += f.girder[0] * m[0].1 + f.girder[1] * m[1].1;
+                    x[2] += f.girder[0] * acc[0] + f.girder[1] * acc[1];
                 }
-                out[0] += sign * u;
-                out[1] += sign * v;
+                for (o, x) in out.iter_mut().zip(x) {
+                    *o += sign * x;
+                }
             }
             w.joint_b.push(out);
         }
         w.signal_b.clear();
-        for (f, m) in self.frames.iter().zip(&w.modes_b) {
-            w.signal_b.push(
-                signal_shapes(f)
-                    .map(|c| [c[0] * m[0].0 + c[1] * m[1].0, c[0] * m[0].1 + c[1] * m[1].1]),
-            );
+        for ((f, m), acc) in self.frames.iter().zip(&w.modes_b).zip(&w.accel_b) {
+            w.signal_b.push(signal_shapes(f).map(|c| {
+                [
+                    c[0] * m[0].0 + c[1] * m[1].0,
+                    c[0] * m[0].1 + c[1] * m[1].1,
+                    c[0] * acc[0] + c[1] * acc[1],
+                ]
+            }));
         }
     }
 
-    /// Checks the part from grid step a to b of the stretch from `n0`, walking what its bounds
-    /// cannot clear. Returns the grid step of an onset found in it.
+    /// The frames' modes, the ground, the joints' smooth closings and the frame signals j grid
+    /// steps into the stretch from `n0`, into the `_b` buffers.
+    fn values_at(&self, w: &mut Scratch, n0: usize, j: usize) {
+        self.modes_at(w, j);
+        self.ground_into((n0 + j) as f64 * self.h, &mut w.ground);
+        self.smooth_values(w, j);
+    }
+
+    /// Checks the part from grid step a to b of the stretch from `n0` (its values at a in the
+    /// `_a` buffers, at b in the `_b` ones): clears it, halves it, or walks what its bounds
+    /// cannot clear once it is short. Returns the grid step of an onset found in it. Leaves
+    /// b's values in the `_b` buffers.
     fn check_part(
         &mut self,
         w: &mut Scratch,
@@ -348,61 +444,108 @@ impl<'a> Run<'a> {
         b: usize,
         sink: &mut Sink,
     ) -> Option<usize> {
-        let h = self.h;
-        let l = (b - a) as f64 * h;
-        self.modes_at(w, b);
-        self.ground_into((n0 + b) as f64 * h, &mut w.ground);
-        self.smooth_values(w);
+        if !self.flag(w, a, b, sink) {
+            return None;
+        }
+        if b - a <= 2 * WALK_SPAN {
+            return self.walk(w, n0, a, b, sink);
+        }
+        let mid = a + (b - a) / 2;
+        w.save_b();
+        self.values_at(w, n0, mid);
+        let first = self.check_part(w, n0, a, mid, sink);
+        if first.is_some() {
+            w.drop_saved();
+            return first;
+        }
+        w.swap_ends();
+        w.restore_b();
+        self.check_part(w, n0, mid, b, sink)
+    }
+
+    /// Decides what the part from a to b must be looked into for (into `w.joint_look` and
+    /// `w.signal_look`): whether anything must.
+    fn flag(&mut self, w: &mut Scratch, a: usize, b: usize, sink: &mut Sink) -> bool {
+        let l = (b - a) as f64 * self.h;
         let contact = self.sc.contact != ContactModel::None;
         let seat = self.sc.seat_length_m;
-        let mut any = false;
+        // A joint that may close its gap or unseat in the part must be walked for it; the
+        // others may be found at a largest value only.
+        let mut events = false;
+        let mut peaks_only = false;
         for (j, js) in self.joints.iter().enumerate() {
-            let ([c0, r0], [c1, r1]) = (w.joint_a[j], w.joint_b[j]);
+            let ([c0, r0, _], [c1, r1, _]) = (w.joint_a[j], w.joint_b[j]);
             let margin = cubic_margin(w.joint_m4[j], l)
                 + ROUNDING * (c0.abs() + c1.abs() + l * (r0.abs() + r1.abs()))
                 + w.joint_env[j];
             let gap = js.joint.gap_m;
-            let quick_hi = cubic_bound(c0, r0, c1, r1, l) + margin;
-            let quick_lo = -cubic_bound(-c0, -r0, -c1, -r1, l) - margin;
-            let clear = |hi: f64, lo: f64| {
-                !(contact && hi >= gap)
-                    && hi < js.max_closing
-                    && -lo < js.max_opening
-                    && (js.unseated.is_some() || -lo <= seat)
+            // (may close its gap or unseat, may pass its largest closing or opening)
+            let reach = |hi: f64, lo: f64| {
+                (
+                    (contact && hi >= gap) || (js.unseated.is_none() && -lo > seat),
+                    hi >= js.max_closing || -lo >= js.max_opening,
+                )
             };
-            let look = !clear(quick_hi, quick_lo) && {
-                let hi = cubic_max(c0, r0, c1, r1, l) + margin;
-                let lo = -cubic_max(-c0, -r0, -c1, -r1, l) - margin;
-                !clear(hi, lo)
+            let quick = reach(
+                cubic_bound(c0, r0, c1, r1, l) + margin,
+                -cubic_bound(-c0, -r0, -c1, -r1, l) - margin,
+            );
+            let (event, peak) = if quick == (false, false) {
+                quick
+            } else {
+                reach(
+                    cubic_max(c0, r0, c1, r1, l) + margin,
+                    -cubic_max(-c0, -r0, -c1, -r1, l) - margin,
+                )
             };
-            w.joint_look[j] = look;
-            any |= look;
+            w.joint_look[j] = event || peak;
+            events |= event;
+            peaks_only |= peak && !event;
         }
+        // Where no onset can come first, a signal whose rate keeps its sign over the part has
+        // its largest value at an end: taken at once, as a walk would take it (a joint's only
+        // where no girder waves ride on it).
+        if !events && peaks_only {
+            for j in 0..self.joints.len() {
+                let ([_, r0, a0], [c1, r1, a1]) = (w.joint_a[j], w.joint_b[j]);
+                if w.joint_look[j]
+                    && w.joint_env[j] == 0.0
+                    && monotone([r0, a0], [r1, a1], l, w.joint_m5[j])
+                {
+                    let js = &mut self.joints[j];
+                    js.max_closing = js.max_closing.max(c1);
+                    js.max_opening = js.max_opening.max(-c1);
+                    w.joint_look[j] = false;
+                }
+            }
+        }
+        let mut any = w.joint_look.iter().any(|&x| x);
         for i in 0..self.frames.len() {
             let peaks = [
-                sink.peaks.girder[i],
-                sink.peaks.pier[i],
-                sink.peaks.bearing[i],
+                &mut sink.peaks.girder[i],
+                &mut sink.peaks.pier[i],
+                &mut sink.peaks.bearing[i],
             ];
-            for (s, &peak) in peaks.iter().enumerate() {
+            for (s, peak) in peaks.into_iter().enumerate() {
+                let ([u0, r0, a0], [u1, r1, a1]) = (w.signal_a[i][s], w.signal_b[i][s]);
                 let look = w.signal_open[i][s] && {
-                    let ([u0, r0], [u1, r1]) = (w.signal_a[i][s], w.signal_b[i][s]);
                     let margin = cubic_margin(w.signal_m4[i][s], l)
                         + ROUNDING * (u0.abs() + u1.abs() + l * (r0.abs() + r1.abs()));
-                    cubic_bound(u0.abs(), r0.abs(), u1.abs(), r1.abs(), l) + margin >= peak
+                    cubic_bound(u0.abs(), r0.abs(), u1.abs(), r1.abs(), l) + margin >= *peak
                         && cubic_max(u0, r0, u1, r1, l).max(cubic_max(-u0, -r0, -u1, -r1, l))
                             + margin
-                            >= peak
+                            >= *peak
                 };
+                let look = look
+                    && !(!events && monotone([r0, a0], [r1, a1], l, w.signal_m5[i][s]) && {
+                        *peak = peak.max(u1.abs());
+                        true
+                    });
                 w.signal_look[i][s] = look;
                 any |= look;
             }
         }
-        if any {
-            self.walk(w, n0, a, b, sink)
-        } else {
-            None
-        }
+        any
     }
 
     /// Walks grid steps a + 1 ..= b of the stretch for the joints and frame signals its check
@@ -540,24 +683,34 @@ impl<'a> Run<'a> {
         c
     }
 
-    /// Records the sample at grid step b of the stretch (its modes and ground in `w`).
-    fn record_at(&self, w: &mut Scratch, n0: usize, b: usize, sink: &mut Sink) {
-        let n = n0 + b;
+    /// Records the sample at grid step j of the stretch, in the part ending at b (whose
+    /// modes and ground `w` holds).
+    fn record_at(&self, w: &mut Scratch, n0: usize, j: usize, b: usize, sink: &mut Sink) {
+        let n = n0 + j;
+        // The check's reading at its end, or a reading of its own.
+        let (modes, ground) = if j == b {
+            (&w.modes_b, &w.ground)
+        } else {
+            for (i, steps) in self.stretch_steps.iter().enumerate() {
+                w.modes_walk[i] = steps.state(&w.y0[i], j);
+            }
+            self.ground_into(n as f64 * self.h, &mut w.ground_walk);
+            (&w.modes_walk, &w.ground_walk)
+        };
         w.waves.iter_mut().for_each(|x| *x = None);
         let hist = &mut *sink.hist;
         hist.time_s.push(n as f64 * self.h);
         for j in 0..self.joints.len() {
-            let c = self.smooth_closing(j, &w.modes_b, &w.ground)
-                + self.waves_across(j, &mut w.waves, n);
+            let c = self.smooth_closing(j, modes, ground) + self.waves_across(j, &mut w.waves, n);
             hist.force[j].push(0.0);
             hist.opening[j].push(-c);
         }
         for (i, f) in self.frames.iter().enumerate() {
-            let m = &w.modes_b[i];
+            let m = &modes[i];
             let girder = f.girder[0] * m[0].0 + f.girder[1] * m[1].0;
             hist.girder[i].push(girder);
             hist.pier[i].push(f.pier[0] * m[0].0 + f.pier[1] * m[1].0);
-            hist.absolute[i].push(girder + w.ground[i + 1].displacement);
+            hist.absolute[i].push(girder + ground[i + 1].displacement);
         }
     }
 

@@ -2,23 +2,10 @@
 //! point by grid point only where a bound cannot rule out an onset or a new peak.
 
 use super::*;
-use crate::model::bound::{cubic_bound, cubic_margin, cubic_max, cubic_max_abs, mode_bounds};
+use crate::model::bound::{
+    ROUNDING, cubic_bound, cubic_margin, cubic_max, cubic_max_abs, mode_bounds, monotone,
+};
 use crate::model::building::modal::evaluate;
-
-/// What the rounding of the states at two points can move a cubic's maximum by, relative to the
-/// size of its ends and slopes: far above the states' round-off, far below any gap or peak.
-const ROUNDING: f64 = 1e-12;
-
-/// Whether a signal's rate, known with its own rate (the acceleration) at both ends of a span
-/// `l`, keeps one sign over it: the cubic through them, widened by its margin from the bound `m5`
-/// on the rate's fourth derivative, stays off zero.
-fn monotone(start: [f64; 2], end: [f64; 2], l: f64, m5: f64) -> bool {
-    let margin = cubic_margin(m5, l)
-        + ROUNDING * (start[0].abs() + end[0].abs() + l * (start[1].abs() + end[1].abs()));
-    let high = cubic_max(start[0], start[1], end[0], end[1], l);
-    let low = -cubic_max(-start[0], -start[1], -end[0], -end[1], l);
-    low - margin > 0.0 || high + margin < 0.0
-}
 
 /// A part this short (in grid steps) is walked rather than halved again.
 const WALK_SPAN: usize = 8;
