@@ -190,13 +190,14 @@ impl Ringing {
     /// inside it).
     #[inline]
     pub fn trips_back(&self, n: usize, m: usize, lag: f64) -> f64 {
-        let past = m as f64 - lag - n as f64;
+        // Signed 64-bit conversions: a single instruction each, where unsigned ones are not.
+        let past = (m as i64 - n as i64) as f64 - lag;
         if past <= 0.0 {
             return 0.0;
         }
         // A ceiling of a positive value by truncation (no libm call).
         let x = past / self.round_steps;
-        let t = x as u64 as f64;
+        let t = x as i64 as f64;
         if t < x { t + 1.0 } else { t }
     }
 
@@ -221,20 +222,27 @@ impl Ringing {
 }
 
 impl Fold {
-    /// Q at grid index m - lag from the frozen window `w`, given A there: j A + r^j Q(m - lag -
-    /// j T), as [`Ringing::fold_q`] reads it.
+    /// Where, in a window of `len` samples ending at grid index `last`, the stencil for grid
+    /// index m starts (its four samples inside the window, clear of its last two), or `None`
+    /// where the generic reading is needed (the window's start, its last two samples).
     #[inline]
-    pub fn read(&self, w: &Frozen, m: usize, a: f64) -> f64 {
+    pub fn start(&self, last: usize, len: usize, m: usize) -> Option<usize> {
         let base = m as isize + self.offset;
-        let last = w.n as isize;
-        let first = last - w.q.len() as isize + 1;
-        let inside = if base > first.max(0) && base <= last - 2 {
-            let k = (base - 1 - first) as usize;
-            let s = &w.q[k..k + 4];
-            self.w[0] * s[0] + self.w[1] * s[1] + self.w[2] * s[2] + self.w[3] * s[3]
-        } else {
+        let (last, first) = (last as isize, last as isize - len as isize + 1);
+        (base > first.max(0) && base <= last - 2).then(|| (base - 1 - first) as usize)
+    }
+
+    /// Q at grid index m - lag from the frozen window `w`, given A there: j A + r^J Q(m - lag -
+    /// j T), as [`Ringing::fold_q`] reads it; `start` from [`Fold::start`].
+    #[inline]
+    pub fn read_at(&self, w: &Frozen, start: Option<usize>, m: usize, a: f64) -> f64 {
+        let inside = match start {
+            Some(k) => {
+                let s = &w.q[k..k + 4];
+                self.w[0] * s[0] + self.w[1] * s[1] + self.w[2] * s[2] + self.w[3] * s[3]
+            }
             // Near the window's ends (its start, or its last two samples) the generic reading.
-            window_at(&w.q, w.n, base as f64 + self.x)
+            None => window_at(&w.q, w.n, (m as isize + self.offset) as f64 + self.x),
         };
         self.j * a + self.weight * inside
     }

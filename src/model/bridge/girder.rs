@@ -330,7 +330,7 @@ impl GirderWaves {
         };
         let r = &self.ringing;
         let [w0, w1] = &q.ends;
-        let steps = (n - w0.n) as f64;
+        let steps = (n as i64 - w0.n as i64) as f64;
         // One exponential for both ends: A and B decay alike since both fell quiet at once.
         let base = r.decay(steps);
         let (back, half) = (self.fold_at(q, 0, n), self.fold_at(q, 1, n));
@@ -341,10 +341,14 @@ impl GirderWaves {
             base * (w1.b + k * w1.a) * self.inv_m,
         );
         let (z, r2, rh2) = (self.inv_z, 2.0 * self.r, 2.0 * self.inv_z * self.r_half);
-        let own0 = z * (a0 + r2 * back.read(w0, n, a0 * self.grow[0])) - b0;
-        let far0 = rh2 * half.read(w0, n, a0 * self.grow[1]) - b0;
-        let own1 = z * (a1 + r2 * back.read(w1, n, a1 * self.grow[0])) - b1;
-        let far1 = rh2 * half.read(w1, n, a1 * self.grow[1]) - b1;
+        // Both ends' windows end at the same index and hold as many samples: one stencil
+        // start per look-up serves both.
+        let len = w0.q.len();
+        let (kb, kh) = (back.start(w0.n, len, n), half.start(w0.n, len, n));
+        let own0 = z * (a0 + r2 * back.read_at(w0, kb, n, a0 * self.grow[0])) - b0;
+        let far0 = rh2 * half.read_at(w0, kh, n, a0 * self.grow[1]) - b0;
+        let own1 = z * (a1 + r2 * back.read_at(w1, kb, n, a1 * self.grow[0])) - b1;
+        let far1 = rh2 * half.read_at(w1, kh, n, a1 * self.grow[1]) - b1;
         // Each end's own reading less the other end's far one (see the module's sign rule).
         [own0 - far1, far0 - own1]
     }
