@@ -5,6 +5,7 @@
 
 use pounding::model::bridge::{BridgeResult, BridgeScenario, solve, solve_stepped};
 use pounding::model::building::ContactModel;
+use pounding::model::building::result::RawContact;
 
 fn el_centro(seconds: f64) -> pounding::model::motion::GroundMotion {
     pounding::io::motion::built_in("elcentro-1940")
@@ -46,6 +47,14 @@ fn differences(a: &BridgeResult, b: &BridgeResult) -> Vec<(&'static str, f64)> {
             })
             .fold(0.0, f64::max)
     };
+    // The largest of `d` over the two runs' contacts, paired in order.
+    let contacts = |d: &dyn Fn(&RawContact, &RawContact) -> f64| {
+        a.contacts
+            .iter()
+            .zip(&b.contacts)
+            .map(|(p, q)| d(p, q))
+            .fold(0.0, f64::max)
+    };
     let impulse_scale = b.contacts.iter().map(|c| c.impulse_ns).fold(0.0, f64::max);
     let force_scale = b.max_pounding_force_n;
     vec![
@@ -78,27 +87,15 @@ fn differences(a: &BridgeResult, b: &BridgeResult) -> Vec<(&'static str, f64)> {
         ),
         (
             "contact starts [s]",
-            a.contacts
-                .iter()
-                .zip(&b.contacts)
-                .map(|(p, q)| (p.start_s - q.start_s).abs())
-                .fold(0.0, f64::max),
+            contacts(&|p, q| (p.start_s - q.start_s).abs()),
         ),
         (
             "contact peaks",
-            a.contacts
-                .iter()
-                .zip(&b.contacts)
-                .map(|(p, q)| off(p.peak_force_n, q.peak_force_n, force_scale))
-                .fold(0.0, f64::max),
+            contacts(&|p, q| off(p.peak_force_n, q.peak_force_n, force_scale)),
         ),
         (
             "contact impulses",
-            a.contacts
-                .iter()
-                .zip(&b.contacts)
-                .map(|(p, q)| off(p.impulse_ns, q.impulse_ns, impulse_scale))
-                .fold(0.0, f64::max),
+            contacts(&|p, q| off(p.impulse_ns, q.impulse_ns, impulse_scale)),
         ),
         (
             "opening histories",
