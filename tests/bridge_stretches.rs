@@ -1,9 +1,10 @@
 //! A bridge run jumps over its free stretches (no joint force, frames exact, girders ringing in
-//! closed form) and checks them only at a few points with proven bounds: it must find what
-//! stepping every grid point finds, for every element, under uniform and travelling excitation,
-//! where girders unseat and where their waves never decay.
+//! closed form) and checks them only at a few points against bounds: it must find what walking
+//! every grid point of them finds, to the bit, and what stepping every grid point finds, to
+//! rounding; for every element, under uniform and travelling excitation, where girders unseat,
+//! where their waves never decay or die within a round trip, on coarse grids.
 
-use pounding::model::bridge::{BridgeResult, BridgeScenario, solve, solve_stepped};
+use pounding::model::bridge::{BridgeResult, BridgeScenario, solve, solve_stepped, solve_walked};
 use pounding::model::building::ContactModel;
 use pounding::model::building::result::RawContact;
 
@@ -224,4 +225,71 @@ fn a_bridge_run_jumping_over_free_stretches_finds_what_stepping_every_grid_point
         }
     }
     eprintln!("largest difference against rounding's: {largest_ratio:.2}");
+}
+
+/// The run with its debug text, its wall time left out: equal texts are equal runs to the bit
+/// (every number printed in full).
+fn text(r: &BridgeResult) -> String {
+    let mut r = r.clone();
+    r.stats.wall_time_s = 0.0;
+    format!("{r:?}")
+}
+
+#[test]
+fn a_bridge_run_finds_what_walking_every_grid_point_of_its_stretches_finds_to_the_bit() {
+    let base = BridgeScenario::three_span();
+    let el_centro_8 = el_centro(8.0);
+    // El Centro backwards and 1.7 times as strong: other contacts, harder ones.
+    let mut reversed = pounding::io::motion::built_in("elcentro-1940").unwrap();
+    reversed.accel_m_s2.reverse();
+    let reversed = reversed.scaled(1.7).truncated(12.0);
+    let mut scenes: Vec<(
+        String,
+        BridgeScenario,
+        &pounding::model::motion::GroundMotion,
+    )> = Vec::new();
+    for contact in ContactModel::ALL {
+        for (name, v, seat) in [
+            ("uniform", None, 0.25),
+            ("passage 500 m/s", Some(500.0), 0.25),
+            ("0.1 m seats, 200 m/s", Some(200.0), 0.1),
+        ] {
+            let sc = BridgeScenario {
+                contact,
+                apparent_velocity_m_s: v,
+                seat_length_m: seat,
+                ..base.clone()
+            };
+            scenes.push((format!("{name}, {contact:?}"), sc, &el_centro_8));
+        }
+    }
+    for (v, damping, soft) in [
+        (170.0, 0.05, false),
+        (1300.0, 0.05, false),
+        (310.0, 0.0, false),
+        (310.0, 0.3, false),
+        (310.0, 0.6, false),
+        (310.0, 0.3, true),
+    ] {
+        // Soft contact at a loose tolerance: about 22 grid steps a girder's round trip.
+        let sc = BridgeScenario {
+            apparent_velocity_m_s: Some(v),
+            girder_damping: damping,
+            stiffness: soft.then_some(1e8),
+            tolerance: if soft { 0.05 } else { base.tolerance },
+            ..base.clone()
+        };
+        let name = format!("reversed x1.7, {v} m/s, girder damping {damping}, soft {soft}, Sears");
+        scenes.push((name, sc, &reversed));
+    }
+    for (name, sc, motion) in &scenes {
+        let jumped = solve(sc, motion).unwrap();
+        let walked = solve_walked(sc, motion).unwrap();
+        assert!(
+            text(&jumped) == text(&walked),
+            "{name}: the bounds left out something that mattered ({} contacts against {})",
+            jumped.contacts.len(),
+            walked.contacts.len()
+        );
+    }
 }

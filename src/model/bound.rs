@@ -178,8 +178,9 @@ pub(crate) fn cubic_max_abs(y0: f64, v0: f64, y1: f64, v1: f64, l: f64) -> f64 {
 /// How far a signal can stray from the cubic through its ends over a span `l`, given the bound
 /// `m4` on its fourth derivative: l^4 m4 / 384, three times over. Once for the signal against
 /// the cubic, once for the cubic through any two points inside the span against the signal (a
-/// check that clears a span clears every shorter cubic in it, as a walk would draw them), and
-/// once for the rounding of the bound itself.
+/// check that clears a span clears every shorter cubic in it, as the buildings' walks draw them
+/// between grid points; the bridges read grid points only, where the first suffices), and once
+/// for the rounding of the bound itself.
 #[inline]
 pub(crate) fn cubic_margin(m4: f64, l: f64) -> f64 {
     let l2 = l * l;

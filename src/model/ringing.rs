@@ -79,14 +79,51 @@ pub(crate) fn window_at(values: &[f64], last: usize, s: f64) -> f64 {
         }
     };
     let (a, b, c, d) = (at(j - 1), at(j), at(j + 1), at(j + 2));
-    let wa = -x * (x - 1.0) * (x - 2.0) / 6.0;
-    let wb = (x + 1.0) * (x - 1.0) * (x - 2.0) / 2.0;
-    let wc = -(x + 1.0) * x * (x - 2.0) / 2.0;
-    let wd = (x + 1.0) * x * (x - 1.0) / 6.0;
+    let [wa, wb, wc, wd] = lagrange4(x);
     wa * a + wb * b + wc * c + wd * d
 }
 
+/// The weights of the cubic through samples -1, 0, 1, 2 at the fraction x in [0, 1).
+#[inline]
+fn lagrange4(x: f64) -> [f64; 4] {
+    [
+        -x * (x - 1.0) * (x - 2.0) / 6.0,
+        (x + 1.0) * (x - 1.0) * (x - 2.0) / 2.0,
+        -(x + 1.0) * x * (x - 2.0) / 2.0,
+        (x + 1.0) * x * (x - 1.0) / 6.0,
+    ]
+}
+
+/// What the ringing between grid points, and at the phases of later round trips that fall
+/// between grid points, can exceed its largest value on the grid by: the cubic look-ups'
+/// overshoot, with room to spare (a margin found by trying, not proven: tests/girder_ringing.rs
+/// checks it on coarse grids and heavy damping).
+pub(crate) const WINDOW_OVERSHOOT: f64 = 1.5;
+
 impl Ringing {
+    /// The grid steps a tabulation of the ringing takes per round trip: ceil(T / h) + 1, at
+    /// least a round trip and a step.
+    pub fn tabulated_steps(&self) -> usize {
+        self.round_steps.ceil() as usize + 1
+    }
+
+    /// A bound on |ringing| at the grid index `offset` steps after the history was frozen, from
+    /// its largest |value| on the grid over offsets 1 ..= s (`early`) and s + 1 ..= 2 s (`late`),
+    /// s = [`Ringing::tabulated_steps`]: within those the larger of the two; later, the late one
+    /// attenuated by the whole round trips k that bring the offset back into the late window
+    /// (the ringing repeats attenuated once the force has stopped, w(t + T) = r w(t)), with
+    /// o - k T in [s + 1, s + 1 + T), inside it since T <= s - 1.
+    pub fn envelope_at(&self, [early, late]: [f64; 2], offset: usize) -> f64 {
+        let s = self.tabulated_steps();
+        let bound = if offset <= 2 * s {
+            early.max(late)
+        } else {
+            let k = ((offset - s - 1) as f64 / self.round_steps).floor();
+            late * self.round_decay.powi(k as i32)
+        };
+        WINDOW_OVERSHOOT * bound
+    }
+
     /// exp(-steps h / t_d).
     pub fn decay(&self, steps: f64) -> f64 {
         if self.decay_per_s == 0.0 {
@@ -139,13 +176,7 @@ impl Ringing {
             let run_end = ((w.n as f64 + shift).floor() as usize).min(to);
             let weight = self.round_decay.powi(j as i32);
             let s0 = i as f64 - shift;
-            let x = s0 - s0.floor();
-            let wt = [
-                -x * (x - 1.0) * (x - 2.0) / 6.0,
-                (x + 1.0) * (x - 1.0) * (x - 2.0) / 2.0,
-                -(x + 1.0) * x * (x - 2.0) / 2.0,
-                (x + 1.0) * x * (x - 1.0) / 6.0,
-            ];
+            let wt = lagrange4(s0 - s0.floor());
             let at = |k: isize| {
                 if k < first.max(0) {
                     0.0
@@ -211,12 +242,7 @@ impl Ringing {
             weight: self.round_decay.powi(j as i32),
             offset: base as isize,
             x,
-            w: [
-                -x * (x - 1.0) * (x - 2.0) / 6.0,
-                (x + 1.0) * (x - 1.0) * (x - 2.0) / 2.0,
-                -(x + 1.0) * x * (x - 2.0) / 2.0,
-                (x + 1.0) * x * (x - 1.0) / 6.0,
-            ],
+            w: lagrange4(x),
         }
     }
 }

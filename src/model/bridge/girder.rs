@@ -33,10 +33,6 @@ use crate::model::history::Tap;
 use crate::model::ring::{Look, Ring};
 use crate::model::ringing::{Fold, Frozen, Ringing, read_four};
 
-/// What the ringing between grid points, and at the phases of later round trips that fall
-/// between grid points, can exceed its largest value on the grid by (the slabs' margin).
-const WINDOW_OVERSHOOT: f64 = 1.5;
-
 /// A quiet girder: each end's history frozen when both forces stopped, and the largest end
 /// waves over the two round trips after that, once asked for.
 #[derive(Debug, Clone, Default)]
@@ -266,6 +262,11 @@ impl GirderWaves {
         self.quiet.is_some() || !self.struck
     }
 
+    /// Whether it has never been struck: no waves at all.
+    pub fn is_still(&self) -> bool {
+        !self.struck
+    }
+
     /// Whether it keeps a frozen history (struck, then quiet): stepping it needs a revival.
     pub fn is_frozen(&self) -> bool {
         self.quiet.is_some()
@@ -322,7 +323,8 @@ impl GirderWaves {
     /// girder: each end's own and far readings from the closed form of its history.
     pub fn waves_at(&self, n: usize) -> [f64; 2] {
         let Some(q) = &self.quiet else {
-            debug_assert!(
+            // Never struck: still. A live girder is read by stepping it, never here.
+            assert!(
                 !self.struck,
                 "a struck girder is read in closed form only when quiet"
             );
@@ -378,26 +380,23 @@ impl GirderWaves {
     /// never struck); only for a quiet girder.
     pub fn envelope_from(&self, n: usize) -> [f64; 2] {
         let Some(q) = &self.quiet else {
-            debug_assert!(!self.struck, "a live girder has no envelope");
-            return [0.0; 2];
+            // Still (never struck), or live: nothing to ring, or nothing known.
+            return if self.struck {
+                [f64::INFINITY; 2]
+            } else {
+                [0.0; 2]
+            };
         };
         let [early, late] = *q.envelope.get_or_init(|| self.tabulate_envelope(q));
-        let trips = (n as f64 - q.ends[0].n as f64) / self.ringing.round_steps;
-        std::array::from_fn(|e| {
-            let bound = if trips <= 1.0 {
-                early[e].max(late[e])
-            } else {
-                late[e] * self.r.powi((trips - 1.0).floor() as i32)
-            };
-            WINDOW_OVERSHOOT * bound
-        })
+        let offset = n.saturating_sub(q.ends[0].n);
+        std::array::from_fn(|e| self.ringing.envelope_at([early[e], late[e]], offset))
     }
 
     /// The largest |end waves| on the grid over the first round trip after the girder fell
     /// quiet and over the second (from the second on, w(t + T) = r w(t)): the recursion
     /// stepped with zero force from copies of its windows, as [`GirderWaves::commit`] steps it.
     fn tabulate_envelope(&self, q: &Quiet) -> [[f64; 2]; 2] {
-        let steps = self.ringing.round_steps.ceil() as usize + 1;
+        let steps = self.ringing.tabulated_steps();
         let len = q.ends[0].q.len();
         let mut bufs = [q.ends[0].buffer(2 * steps), q.ends[1].buffer(2 * steps)];
         let (round, half) = (self.round_trip.stored_four(), self.half_trip.stored_four());

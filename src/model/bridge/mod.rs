@@ -16,4 +16,6 @@ pub mod solve;
 pub use estimate::{BridgeErrorEstimate, estimate_error};
 pub use result::{BridgeEnergy, BridgeResult, BridgeStats, Unseating};
 pub use scenario::{BridgeScenario, Girder, Joint, Member};
-pub use solve::{solve, solve_stepped, solve_streaming, solve_summary, solve_with, step_s};
+pub use solve::{
+    solve, solve_stepped, solve_streaming, solve_summary, solve_walked, solve_with, step_s,
+};

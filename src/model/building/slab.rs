@@ -50,11 +50,6 @@ struct Quiet {
     silent: bool,
 }
 
-/// What the ringing between grid points, and at the phases of later round trips that fall
-/// between grid points, can exceed its largest value on the grid by: the cubic look-ups'
-/// overshoot, with room to spare.
-const WINDOW_OVERSHOOT: f64 = 1.5;
-
 /// A floor slab's elastic response to the contact force, stepped on the contact grid while its
 /// waves are fresh and read in closed form once they only ring.
 #[derive(Debug, Clone)]
@@ -306,14 +301,8 @@ impl SlabWaves {
         if q.silent {
             return 0.0;
         }
-        let [early, late] = *q.envelope.get_or_init(|| self.tabulate_envelope(q));
-        let trips = (n as f64 - q.w.n as f64) / self.ringing.round_steps;
-        let bound = if trips <= 1.0 {
-            early.max(late)
-        } else {
-            late * self.ringing.round_decay.powi((trips - 1.0).floor() as i32)
-        };
-        WINDOW_OVERSHOOT * bound
+        let tabulated = *q.envelope.get_or_init(|| self.tabulate_envelope(q));
+        self.ringing.envelope_at(tabulated, n.saturating_sub(q.w.n))
     }
 
     /// The largest |e| on the grid over the first round trip after the slab fell quiet and over
@@ -321,7 +310,7 @@ impl SlabWaves {
     /// zero force from the quiet window (a copy of its samples), the cheapest way to every grid
     /// point of two round trips.
     fn tabulate_envelope(&self, q: &Quiet) -> [f64; 2] {
-        let steps = self.ringing.round_steps.ceil() as usize + 1;
+        let steps = self.ringing.tabulated_steps();
         let len = q.w.q.len();
         let mut buf = q.w.buffer(2 * steps);
         let (recur, near, far) = (

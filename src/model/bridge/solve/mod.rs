@@ -286,6 +286,10 @@ struct Run<'a> {
     stretch_steps: Vec<stretch::FrameSteps>,
     check: usize,
     stretch_scratch: stretch::Scratch,
+    /// The grid point of the onset the last free stretch stopped before.
+    onset_next: Option<usize>,
+    /// Free stretches walk every grid point for every signal (the bounds' reference).
+    walk_all: bool,
 }
 
 impl<'a> Run<'a> {
@@ -359,6 +363,8 @@ impl<'a> Run<'a> {
             stretch_steps: Vec::new(),
             check: 1,
             stretch_scratch: stretch::Scratch::default(),
+            onset_next: None,
+            walk_all: false,
         };
         run.compliances();
         run.supports();
@@ -978,8 +984,8 @@ pub fn solve_stepped(
 }
 
 /// [`solve_with`] for a run only compared with another (the error estimate's): the same
-/// contacts, peaks, largest closings and openings and ledger, without the histories and the
-/// girders' waves for drawing (left empty).
+/// contacts, peaks, largest closings and openings and ledger, without the histories (only the
+/// start's sample) and without the girders' waves for drawing (none).
 pub fn solve_summary(
     sc: &BridgeScenario,
     motion: &GroundMotion,
@@ -988,11 +994,23 @@ pub fn solve_summary(
     run_publishing(sc, motion, control, None, Stretches::Summary)
 }
 
-/// Whether a run jumps over its free stretches or steps them grid point by grid point, and
-/// whether it keeps its histories and girder waves.
+/// [`solve`] walking its free stretches grid point by grid point for every signal, where a
+/// run checks them against its bounds: the same stretches, exact maps and closed forms, so a
+/// run must find what this finds to the bit (what its bounds leave out could not have
+/// mattered); for tests; slower.
+pub fn solve_walked(
+    sc: &BridgeScenario,
+    motion: &GroundMotion,
+) -> Result<BridgeResult, SolveError> {
+    run_publishing(sc, motion, Control::never(), None, Stretches::Walked)
+}
+
+/// Whether a run jumps over its free stretches, walks them (every grid point read) or steps
+/// them grid point by grid point, and whether it keeps its histories and girder waves.
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Stretches {
     Taken,
+    Walked,
     Stepped,
     Summary,
 }
@@ -1038,6 +1056,7 @@ fn run_publishing(
     }
     let mut run = Run::new(sc, motion, h);
     run.tabulate_stretches(steps);
+    run.walk_all = stretches == Stretches::Walked;
     let histories = stretches != Stretches::Summary;
     // A summary records nothing: its only sample is the start's (a grid point it never
     // reaches again).
@@ -1088,7 +1107,9 @@ fn run_publishing(
             steps,
         };
         let taken = match stretches {
-            Stretches::Taken | Stretches::Summary => run.free_stretch(n, &mut sink),
+            Stretches::Taken | Stretches::Summary | Stretches::Walked => {
+                run.free_stretch(n, &mut sink)
+            }
             Stretches::Stepped => {
                 run.settle_if_free();
                 0

@@ -3,11 +3,12 @@
 //! rings in closed form, so the run jumps from grid point to grid point without stepping.
 //!
 //! What a walk of every grid point would find is found all the same, at the same grid points:
-//! the stretch is checked at a few points (every recorded sample, at most `check` grid steps
-//! apart), and between two of them every signal is within a proven margin of the cubic through
-//! its values and rates there (`model::bound`: the frames' fourth derivatives are bounded, the
-//! grounds are cubics between the record's samples, the girders' waves are within their
-//! envelopes). Only a part where that margin leaves a joint able to close its gap, to pass its
+//! the stretch is checked at a few points (at most `check` grid steps apart, a radian of the
+//! fastest frame mode), and between two of them every signal is within a margin of the cubic
+//! through its values and rates there (`model::bound`: the frames' fourth derivatives are
+//! bounded, the grounds are cubics between the record's samples; the girders' waves are within
+//! their envelopes, their largest values on the grid over two round trips with a margin for the
+//! phases between grid points). Only a part where that margin leaves a joint able to close its gap, to pass its
 //! largest closing or opening or its seat, or a frame able to pass a peak, is walked grid point
 //! by grid point, and only for those signals; an onset there ends the stretch at the grid point
 //! before it, where the stepped run takes over.
@@ -87,6 +88,8 @@ fn signal_shapes(f: &Frame) -> [[f64; 2]; 3] {
 /// The stretch's buffers, kept for the run.
 #[derive(Default)]
 pub(super) struct Scratch {
+    /// The stretch's length in grid steps.
+    len: usize,
     /// Each frame's modes' augmented starting states [q, q', g, g'].
     y0: Vec<[[f64; 4]; 2]>,
     /// The ground acceleration at each frame's support at the stretch's start and end.
@@ -96,13 +99,14 @@ pub(super) struct Scratch {
     joint_m4: Vec<f64>,
     joint_m5: Vec<f64>,
     joint_env: Vec<f64>,
+    /// Whether no girder at the joint has ever been struck (no waves ride on its closing).
+    joint_still: Vec<bool>,
     /// Bounds on each frame signal's fourth derivative, and whether it can reach its peak at
     /// all in the stretch.
     signal_m4: Vec<[f64; 3]>,
     signal_m5: Vec<[f64; 3]>,
     signal_open: Vec<[bool; 3]>,
-    /// Each frame's modal (q, q') at the last check and at the one being made.
-    modes_a: Vec<[(f64, f64); 2]>,
+    /// Each frame's modal (q, q') at the check being made.
     modes_b: Vec<[(f64, f64); 2]>,
     /// The ground at every support at the check being made (the first of each delay read).
     ground: Vec<GroundState>,
@@ -143,7 +147,6 @@ struct Saved {
 impl Scratch {
     /// The part's end becomes the next part's start.
     fn swap_ends(&mut self) {
-        std::mem::swap(&mut self.modes_a, &mut self.modes_b);
         std::mem::swap(&mut self.joint_a, &mut self.joint_b);
         std::mem::swap(&mut self.signal_a, &mut self.signal_b);
     }
@@ -175,7 +178,8 @@ impl Scratch {
 }
 
 impl<'a> Run<'a> {
-    /// The frames' exact maps, for stretches of up to `count` steps.
+    /// The frames' exact maps, for stretches of up to a record step (at most `MAX_STRETCH`
+    /// grid steps and the run's `steps`), and the span of a check.
     pub(super) fn tabulate_stretches(&mut self, steps: usize) {
         let dt = self.ground.corrected.dt_s;
         let per_sample = if dt > 0.0 {
@@ -201,11 +205,19 @@ impl<'a> Run<'a> {
         if self.stretch_steps.is_empty() || self.joints.iter().any(|js| js.force != 0.0) {
             return 0;
         }
+        // The girders fall quiet where the stepped run lets them (whether a stretch follows or
+        // not), so both read the same closed form from then on.
+        self.settle_if_free();
+        // The onset a stretch has just stopped before, and a joint overlapping without a force
+        // (a damped link letting go, a stereomechanical exchange): the next step is a stepped
+        // one, without looking for it again.
+        if self.onset_next == Some(n0 + 1) || self.joints.iter().any(|js| js.delta > 0.0) {
+            return 0;
+        }
         let len = self.stretch_length(n0, sink.steps);
         if len == 0 {
             return 0;
         }
-        self.settle_if_free();
         let mut w = std::mem::take(&mut self.stretch_scratch);
         self.prepare(&mut w, n0, len, sink);
         let mut a = 0;
@@ -226,6 +238,7 @@ impl<'a> Run<'a> {
             }
             if let Some(m) = onset {
                 reached = m - 1;
+                self.onset_next = Some(n0 + m);
                 break;
             }
             // The run's last grid point is always a sample.
@@ -326,8 +339,10 @@ impl<'a> Run<'a> {
         w.joint_m4.clear();
         w.joint_m5.clear();
         w.joint_env.clear();
+        w.joint_still.clear();
         for js in &self.joints {
             let (mut m4, mut m5, mut env) = (0.0, 0.0, 0.0);
+            let mut still = true;
             for side in &js.sides {
                 if let Some((i, end)) = side.girder {
                     let (f, [b4, b5]) = (&self.frames[i], mode_m4[i]);
@@ -335,12 +350,14 @@ impl<'a> Run<'a> {
                     m5 += f.girder[0].abs() * b5[0] + f.girder[1].abs() * b5[1];
                     if let Some(g) = &self.girders[i] {
                         env += g.envelope_from(n0 + 1)[end];
+                        still &= g.is_still();
                     }
                 }
             }
             w.joint_m4.push(m4);
             w.joint_m5.push(m5);
             w.joint_env.push(env);
+            w.joint_still.push(still);
         }
         w.waves.clear();
         w.waves.resize(self.girders.len(), None);
@@ -348,15 +365,15 @@ impl<'a> Run<'a> {
         w.closings.resize(self.joints.len(), 0.0);
         w.signal_look.resize(nf, [false; 3]);
         // The first check's values: the state now.
-        w.modes_a.clear();
-        w.modes_a.extend(
+        w.modes_b.clear();
+        w.modes_b.extend(
             self.frames
                 .iter()
                 .map(|f| [(f.q[0], f.v[0]), (f.q[1], f.v[1])]),
         );
-        w.modes_b.clone_from(&w.modes_a);
-        w.modes_walk.clone_from(&w.modes_a);
-        self.ground_into(t0, &mut w.ground);
+        w.modes_walk.clone_from(&w.modes_b);
+        w.len = len;
+        self.ground_in_stretch(w, n0, 0);
         self.smooth_values(w, 0);
         w.swap_ends();
     }
@@ -428,8 +445,26 @@ impl<'a> Run<'a> {
     /// steps into the stretch from `n0`, into the `_b` buffers.
     fn values_at(&self, w: &mut Scratch, n0: usize, j: usize) {
         self.modes_at(w, j);
-        self.ground_into((n0 + j) as f64 * self.h, &mut w.ground);
+        self.ground_in_stretch(w, n0, j);
         self.smooth_values(w, j);
+    }
+
+    /// The ground at every support j grid steps into the stretch, into `w.ground`, with the
+    /// acceleration's one-sided limit at the stretch's ends (a wave's arrival and a record's
+    /// end are jumps; the stretch's forcing takes the side inside it).
+    fn ground_in_stretch(&self, w: &mut Scratch, n0: usize, j: usize) {
+        let t = (n0 + j) as f64 * self.h;
+        self.ground_into(t, &mut w.ground);
+        if j == 0 || j == w.len {
+            for (s, g) in w.ground.iter_mut().enumerate() {
+                let d = self.support_delay[s];
+                g.accel = if j == 0 {
+                    self.ground.accel_after(t, d)
+                } else {
+                    self.ground.accel_before(t, d)
+                };
+            }
+        }
     }
 
     /// Checks the part from grid step a to b of the stretch from `n0` (its values at a in the
@@ -466,6 +501,12 @@ impl<'a> Run<'a> {
     /// Decides what the part from a to b must be looked into for (into `w.joint_look` and
     /// `w.signal_look`): whether anything must.
     fn flag(&mut self, w: &mut Scratch, a: usize, b: usize, sink: &mut Sink) -> bool {
+        if self.walk_all {
+            // The bounds' reference: everything is looked into, at every grid point.
+            w.joint_look.fill(true);
+            w.signal_look.fill([true; 3]);
+            return true;
+        }
         let l = (b - a) as f64 * self.h;
         let contact = self.sc.contact != ContactModel::None;
         let seat = self.sc.seat_length_m;
@@ -509,7 +550,7 @@ impl<'a> Run<'a> {
             for j in 0..self.joints.len() {
                 let ([_, r0, a0], [c1, r1, a1]) = (w.joint_a[j], w.joint_b[j]);
                 if w.joint_look[j]
-                    && w.joint_env[j] == 0.0
+                    && w.joint_still[j]
                     && monotone([r0, a0], [r1, a1], l, w.joint_m5[j])
                 {
                     let js = &mut self.joints[j];
@@ -605,7 +646,8 @@ impl<'a> Run<'a> {
                 let smooth = self.smooth_closing(j, &modes, &ground);
                 let env = w.joint_env[j];
                 let (hi, lo) = (smooth + env, smooth - env);
-                let reach = (contact && hi > js.joint.gap_m)
+                let reach = self.walk_all
+                    || (contact && hi > js.joint.gap_m)
                     || hi > js.max_closing
                     || -lo > js.max_opening
                     || (js.unseated.is_none() && -lo > seat);
@@ -700,10 +742,11 @@ impl<'a> Run<'a> {
         w.waves.iter_mut().for_each(|x| *x = None);
         let hist = &mut *sink.hist;
         hist.time_s.push(n as f64 * self.h);
-        for j in 0..self.joints.len() {
-            let c = self.smooth_closing(j, modes, ground) + self.waves_across(j, &mut w.waves, n);
-            hist.force[j].push(0.0);
-            hist.opening[j].push(-c);
+        for joint in 0..self.joints.len() {
+            let c = self.smooth_closing(joint, modes, ground)
+                + self.waves_across(joint, &mut w.waves, n);
+            hist.force[joint].push(0.0);
+            hist.opening[joint].push(-c);
         }
         for (i, f) in self.frames.iter().enumerate() {
             let m = &modes[i];
