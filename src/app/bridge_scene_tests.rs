@@ -24,6 +24,7 @@ fn stages_of(setup: BridgeSetup) -> Vec<Landed<Output>> {
         match slot.poll_stage() {
             Some(l) => landed.push(l),
             None => {
+                slot.flush();
                 assert!(start.elapsed() < Duration::from_secs(120), "no outcome");
                 std::thread::sleep(Duration::from_millis(1));
             }

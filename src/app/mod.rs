@@ -451,6 +451,11 @@ impl eframe::App for PoundingApp {
                 ctx.send_viewport_cmd(egui::ViewportCommand::Close);
             }
         }
+        // A change held for a run goes now, unless this frame's own change replaced it.
+        self.bar.slot.flush();
+        self.compare.slot.flush();
+        self.buildings.slot.flush();
+        self.bridge.slot.flush();
         let ui_time = start.elapsed();
         self.ui_ms = ui_time.as_secs_f64() * 1e3;
         if let Some(d) = &mut self.drag {

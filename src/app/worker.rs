@@ -170,6 +170,13 @@ impl<I: Send + 'static, O: Send + 'static> Worker<I, O> {
         }
     }
 
+    /// Lets the job under way go on to its later stages ([`Control::resume`]).
+    pub fn resume(&self) {
+        if let Some((_, _, control)) = &self.pending {
+            control.resume();
+        }
+    }
+
     /// Asks the solve under way to stop; its outcome (a cancellation) still arrives.
     pub fn cancel(&self) {
         if let Some((_, _, control)) = &self.pending {
@@ -237,6 +244,8 @@ pub struct SolveSlot<I, O> {
     queued: Option<(I, Instant)>,
     /// When the solve under way was sent, and whether its run has landed.
     sent: Option<(Instant, bool)>,
+    /// Whether an output of the solve under way has been taken (then its checks may go).
+    taken: bool,
     /// How long the last landed run took.
     last_run: Option<Duration>,
     /// The longest a change waits for the run under way ([`HOLD_AT_MOST`]).
@@ -270,6 +279,7 @@ impl<I: Send + 'static, O: Send + 'static> SolveSlot<I, O> {
             runs: 0,
             queued: None,
             sent: None,
+            taken: false,
             last_run: None,
             hold_at_most: HOLD_AT_MOST,
         }
@@ -305,11 +315,28 @@ impl<I: Send + 'static, O: Send + 'static> SolveSlot<I, O> {
     fn send(&mut self, input: I, changed: Instant) {
         self.queued = None;
         self.sent = Some((Instant::now(), false));
+        self.taken = false;
         self.worker.request_at(input, changed);
+        // Its checks after its run wait for a frame that shows the run and makes no newer
+        // change (`flush`): while a slider is dragged they would only be cancelled, on the
+        // cores the frames need.
+        self.worker.pause_after_first();
     }
 
-    /// Sends the held change once the run it waits for has landed, its job is done, or the
-    /// wait is over.
+    /// Sends a held change once the run it waits for has landed, its job is done, or the wait
+    /// is over; and lets a job whose run has landed go on to its checks where no newer change
+    /// came. The window calls it once a frame, after the frame's own changes: a change made in
+    /// the frame its run landed replaces the one held for that run and goes at once (a change
+    /// released before it would only be held behind the one just sent, a frame later for every
+    /// change of a drag).
+    pub fn flush(&mut self) {
+        self.release();
+        // Its output is on screen and no newer change came with this frame: its checks go.
+        if self.taken && self.queued.is_none() {
+            self.worker.resume();
+        }
+    }
+
     fn release(&mut self) {
         let waited = self.sent.is_none_or(|(at, run_landed)| {
             run_landed || !self.worker.busy() || at.elapsed() >= self.hold()
@@ -354,10 +381,8 @@ impl<I: Send + 'static, O: Send + 'static> SolveSlot<I, O> {
     /// The newest request's output once it lands, its timings recorded and the error cleared.
     /// A solve that panicked gives `None` and leaves the panic's message as the error.
     pub fn poll(&mut self) -> Option<O> {
-        let Some((done, latency)) = self.worker.poll() else {
-            self.release();
-            return None;
-        };
+        let (done, latency) = self.worker.poll()?;
+        self.taken = true;
         self.record_run(done.elapsed, latency);
         self.take(done.output)
     }
@@ -366,11 +391,9 @@ impl<I: Send + 'static, O: Send + 'static> SolveSlot<I, O> {
     /// the scene records which of them its timings measure. A job that panicked gives `None`
     /// and leaves the panic's message as the error (and the request done).
     pub fn poll_stage(&mut self) -> Option<Landed<O>> {
-        // The held change goes only after the outputs it waited for have been taken.
-        let Some((done, since_request)) = self.worker.poll() else {
-            self.release();
-            return None;
-        };
+        // A held change goes at `flush`, after the outputs it waited for have been taken.
+        let (done, since_request) = self.worker.poll()?;
+        self.taken = true;
         let (last, job_time) = (done.last, done.elapsed);
         self.take(done.output).map(|output| Landed {
             output,
@@ -456,6 +479,7 @@ mod tests {
             if let Some(out) = slot.poll() {
                 return Some(out);
             }
+            slot.flush();
             assert!(start.elapsed() < Duration::from_secs(60), "no outcome");
             std::thread::sleep(Duration::from_millis(1));
         }
@@ -491,6 +515,7 @@ mod tests {
             if let Some(l) = slot.poll_stage() {
                 taken.push((l.output, l.last));
             } else {
+                slot.flush();
                 assert!(start.elapsed() < Duration::from_secs(60), "no outcome");
                 std::thread::sleep(Duration::from_millis(1));
             }
@@ -592,6 +617,7 @@ mod tests {
                 }
                 taken.push(l.output);
             } else {
+                slot.flush();
                 assert!(start.elapsed() < Duration::from_secs(60), "no outcome");
                 std::thread::sleep(Duration::from_millis(1));
             }

@@ -110,12 +110,17 @@ impl Control {
         }
     }
 
+    /// Lets a job paused (or about to pause) before its later stages go on.
+    pub fn resume(&self) {
+        self.pause_after_first.store(false, Ordering::Relaxed);
+    }
+
     /// The longest a paused stage waits before it goes on anyway [ms].
     pub fn set_pause_limit_ms(&self, ms: u32) {
         self.pause_limit_ms.store(ms, Ordering::Relaxed);
     }
 
-    /// Waits, if paused, until cancelled or the limit runs out.
+    /// Waits, if paused, until resumed, cancelled or the limit runs out.
     fn wait_if_paused(&self) {
         if !self.pause_after_first.load(Ordering::Relaxed) {
             return;
@@ -124,7 +129,10 @@ impl Control {
         let limit = std::time::Duration::from_millis(u64::from(
             self.pause_limit_ms.load(Ordering::Relaxed),
         ));
-        while !self.cancelled() && start.elapsed() < limit {
+        while self.pause_after_first.load(Ordering::Relaxed)
+            && !self.cancelled()
+            && start.elapsed() < limit
+        {
             std::thread::sleep(std::time::Duration::from_millis(1));
         }
     }
