@@ -640,6 +640,77 @@ mod tests {
     }
 
     #[test]
+    fn a_change_made_in_the_frame_its_run_lands_replaces_the_held_one_and_goes_at_once() {
+        // Runs that take their time (request 1's a fifth of a second), so that a change made
+        // right after one is sent waits for it.
+        let mut slot = SolveSlot::staged(
+            |n: u64, control: &Control, stages: &Stages<u64>| {
+                std::thread::sleep(Duration::from_millis(if n == 0 { 600 } else { 200 }));
+                stages.send(10 * n + 1);
+                while n == 1 && !control.cancelled() {
+                    std::thread::yield_now();
+                }
+                10 * n + 9
+            },
+            || {},
+        );
+        slot.hold_at_most = Duration::from_secs(3600);
+        slot.request(0);
+        assert_eq!(drain_runs(&mut slot), [1, 9]);
+        slot.request(1);
+        // A drag's next change, made while run 1 is due: held.
+        slot.request(2);
+        // The frame run 1 lands in, taken as a scene takes it (everything landed, until
+        // nothing more has)...
+        let start = Instant::now();
+        let mut taken = vec![];
+        while taken.is_empty() {
+            while let Some(l) = slot.poll_stage() {
+                slot.record_run(l.job_time, l.since_request);
+                taken.push(l.output);
+            }
+            assert!(start.elapsed() < Duration::from_secs(60), "no run");
+            std::thread::sleep(Duration::from_millis(1));
+        }
+        assert_eq!(taken, [11]);
+        // ...makes its own change before the frame ends: it goes at once, in place of the one
+        // held (which would only wait behind it).
+        slot.request(4);
+        assert_eq!(drain_runs(&mut slot), [41, 49]);
+        assert_eq!(slot.runs, 3);
+    }
+
+    #[test]
+    fn a_jobs_checks_wait_for_a_frame_that_shows_its_run_and_makes_no_newer_change() {
+        let (told, checks) = channel::<u64>();
+        let mut slot = SolveSlot::staged(
+            move |n: u64, control: &Control, stages: &Stages<u64>| {
+                stages.send(10 * n + 1);
+                control.stage(1, 2);
+                told.send(n).expect("the test listens");
+                10 * n + 9
+            },
+            || {},
+        );
+        slot.request(5);
+        let start = Instant::now();
+        while slot.poll_stage().is_none() {
+            assert!(start.elapsed() < Duration::from_secs(60), "no run");
+            std::thread::sleep(Duration::from_millis(1));
+        }
+        // The run is taken; no frame has ended yet: the checks wait.
+        std::thread::sleep(Duration::from_millis(200));
+        assert!(
+            checks.try_recv().is_err(),
+            "the checks went before the frame ended"
+        );
+        // The frame ends without a newer change: they go.
+        slot.flush();
+        assert_eq!(checks.recv_timeout(Duration::from_secs(2)), Ok(5));
+        assert_eq!(drain_runs(&mut slot), [59]);
+    }
+
+    #[test]
     fn a_job_whose_run_a_change_waits_for_does_no_checks_before_that_change_goes() {
         let (told, checks) = channel::<(u64, bool)>();
         let (go, gate) = channel::<()>();
