@@ -55,6 +55,9 @@ pub struct Launch {
     /// The panels leave their background to the frame's clear (the window; a test harness
     /// that clears to transparent keeps them filled).
     pub background_by_clear: bool,
+    /// Lines are drawn without anti-aliasing on a software renderer unless the user chose
+    /// otherwise (the window; a test harness keeps them anti-aliased, as its snapshots are).
+    pub plain_lines_on_software: bool,
 }
 
 /// Set by snapshot tests: wall-clock timings (which differ run to run) print as "-".

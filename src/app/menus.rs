@@ -192,6 +192,20 @@ impl PoundingApp {
             self.set_lecture(ui.ctx(), lecture);
             ui.close();
         }
+        let mut smooth = self.smooth_lines;
+        if ui
+            .checkbox(&mut smooth, "Smooth lines")
+            .on_hover_text(
+                "Anti-aliased lines and edges. Off at first on a software renderer (no GPU): \
+                 every line then takes a third of the triangles, and a dragged slider shows its \
+                 result a frame sooner",
+            )
+            .changed()
+        {
+            self.smooth_lines = smooth;
+            self.smooth_lines_chosen = true;
+            ui.ctx().tessellation_options_mut(|o| o.feathering = smooth);
+        }
     }
 
     fn file_menu(&mut self, ui: &mut egui::Ui) {

@@ -46,10 +46,15 @@ pub(super) fn save(app: &PoundingApp, storage: &mut dyn eframe::Storage) {
         preset::buildings_to_toml(&app.buildings.setup),
     );
     storage.set_string(BRIDGE_KEY, preset::bridge_to_toml(&app.bridge.setup));
+    let smooth = match (app.smooth_lines_chosen, app.smooth_lines) {
+        (false, _) => "",
+        (true, true) => ";smooth=on",
+        (true, false) => ";smooth=off",
+    };
     storage.set_string(
         UI_KEY,
         format!(
-            "{};scene={}",
+            "{};scene={}{smooth}",
             if app.dark { "dark" } else { "light" },
             app.scene.name()
         ),
