@@ -46,17 +46,71 @@ pub(super) fn save(app: &PoundingApp, storage: &mut dyn eframe::Storage) {
         preset::buildings_to_toml(&app.buildings.setup),
     );
     storage.set_string(BRIDGE_KEY, preset::bridge_to_toml(&app.bridge.setup));
-    let smooth = match (app.smooth_lines_chosen, app.smooth_lines) {
-        (false, _) => "",
-        (true, true) => ";smooth=on",
-        (true, false) => ";smooth=off",
+    let smooth = app.smooth_lines_chosen.then_some(app.smooth_lines);
+    storage.set_string(UI_KEY, ui_state(app.dark, app.scene, smooth));
+}
+
+/// The theme, the scene shown and the lines' smoothing where the user chose it, as saved.
+pub(super) fn ui_state(dark: bool, scene: super::SceneKind, smooth: Option<bool>) -> String {
+    let smooth = match smooth {
+        None => "",
+        Some(true) => ";smooth=on",
+        Some(false) => ";smooth=off",
     };
-    storage.set_string(
-        UI_KEY,
-        format!(
-            "{};scene={}{smooth}",
-            if app.dark { "dark" } else { "light" },
-            app.scene.name()
-        ),
-    );
+    format!(
+        "{};scene={}{smooth}",
+        if dark { "dark" } else { "light" },
+        scene.name()
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{Launch, SceneKind, start};
+    use super::*;
+
+    /// What a window's storage holds, in memory.
+    #[derive(Default)]
+    struct Memory(std::collections::HashMap<String, String>);
+
+    impl eframe::Storage for Memory {
+        fn get_string(&self, key: &str) -> Option<String> {
+            self.0.get(key).cloned()
+        }
+        fn set_string(&mut self, key: &str, value: String) {
+            self.0.insert(key.into(), value);
+        }
+        fn remove_string(&mut self, key: &str) {
+            self.0.remove(key);
+        }
+        fn flush(&mut self) {}
+    }
+
+    #[test]
+    fn the_theme_scene_and_a_chosen_line_smoothing_come_back_and_an_unchosen_one_stays_unset() {
+        for (dark, scene, smooth) in [
+            (true, SceneKind::Bridge, Some(false)),
+            (false, SceneKind::Buildings, Some(true)),
+            (true, SceneKind::Study, None),
+        ] {
+            let mut storage = Memory::default();
+            eframe::Storage::set_string(&mut storage, UI_KEY, ui_state(dark, scene, smooth));
+            let mut errors = vec![];
+            let back = start(Some(&storage), &Launch::default(), &mut errors);
+            assert!(errors.is_empty(), "{errors:?}");
+            assert_eq!(
+                (back.dark, back.scene, back.smooth_lines),
+                (dark, scene, smooth)
+            );
+        }
+        // A value this build does not know is no choice.
+        let mut storage = Memory::default();
+        eframe::Storage::set_string(
+            &mut storage,
+            UI_KEY,
+            "dark;scene=bridge;smooth=maybe".into(),
+        );
+        let back = start(Some(&storage), &Launch::default(), &mut vec![]);
+        assert_eq!(back.smooth_lines, None);
+    }
 }
