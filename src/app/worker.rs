@@ -246,6 +246,9 @@ pub struct SolveSlot<I, O> {
     sent: Option<(Instant, bool)>,
     /// Whether an output of the solve under way has been taken (then its checks may go).
     taken: bool,
+    /// Whether a job's later stages wait for a frame that shows its first output (a staged
+    /// job's; a job of one output, whose stages are all before it, never waits).
+    checks_wait: bool,
     /// How long the last landed run took.
     last_run: Option<Duration>,
     /// The longest a change waits for the run under way ([`HOLD_AT_MOST`]).
@@ -258,7 +261,7 @@ impl<I: Send + 'static, O: Send + 'static> SolveSlot<I, O> {
         job: impl Fn(I, &Control) -> O + Send + 'static,
         wake: impl Fn() + Send + 'static,
     ) -> Self {
-        Self::of(Worker::new(job, wake))
+        Self::of(Worker::new(job, wake), false)
     }
 
     /// Starts the solver thread for a job that hands out outputs before its last (taken with
@@ -267,10 +270,10 @@ impl<I: Send + 'static, O: Send + 'static> SolveSlot<I, O> {
         job: impl Fn(I, &Control, &Stages<O>) -> O + Send + 'static,
         wake: impl Fn() + Send + 'static,
     ) -> Self {
-        Self::of(Worker::staged(job, wake))
+        Self::of(Worker::staged(job, wake), true)
     }
 
-    fn of(worker: Worker<I, O>) -> Self {
+    fn of(worker: Worker<I, O>, checks_wait: bool) -> Self {
         SolveSlot {
             worker,
             solve_time: Duration::ZERO,
@@ -280,6 +283,7 @@ impl<I: Send + 'static, O: Send + 'static> SolveSlot<I, O> {
             queued: None,
             sent: None,
             taken: false,
+            checks_wait,
             last_run: None,
             hold_at_most: HOLD_AT_MOST,
         }
@@ -320,7 +324,9 @@ impl<I: Send + 'static, O: Send + 'static> SolveSlot<I, O> {
         // Its checks after its run wait for a frame that shows the run and makes no newer
         // change (`flush`): while a slider is dragged they would only be cancelled, on the
         // cores the frames need.
-        self.worker.pause_after_first();
+        if self.checks_wait {
+            self.worker.pause_after_first();
+        }
     }
 
     /// Sends a held change once the run it waits for has landed, its job is done, or the wait
@@ -678,6 +684,32 @@ mod tests {
         slot.request(4);
         assert_eq!(drain_runs(&mut slot), [41, 49]);
         assert_eq!(slot.runs, 3);
+    }
+
+    #[test]
+    fn a_job_of_one_output_never_waits_for_a_frame_before_its_later_stages() {
+        // The bar scenes' jobs: a solve and its estimate, one output at the end.
+        let mut slot = SolveSlot::new(
+            |n: u64, control: &Control| {
+                control.stage(1, 2);
+                n + 1
+            },
+            || {},
+        );
+        slot.request(7);
+        let start = Instant::now();
+        let out = loop {
+            if let Some(out) = slot.poll() {
+                break out;
+            }
+            // No frame ends here (no flush): nothing may wait for one.
+            assert!(
+                start.elapsed() < Duration::from_secs(1),
+                "it waited for a frame"
+            );
+            std::thread::sleep(Duration::from_millis(1));
+        };
+        assert_eq!(out, 8);
     }
 
     #[test]
