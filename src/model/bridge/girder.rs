@@ -259,7 +259,7 @@ impl GirderWaves {
 
     /// Whether its ringing is read in closed form (quiet, or never struck: then it is still).
     pub fn is_quiet(&self) -> bool {
-        self.quiet.is_some() || !self.struck
+        self.is_frozen() || self.is_still()
     }
 
     /// Whether it has never been struck: no waves at all.
@@ -281,7 +281,7 @@ impl GirderWaves {
     /// ringing is read in closed form and it is not stepped. A girder never struck stays as it
     /// is (still, and as cheap).
     pub fn settle(&mut self) {
-        if self.quiet.is_some() || !self.struck || self.last_forces != [0.0, 0.0] {
+        if self.is_quiet() || self.last_forces != [0.0, 0.0] {
             return;
         }
         let mut q = self.spare.take().unwrap_or_default();

@@ -935,6 +935,16 @@ struct Peaks {
 }
 
 impl Peaks {
+    /// Frame i's peaks: girder, pier, bearing (the order of `stretch::signal_shapes`).
+    fn at(&self, i: usize) -> [f64; 3] {
+        [self.girder[i], self.pier[i], self.bearing[i]]
+    }
+
+    /// The same, to raise.
+    fn of(&mut self, i: usize) -> [&mut f64; 3] {
+        [&mut self.girder[i], &mut self.pier[i], &mut self.bearing[i]]
+    }
+
     fn read(&mut self, frames: &[Frame]) {
         let peaks = self
             .girder

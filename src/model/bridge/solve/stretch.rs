@@ -8,10 +8,10 @@
 //! through its values and rates there (`model::bound`: the frames' fourth derivatives are
 //! bounded, the grounds are cubics between the record's samples; the girders' waves are within
 //! their envelopes, their largest values on the grid over two round trips with a margin for the
-//! phases between grid points). Only a part where that margin leaves a joint able to close its gap, to pass its
-//! largest closing or opening or its seat, or a frame able to pass a peak, is walked grid point
-//! by grid point, and only for those signals; an onset there ends the stretch at the grid point
-//! before it, where the stepped run takes over.
+//! phases between grid points). Only a part where that margin leaves a joint able to close its
+//! gap, to pass its largest closing or opening or its seat, or a frame able to pass a peak, is
+//! walked grid point by grid point, and only for those signals; an onset there ends the stretch
+//! at the grid point before it, where the stepped run takes over.
 
 use super::*;
 use crate::model::bound::{ROUNDING, cubic_bound, cubic_margin, cubic_max, mode_bounds, monotone};
@@ -71,8 +71,14 @@ pub(super) struct Sink<'s> {
 }
 
 impl Sink<'_> {
-    fn records(&self, n: usize) -> bool {
-        self.stride != usize::MAX && (n.is_multiple_of(self.stride) || n == self.steps)
+    /// The grid points after `from` up to `to` that are recorded: every stride's, and the run's
+    /// last (none in a summary).
+    fn samples(&self, from: usize, to: usize) -> impl Iterator<Item = usize> + use<> {
+        let (stride, steps) = (self.stride, self.steps);
+        let strided = (from / stride).saturating_add(1).saturating_mul(stride);
+        let last =
+            (to == steps && stride != usize::MAX && !steps.is_multiple_of(stride)).then_some(steps);
+        (strided..=to).step_by(stride).chain(last)
     }
 }
 
@@ -228,25 +234,13 @@ impl<'a> Run<'a> {
             let onset = self.check_part(&mut w, n0, a, b, sink);
             // The samples the part holds, up to the grid point before an onset.
             let to = onset.map_or(b, |m| m - 1);
-            let first = ((n0 + a) / sink.stride)
-                .saturating_add(1)
-                .saturating_mul(sink.stride);
-            let mut r = first;
-            while r <= n0 + to {
+            for r in sink.samples(n0 + a, n0 + to) {
                 self.record_at(&mut w, n0, r - n0, b, sink);
-                r = r.saturating_add(sink.stride);
             }
             if let Some(m) = onset {
                 reached = m - 1;
                 self.onset_next = Some(n0 + m);
                 break;
-            }
-            // The run's last grid point is always a sample.
-            if n0 + b == sink.steps
-                && sink.records(sink.steps)
-                && !sink.steps.is_multiple_of(sink.stride)
-            {
-                self.record_at(&mut w, n0, b, b, sink);
             }
             w.swap_ends();
             a = b;
@@ -318,11 +312,7 @@ impl<'a> Run<'a> {
             let bounds = [0, 1].map(|k| mode_bounds(f.omega[k], f.zeta[k], &y[k], span));
             w.y0.push(y);
             mode_m4.push([[bounds[0][1], bounds[1][1]], [bounds[0][2], bounds[1][2]]]);
-            let peaks = [
-                sink.peaks.girder[i],
-                sink.peaks.pier[i],
-                sink.peaks.bearing[i],
-            ];
+            let peaks = sink.peaks.at(i);
             let shapes = signal_shapes(f);
             w.signal_m4
                 .push(shapes.map(|c| c[0].abs() * bounds[0][1] + c[1].abs() * bounds[1][1]));
@@ -562,12 +552,7 @@ impl<'a> Run<'a> {
         }
         let mut any = w.joint_look.iter().any(|&x| x);
         for i in 0..self.frames.len() {
-            let peaks = [
-                &mut sink.peaks.girder[i],
-                &mut sink.peaks.pier[i],
-                &mut sink.peaks.bearing[i],
-            ];
-            for (s, peak) in peaks.into_iter().enumerate() {
+            for (s, peak) in sink.peaks.of(i).into_iter().enumerate() {
                 let ([u0, r0, a0], [u1, r1, a1]) = (w.signal_a[i][s], w.signal_b[i][s]);
                 let look = w.signal_open[i][s] && {
                     let margin = cubic_margin(w.signal_m4[i][s], l)
@@ -680,12 +665,7 @@ impl<'a> Run<'a> {
                 }
                 let md = &modes[i];
                 let u = signal_shapes(f).map(|c| (c[0] * md[0].0 + c[1] * md[1].0).abs());
-                let peaks = [
-                    &mut sink.peaks.girder[i],
-                    &mut sink.peaks.pier[i],
-                    &mut sink.peaks.bearing[i],
-                ];
-                for ((p, u), l) in peaks.into_iter().zip(u).zip(look) {
+                for ((p, u), l) in sink.peaks.of(i).into_iter().zip(u).zip(look) {
                     if l {
                         *p = p.max(u);
                     }
