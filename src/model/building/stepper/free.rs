@@ -274,10 +274,8 @@ impl Stepper<'_> {
                 let (u, r) = self.signal(i, [&w.q[0], &w.q[1]], [&w.v[0], &w.v[1]]);
                 self.peaks.pass(i, t0, u, r);
                 self.stale[i] = false;
-                w.signal_acc.push(
-                    self.signal(i, [&w.acc[0], &w.acc[1]], [&w.acc[0], &w.acc[1]])
-                        .0,
-                );
+                w.signal_acc
+                    .push(self.signal_value(i, [&w.acc[0], &w.acc[1]]));
             } else {
                 self.stale[i] = true;
                 w.signal_acc.push(0.0);
@@ -391,7 +389,7 @@ impl Stepper<'_> {
                 continue;
             }
             let (u, r) = self.signal(i, q, v);
-            let a = self.signal(i, acc, acc).0;
+            let a = self.signal_value(i, acc);
             let (u0, r0) = self.peaks.last(i);
             let m4 = w.signal_m4[i];
             let margin = cubic_margin(m4, l)
@@ -515,7 +513,7 @@ impl Stepper<'_> {
                 if open.peak[i] {
                     let (u, r) = self.signal(i, q, v);
                     self.peaks.update(i, t, u, r);
-                    w.signal_acc[i] = self.signal(i, acc, acc).0;
+                    w.signal_acc[i] = self.signal_value(i, acc);
                 }
             }
             if self.sears {
