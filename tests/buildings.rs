@@ -396,3 +396,38 @@ fn a_streaming_run_hands_out_its_solution_so_far_and_ends_where_a_plain_run_does
     assert_eq!(streamed.impacts, plain.impacts);
     assert_eq!(streamed.time_s, plain.time_s);
 }
+
+#[test]
+fn a_light_floor_in_contact_for_seconds_keeps_histories_set_by_the_record_not_by_its_steps() {
+    // A 1 kg floor against the paper's right building stays in contact on steps of about a
+    // microsecond: well over a million contact steps. Its histories take a sample where a contact
+    // opens or closes, one per free stretch, and inside contacts no more than the record's
+    // length shared out over 400 000 samples (every 20 us of these 8 s).
+    let m = record();
+    let mut sc = BuildingScenario::paper();
+    sc.left.masses_kg = vec![1.0];
+    let r = run(&sc, &m);
+    assert!(
+        r.stats.contact_steps > 1_000_000,
+        "{} contact steps",
+        r.stats.contact_steps
+    );
+    let samples = r.time_s.len();
+    let events = 2 * r.contacts.len();
+    assert!(
+        samples <= 400_001 + events + r.stats.steps - r.stats.contact_steps,
+        "{samples} samples for {} contact steps",
+        r.stats.contact_steps
+    );
+    // Inside contacts no two regular samples are closer than that spacing (a contact's opening
+    // or closing may fall between them).
+    let close = r
+        .time_s
+        .windows(2)
+        .filter(|w| w[1] - w[0] < 0.5 * 8.0 / 400_000.0)
+        .count();
+    assert!(
+        close <= events + 2,
+        "{close} samples closer than half the spacing"
+    );
+}
