@@ -125,6 +125,44 @@ fn whole_run(c: &mut Criterion) {
     g.finish();
 }
 
+/// The same whole runs as `pounding buildings` now makes them: the estimate's companion and the
+/// run without contact on a second thread beside the run (`solve_checked`). The same
+/// instructions; on two cores, about the companion's time.
+fn whole_run_side_by_side(c: &mut Criterion) {
+    let motion = record();
+    let mut g = c.benchmark_group("whole_run_side_by_side");
+    g.sample_size(10);
+    for (name, base, model) in [
+        (
+            "paper_sears",
+            BuildingScenario::paper(),
+            ContactModel::Sears,
+        ),
+        (
+            "paper_linear",
+            BuildingScenario::paper(),
+            ContactModel::Linear,
+        ),
+        ("mdof_3_5_sears", mdof_3_5(), ContactModel::Sears),
+    ] {
+        let sc = BuildingScenario {
+            contact: model,
+            ..base
+        };
+        g.bench_function(name, |b| {
+            b.iter(|| {
+                pounding::model::building::solve_checked(
+                    black_box(&sc),
+                    black_box(&motion),
+                    &pounding::model::control::Control::new(),
+                )
+                .expect("solves")
+            })
+        });
+    }
+    g.finish();
+}
+
 /// `pounding gaps` over 20 records (El Centro and 19 synthetic ones), the 3- against 5-storey
 /// pair, in parallel: from the records loaded to every record's gaps.
 fn gaps_20_records(c: &mut Criterion) {
@@ -148,6 +186,6 @@ fn gaps_20_records(c: &mut Criterion) {
 criterion_group! {
     name = benches;
     config = Criterion::default().sample_size(20).warm_up_time(std::time::Duration::from_secs(1)).measurement_time(std::time::Duration::from_secs(3));
-    targets = el_centro_8s, three_against_five, whole_run, gaps_20_records
+    targets = el_centro_8s, three_against_five, whole_run, whole_run_side_by_side, gaps_20_records
 }
 criterion_main!(benches);

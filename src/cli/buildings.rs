@@ -4,7 +4,7 @@ use super::building_report::{BuildingReport, summary};
 use clap::Args;
 use pounding::io::building_settings::BuildingSetup;
 use pounding::io::preset;
-use pounding::model::building::{BuildingScenario, ContactModel, solve};
+use pounding::model::building::ContactModel;
 use pounding::model::motion::GroundMotion;
 use pounding::model::settings::BUILDING_SETTINGS;
 use std::io::Write;
@@ -128,19 +128,16 @@ pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     }
     let motion = load_motion(&setup)?;
     let quiet = args.common.quiet || args.common.json;
-    let result = super::with_control("buildings", quiet, |control| {
-        pounding::model::building::solve_with(&setup.scenario, &motion, control)
+    // The run with its error estimate and the run without contact, side by side, all three
+    // under the bar and Ctrl-C.
+    let pounding::model::building::Checked {
+        result,
+        estimate,
+        baseline,
+    } = super::with_control("buildings", quiet, |control| {
+        pounding::model::building::solve_checked(&setup.scenario, &motion, control)
     })?;
     write_animation(args, &setup, &motion, &result)?;
-    let estimate =
-        pounding::model::building::estimate_error(&setup.scenario, &motion, &result).ok();
-    let baseline = solve(
-        &BuildingScenario {
-            contact: ContactModel::None,
-            ..setup.scenario.clone()
-        },
-        &motion,
-    )?;
     args.common.write_plot((1200, 600), || {
         let points = result
             .time_s

@@ -79,19 +79,40 @@ pub fn estimate_error_with(
     control: &Control,
 ) -> Result<BuildingErrorEstimate, SolveError> {
     let start = std::time::Instant::now();
-    // It is compared on the floors' peaks alone: the drifts' are not followed.
-    let fine = super::solve_summary_tracking(
-        &companion(sc, r.stats.fine_step_s),
+    let fine = companion_run(sc, motion, r.stats.fine_step_s, control)?;
+    Ok(estimate_from(r, &fine, start.elapsed().as_secs_f64()))
+}
+
+/// The companion run of a run whose fine step is `fine_step_s` ([`companion`]), keeping only
+/// what the estimate compares: the floors' peaks (the drifts' are not followed), the impacts and
+/// the forces.
+pub fn companion_run(
+    sc: &BuildingScenario,
+    motion: &GroundMotion,
+    fine_step_s: f64,
+    control: &Control,
+) -> Result<BuildingResult, SolveError> {
+    super::solve_summary_tracking(
+        &companion(sc, fine_step_s),
         motion,
         control,
         super::Tracked::Floors,
-    )?;
-    let mut e = compare(r, &fine);
+    )
+}
+
+/// The estimate for run `r` from its companion run `fine` (which took `wall_time_s`): twice
+/// their difference.
+pub fn estimate_from(
+    r: &BuildingResult,
+    fine: &BuildingResult,
+    wall_time_s: f64,
+) -> BuildingErrorEstimate {
+    let mut e = compare(r, fine);
     e.max_force *= 2.0;
     e.peak_displacement *= 2.0;
     e.impact_time *= 2.0;
-    e.wall_time_s = start.elapsed().as_secs_f64();
-    Ok(e)
+    e.wall_time_s = wall_time_s;
+    e
 }
 
 /// The relative differences between two runs of the same scenario (`reference` the other

@@ -9,6 +9,7 @@
 //! bars, linear law, their elastic waves on top of the closing motion, see [`slab`]) or one of the
 //! classic elements ([`elements`]). [`stepper`] runs it in named stages.
 
+pub mod checked;
 pub mod elements;
 pub mod estimate;
 pub mod gaps;
@@ -21,6 +22,7 @@ mod solve;
 mod stepper;
 pub mod warning;
 
+pub use checked::{Checked, solve_checked};
 pub use estimate::{BuildingErrorEstimate, estimate_error, estimate_error_with};
 pub use levels::{Attachment, Level, LevelKind};
 pub use modal::{DampingModel, Modes};

@@ -151,6 +151,18 @@ fn plan(
     )
 }
 
+/// The fine step a run of `sc` under `motion` takes (its [`BuildingStats::fine_step_s`]),
+/// planned without running it: what the error estimate's companion is refined from, so that it
+/// can start beside the run.
+///
+/// [`BuildingStats::fine_step_s`]: super::BuildingStats::fine_step_s
+pub fn planned_step_s(sc: &BuildingScenario, motion: &GroundMotion) -> Result<f64, SolveError> {
+    sc.validate()?;
+    let levels = sc.levels();
+    let modes = [sc.left.modes(), sc.right.modes()];
+    Ok(plan(sc, motion, &levels, &modes).0.h)
+}
+
 /// Samples recorded per contact time scale inside contacts: a force pulse is drawn by some tens
 /// of points, whatever the step.
 const CONTACT_SAMPLES_PER_SCALE: f64 = 8.0;
