@@ -285,8 +285,10 @@ impl Stepper<'_> {
     fn closing_after(&self, p: &Point, inc: &[Vec<f64>; 2]) -> f64 {
         let mut moved = [0.0; 2];
         for (s, out) in moved.iter_mut().enumerate() {
-            let (q, inc, r) = (&self.sides[s].q, &inc[s], &p.r[s]);
-            for k in 0..r.len() {
+            let r = &p.r[s];
+            let n = r.len();
+            let (q, inc) = (&self.sides[s].q[..n], &inc[s][..n]);
+            for k in 0..n {
                 *out += r[k] * (q[k] + inc[k]);
             }
         }
@@ -332,14 +334,16 @@ impl Stepper<'_> {
             let sign = if s == 0 { -1.0 } else { 1.0 };
             let n = cs.step[s].len();
             out.dq[s].resize(n, 0.0);
+            let (dq, step, k_hat) = (&mut out.dq[s][..n], &cs.step[s][..n], &cs.k_hat[s][..n]);
             for k in 0..n {
                 let mut f = 0.0;
                 for &i in &cs.awake {
-                    if out.forces[i] != 0.0 {
-                        f += self.points[i].r[s][k] * out.forces[i];
+                    let force = out.forces[i];
+                    if force != 0.0 {
+                        f += self.points[i].r[s][k] * force;
                     }
                 }
-                out.dq[s][k] = cs.step[s][k] + sign * f / cs.k_hat[s][k];
+                dq[k] = step[k] + sign * f / k_hat[k];
             }
         }
         out.hh = hh;
@@ -359,24 +363,32 @@ impl Stepper<'_> {
             let n = side.modes();
             cs.k_hat[s].resize(n, 0.0);
             cs.step[s].resize(n, 0.0);
+            // Every array sliced to the modes, so that the loop reads them unchecked.
+            let (k_hat, step) = (&mut cs.k_hat[s][..n], &mut cs.step[s][..n]);
+            let (omega, zeta, gamma) = (&side.omega[..n], &side.zeta[..n], &side.gamma[..n]);
+            let (v, a, full_k_hat) = (&side.v[..n], &side.a[..n], &side.k_hat[..n]);
+            let load_now = &cs.load_now[s][..n];
+            let pseudo = side
+                .storeys
+                .as_ref()
+                .map(|st| (&cs.pseudo1[s][..n], &st.load0[..n]));
             for k in 0..n {
                 let kh = if full {
-                    side.k_hat[k]
+                    full_k_hat[k]
                 } else {
-                    newmark_k_hat(side.omega[k], side.zeta[k], hh)
+                    newmark_k_hat(omega[k], zeta[k], hh)
                 };
-                let c = 2.0 * side.zeta[k] * side.omega[k];
-                let contact_now = cs.load_now[s][k];
-                let pseudo_change = match &side.storeys {
-                    Some(_) => cs.pseudo1[s][k] - side.pseudo_now(k),
+                let c = 2.0 * zeta[k] * omega[k];
+                let pseudo_change = match pseudo {
+                    Some((end, now)) => end[k] - now[k],
                     None => 0.0,
                 };
-                let load = -side.gamma[k] * ground_change - contact_now
+                let load = -gamma[k] * ground_change - load_now[k]
                     + pseudo_change
-                    + (4.0 / hh + 2.0 * c) * side.v[k]
-                    + 2.0 * side.a[k];
-                cs.k_hat[s][k] = kh;
-                cs.step[s][k] = load / kh;
+                    + (4.0 / hh + 2.0 * c) * v[k]
+                    + 2.0 * a[k];
+                k_hat[k] = kh;
+                step[k] = load / kh;
             }
         }
     }
@@ -544,20 +556,23 @@ impl Stepper<'_> {
         }
         for s in 0..2 {
             let side = &mut self.sides[s];
-            for k in 0..side.modes() {
-                let (v0, a0) = (side.v[k], side.a[k]);
-                let dq = tr.dq[s][k];
+            let n = side.modes();
+            let (q, v, a) = (&mut side.q[..n], &mut side.v[..n], &mut side.a[..n]);
+            let (omega, zeta, gamma) = (&side.omega[..n], &side.zeta[..n], &side.gamma[..n]);
+            let dqs = &tr.dq[s][..n];
+            for k in 0..n {
+                let (v0, a0) = (v[k], a[k]);
+                let dq = dqs[k];
                 let dv = 2.0 * dq / hh - 2.0 * v0;
                 let da = 4.0 * (dq - hh * v0) / (hh * hh) - 2.0 * a0;
                 let v1 = v0 + dv;
                 // Newmark's discrete energy identity: the work of the ground is half the sum of
                 // its forces times the displacement; the damping takes h/4 c (v0 + v1)^2.
-                self.ledger.input_j += 0.5 * dq * (-side.gamma[k]) * (ground0 + tr.ground);
-                self.ledger.damping_j +=
-                    0.25 * hh * 2.0 * side.zeta[k] * side.omega[k] * (v0 + v1).powi(2);
-                side.q[k] += dq;
-                side.v[k] = v1;
-                side.a[k] = a0 + da;
+                self.ledger.input_j += 0.5 * dq * (-gamma[k]) * (ground0 + tr.ground);
+                self.ledger.damping_j += 0.25 * hh * 2.0 * zeta[k] * omega[k] * (v0 + v1).powi(2);
+                q[k] += dq;
+                v[k] = v1;
+                a[k] = a0 + da;
             }
         }
         self.advance(hh);
