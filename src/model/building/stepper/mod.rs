@@ -304,6 +304,9 @@ pub(super) struct Stepper<'a> {
     pub contacts: Vec<RawContact>,
     pub record: Record,
     signals: Vec<Signal>,
+    /// The signals the run follows, with what the contact steps' proofs read of each, side by
+    /// side in one array (the proofs run over every one of them at every contact step).
+    watch: Vec<record::Watch>,
     peaks: Peaks,
     /// Signals whose last instant the free stretches have not kept (they could not reach their
     /// peak there): the next look at them starts afresh.
@@ -433,6 +436,7 @@ impl<'a> Stepper<'a> {
                 grid.contact_sample_s,
             )
             .with_shears([&sc.left, &sc.right].map(|b| if b.yields() { b.storeys } else { 0 })),
+            watch: record::Watch::all(&signals),
             signals,
             sides,
             points,

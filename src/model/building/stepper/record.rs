@@ -168,6 +168,33 @@ fn join(l: [f64; 4]) -> f64 {
     (l[0] + l[2]) + (l[1] + l[3])
 }
 
+/// A followed signal as the contact steps' proofs read it.
+#[derive(Clone, Copy)]
+pub(super) struct Watch {
+    /// The signal's index.
+    i: usize,
+    side: usize,
+    largest: f64,
+    norm: f64,
+}
+
+impl Watch {
+    /// Every signal the run follows, in their order.
+    pub(super) fn all(signals: &[Signal]) -> Vec<Watch> {
+        signals
+            .iter()
+            .enumerate()
+            .filter(|(_, s)| s.watched())
+            .map(|(i, s)| Watch {
+                i,
+                side: s.side,
+                largest: s.largest,
+                norm: s.norm,
+            })
+            .collect()
+    }
+}
+
 /// The sum of |x| and the Euclidean size of x.
 fn sizes(x: impl Iterator<Item = f64>) -> [f64; 2] {
     let [l1, l2] = x.fold([0.0, 0.0], |[l1, l2], v| [l1 + v.abs(), l2 + v * v]);
@@ -365,12 +392,13 @@ impl Stepper<'_> {
             std::array::from_fn(|s| sizes(self.sides[s].v.iter().copied()));
         // What the step changed the modal velocities by, worked out where a proof needs it.
         let mut kicked: [Option<[f64; 2]>; 2] = [None; 2];
-        for i in 0..self.signals.len() {
-            let sig = &self.signals[i];
-            if !sig.watched() {
-                continue;
-            }
-            let (s, largest, norm) = (sig.side, sig.largest, sig.norm);
+        for w in 0..self.watch.len() {
+            let Watch {
+                i,
+                side: s,
+                largest,
+                norm,
+            } = self.watch[w];
             let peak = self.peaks.peak(i);
             // |sum c dq| is at most max|c| sum|dq| and |c| |dq|: the tighter of the two, for
             // the step's displacement and for the rates at both ends.
