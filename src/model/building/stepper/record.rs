@@ -119,19 +119,17 @@ const LANES_FROM: usize = 16;
 /// The sums of c q and c v over the modes, each as [`sum_of`] takes it.
 #[inline]
 fn sums_of(c: &[f64], q: &[f64], v: &[f64]) -> (f64, f64) {
-    let n = c.len();
-    let (q, v) = (&q[..n], &v[..n]);
-    if n < LANES_FROM {
+    if c.len() < LANES_FROM {
         let (mut u, mut r) = (0.0, 0.0);
-        for k in 0..n {
-            u += c[k] * q[k];
-            r += c[k] * v[k];
+        for ((c, q), v) in c.iter().zip(q).zip(v) {
+            u += c * q;
+            r += c * v;
         }
         return (u, r);
     }
     // Each sum in its own pass: taken together, the compiler pairs the two sums' lanes
     // instead of each sum's, and vectorises less.
-    (sum_of(c, q), sum_of(c, v))
+    (in_lanes(c, q), in_lanes(c, v))
 }
 
 /// The sum of c q over the modes. A tall building's is taken in four interleaved partial sums
@@ -140,15 +138,21 @@ fn sums_of(c: &[f64], q: &[f64], v: &[f64]) -> (f64, f64) {
 /// few modes' sum is taken in order, the cheapest there.
 #[inline]
 fn sum_of(c: &[f64], q: &[f64]) -> f64 {
-    let n = c.len();
-    let q = &q[..n];
-    if n < LANES_FROM {
+    if c.len() < LANES_FROM {
         let mut u = 0.0;
-        for k in 0..n {
-            u += c[k] * q[k];
+        for (c, q) in c.iter().zip(q) {
+            u += c * q;
         }
         return u;
     }
+    in_lanes(c, q)
+}
+
+/// [`sum_of`] for a tall building, in four lanes: out of line, so that the few modes' loop
+/// inlined where signals are read stays small.
+#[inline(never)]
+fn in_lanes(c: &[f64], q: &[f64]) -> f64 {
+    let q = &q[..c.len()];
     let mut u = [0.0f64; 4];
     let (cs, qs) = (c.chunks_exact(4), q.chunks_exact(4));
     let (ct, qt) = (cs.remainder(), qs.remainder());
