@@ -424,7 +424,7 @@ fn a_light_floor_in_contact_for_seconds_keeps_histories_set_by_the_record_not_by
     let close = r
         .time_s
         .windows(2)
-        .filter(|w| w[1] - w[0] < 0.5 * 8.0 / 400_000.0)
+        .filter(|w| w[1] - w[0] < 0.5 * m.duration_s() / 400_000.0)
         .count();
     assert!(
         close <= events + 2,

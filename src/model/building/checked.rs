@@ -29,13 +29,23 @@ pub fn solve_checked(
     motion: &GroundMotion,
     control: &Control,
 ) -> Result<Checked, SolveError> {
+    solve_checked_with(sc, motion, control, &Control::new())
+}
+
+/// [`solve_checked`], the checks (the companion, then the run without contact) reporting to
+/// `checks`: cancelled wherever the run ends without a result, or `control` is cancelled.
+pub fn solve_checked_with(
+    sc: &BuildingScenario,
+    motion: &GroundMotion,
+    control: &Control,
+    checks: &Control,
+) -> Result<Checked, SolveError> {
     let fine_step_s = super::solve::planned_step_s(sc, motion)?;
-    let checks = Control::new();
     let without_contact = BuildingScenario {
         contact: ContactModel::None,
         ..sc.clone()
     };
-    let (checks, without_contact) = (&checks, &without_contact);
+    let without_contact = &without_contact;
     std::thread::scope(|scope| {
         let (done, ended) = std::sync::mpsc::channel::<()>();
         let side = scope.spawn(move || {
@@ -48,40 +58,48 @@ pub fn solve_checked(
             let _ = done.send(());
             (fine, wall, baseline)
         });
+        // Whatever ends the run without a result (an error, a cancel, a panic) stops the
+        // checks too, rather than waiting for them to finish.
+        let stop_checks = CancelOnDrop(checks);
         control.stage(0, 2);
-        let result = super::solve_with(sc, motion, control);
-        if result.is_err() {
-            checks.cancel();
-        } else {
-            control.stage(1, 2);
-            // Passes the checks' progress on, and a cancel back, until they end.
-            while let Err(std::sync::mpsc::RecvTimeoutError::Timeout) =
-                ended.recv_timeout(std::time::Duration::from_millis(10))
-            {
-                if control.report(checks.fraction()).is_err() {
-                    checks.cancel();
-                }
+        let result = super::solve_with(sc, motion, control)?;
+        control.stage(1, 2);
+        // Passes the checks' progress on, and a cancel back, until they end.
+        while let Err(std::sync::mpsc::RecvTimeoutError::Timeout) =
+            ended.recv_timeout(std::time::Duration::from_millis(10))
+        {
+            if control.report(checks.fraction()).is_err() {
+                checks.cancel();
             }
         }
+        std::mem::forget(stop_checks);
         let (fine, wall, baseline) = match side.join() {
             Ok(v) => v,
             Err(panic) => std::panic::resume_unwind(panic),
         };
-        let result = result?;
         if control.cancelled() {
             return Err(SolveError::Cancelled);
         }
-        // The plan is the run's own: a companion refined from another step would not be the
-        // estimate's (never seen; made again after the run rather than trusted).
-        let estimate = if result.stats.fine_step_s == fine_step_s {
-            fine.ok().map(|f| estimate_from(&result, &f, wall))
-        } else {
-            super::estimate_error_with(sc, motion, &result, control).ok()
-        };
+        // The companion was refined from the run's own plan (the same pure function of the
+        // scenario and the record), so it is the estimate's.
+        debug_assert_eq!(
+            result.stats.fine_step_s.to_bits(),
+            fine_step_s.to_bits(),
+            "the run's step is the planned one"
+        );
         Ok(Checked {
-            estimate,
+            estimate: fine.ok().map(|f| estimate_from(&result, &f, wall)),
             baseline: baseline?,
             result,
         })
     })
+}
+
+/// Cancels a control when dropped (unless forgotten).
+struct CancelOnDrop<'a>(&'a Control);
+
+impl Drop for CancelOnDrop<'_> {
+    fn drop(&mut self) {
+        self.0.cancel();
+    }
 }

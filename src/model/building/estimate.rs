@@ -32,7 +32,8 @@ pub struct BuildingErrorEstimate {
     pub impact_time: f64,
     /// This run's impacts minus the companion run's.
     pub impact_count_change: i64,
-    /// Wall time of the companion run [s].
+    /// Wall time of the companion run [s] (where it runs beside the run, as `pounding
+    /// buildings` makes it, on a machine it shares with the run).
     pub wall_time_s: f64,
 }
 
