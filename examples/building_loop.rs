@@ -13,9 +13,7 @@
 
 use pounding::io::building_settings::BuildingSetup;
 use pounding::io::preset;
-use pounding::model::building::{
-    BuildingScenario, ContactModel, estimate_error, solve, solve_summary,
-};
+use pounding::model::building::{BuildingScenario, ContactModel, estimate_error, solve};
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
@@ -59,9 +57,11 @@ fn main() {
         let r = match stage.as_str() {
             "solve" => solve(sc, &motion),
             "estimate" => solve(sc, &motion).and_then(|r| {
-                solve_summary(
-                    &pounding::model::building::estimate::companion(sc, r.stats.fine_step_s),
+                pounding::model::building::estimate::companion_run(
+                    sc,
                     &motion,
+                    r.stats.fine_step_s,
+                    pounding::model::control::Control::never(),
                 )
             }),
             "none" => solve(

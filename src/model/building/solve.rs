@@ -157,10 +157,29 @@ fn plan(
 ///
 /// [`BuildingStats::fine_step_s`]: super::BuildingStats::fine_step_s
 pub fn planned_step_s(sc: &BuildingScenario, motion: &GroundMotion) -> Result<f64, SolveError> {
+    Ok(planned(sc, motion)?.grid.h)
+}
+
+/// What a run of `sc` under `motion` is made of before it steps: its levels, its buildings'
+/// modes and its grid (with the grid's warning, if any).
+struct Planned {
+    levels: Vec<Level>,
+    modes: [Modes; 2],
+    grid: Grid,
+    warning: Option<Warning>,
+}
+
+fn planned(sc: &BuildingScenario, motion: &GroundMotion) -> Result<Planned, SolveError> {
     sc.validate()?;
     let levels = sc.levels();
     let modes = [sc.left.modes(), sc.right.modes()];
-    Ok(plan(sc, motion, &levels, &modes).0.h)
+    let (grid, warning) = plan(sc, motion, &levels, &modes);
+    Ok(Planned {
+        levels,
+        modes,
+        grid,
+        warning,
+    })
 }
 
 /// Samples recorded per contact time scale inside contacts: a force pulse is drawn by some tens
@@ -283,11 +302,13 @@ fn run_publishing(
     tracked: Tracked,
     publish: Option<(std::time::Duration, &mut dyn FnMut(BuildingResult))>,
 ) -> Result<BuildingResult, SolveError> {
-    sc.validate()?;
     let start = Instant::now();
-    let levels = sc.levels();
-    let modes = [sc.left.modes(), sc.right.modes()];
-    let (grid, grid_warning) = plan(sc, motion, &levels, &modes);
+    let Planned {
+        levels,
+        modes,
+        grid,
+        warning: grid_warning,
+    } = planned(sc, motion)?;
     if grid.total > sc.max_steps {
         return Err(step_budget(sc.max_steps, grid.h, 0.0));
     }

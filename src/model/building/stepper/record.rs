@@ -16,12 +16,6 @@ pub(super) struct Signal {
     pub(super) same_as: Option<usize>,
     /// Whether the run keeps its peak (see [`super::super::Tracked`]).
     kept: bool,
-    /// Its largest coefficient: a step that moves its side's modes by dq moves it by at most
-    /// this times the sum of |dq|.
-    largest: f64,
-    /// The Euclidean size of its coefficients: that step moves it by at most this times the
-    /// size of dq, too (the tighter of the two is used).
-    norm: f64,
 }
 
 impl Signal {
@@ -36,8 +30,6 @@ impl Signal {
                     coef: (0..side.modes()).map(|k| side.shapes[k][f]).collect(),
                     same_as: None,
                     kept: true,
-                    largest: 0.0,
-                    norm: 0.0,
                 });
             }
         }
@@ -51,8 +43,6 @@ impl Signal {
                         .collect(),
                     same_as: None,
                     kept: true,
-                    largest: 0.0,
-                    norm: 0.0,
                 });
             }
         }
@@ -63,14 +53,8 @@ impl Signal {
                     coef: p.r[s].clone(),
                     same_as: None,
                     kept: true,
-                    largest: 0.0,
-                    norm: 0.0,
                 });
             }
-        }
-        for sig in out.iter_mut() {
-            sig.largest = sig.coef.iter().fold(0.0, |m: f64, c| m.max(c.abs()));
-            sig.norm = sig.coef.iter().map(|c| c * c).sum::<f64>().sqrt();
         }
         for i in 0..out.len() {
             out[i].same_as = (0..i).find(|&j| {
@@ -178,7 +162,11 @@ pub(super) struct Watch {
     /// The signal's index.
     i: usize,
     side: usize,
+    /// Its largest coefficient: a step that moves its side's modes by dq moves it by at most
+    /// this times the sum of |dq|.
     largest: f64,
+    /// The Euclidean size of its coefficients: that step moves it by at most this times the
+    /// size of dq, too (the tighter of the two is used).
     norm: f64,
 }
 
@@ -192,8 +180,8 @@ impl Watch {
             .map(|(i, s)| Watch {
                 i,
                 side: s.side,
-                largest: s.largest,
-                norm: s.norm,
+                largest: s.coef.iter().fold(0.0, |m: f64, c| m.max(c.abs())),
+                norm: s.coef.iter().map(|c| c * c).sum::<f64>().sqrt(),
             })
             .collect()
     }
