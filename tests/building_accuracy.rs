@@ -3,7 +3,7 @@
 
 use pounding::model::building::estimate::{compare, refined};
 use pounding::model::building::{
-    BuildingResult, BuildingScenario, ContactModel, SlabReading, estimate_error, solve,
+    BuildingResult, BuildingScenario, ContactModel, SlabReading, Warning, estimate_error, solve,
 };
 use pounding::model::motion::GroundMotion;
 
@@ -143,4 +143,57 @@ fn the_undamped_end_reading_converges_to_the_independent_max_force() {
     assert!((f / 4.393e6 - 1.0).abs() < 1.5e-3, "{f:e}");
     let e = estimate_error(&sc, &m, &r).unwrap();
     assert!(e.max_force < 1e-3, "{e:?}");
+}
+
+#[test]
+fn a_run_held_to_its_step_budget_still_bounds_its_error() {
+    // A step budget too small for the contact's time scale holds the run to a coarser step (and
+    // says so). Its error estimate must still refine that step, not the one the tolerance asked
+    // for: a companion held to the same budget would take the same steps and estimate no error.
+    let m = el_centro();
+    let held = BuildingScenario {
+        max_steps: 500_000,
+        ..BuildingScenario::paper()
+    };
+    let r = run(&held, &m);
+    assert!(
+        r.warnings
+            .iter()
+            .any(|w| matches!(w, Warning::GridOverBudget { .. })),
+        "held to the budget: {:?}",
+        r.warnings
+    );
+    let free = run(&BuildingScenario::paper(), &m);
+    assert!(
+        r.stats.fine_step_s > 2.0 * free.stats.fine_step_s,
+        "{} against {}",
+        r.stats.fine_step_s,
+        free.stats.fine_step_s
+    );
+    let truth = run(&refined(&BuildingScenario::paper(), 10.0), &m);
+    let actual = compare(&r, &truth);
+    let estimate = estimate_error(&held, &m, &r).unwrap();
+    eprintln!(
+        "held: actual max force {:.2e}, peaks {:.2e}, impact times {:.2e}; estimated {:.2e}, {:.2e}, {:.2e}",
+        actual.max_force,
+        actual.peak_displacement,
+        actual.impact_time,
+        estimate.max_force,
+        estimate.peak_displacement,
+        estimate.impact_time
+    );
+    assert_eq!(actual.impact_count_change, 0);
+    assert_eq!(estimate.impact_count_change, 0);
+    for (what, a, e) in [
+        ("max force", actual.max_force, estimate.max_force),
+        (
+            "peak displacements",
+            actual.peak_displacement,
+            estimate.peak_displacement,
+        ),
+        ("impact times", actual.impact_time, estimate.impact_time),
+    ] {
+        assert!(a > 1e-9, "{what}: a coarse step has an error to estimate");
+        assert!(e >= a, "{what} estimated {e:e} against an actual {a:e}");
+    }
 }

@@ -431,3 +431,26 @@ fn a_light_floor_in_contact_for_seconds_keeps_histories_set_by_the_record_not_by
         "{close} samples closer than half the spacing"
     );
 }
+
+#[test]
+fn the_slabs_memory_never_coarsens_the_step_of_a_tall_pair() {
+    // 100 storeys a side meet at 100 levels: 200 Sears slabs. Kept at every step of 8 s, their
+    // forces would take 1.6 GB; the drawing of their waves keeps fewer samples instead, so the
+    // run takes the step its contact time scale asks for, whatever the record's length (the
+    // step budget of 20 million steps is far off).
+    let mut setup: pounding::io::building_settings::BuildingSetup =
+        pounding::io::preset::load_for("mdof-3-5", "buildings").expect("preset");
+    for a in [
+        "left.storeys=100",
+        "right.storeys=100",
+        "contact.model=sears",
+    ] {
+        setup.apply_assignment(a).expect("key");
+    }
+    let sc = &setup.scenario;
+    assert_eq!(sc.levels().len(), 100);
+    let long = record();
+    let short = record().truncated(1.0);
+    let steps = [&long, &short].map(|m| pounding::model::building::planned_step_s(sc, m).unwrap());
+    assert_eq!(steps[0], steps[1], "the step of 8 s against that of 1 s");
+}

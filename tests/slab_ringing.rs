@@ -119,7 +119,7 @@ fn a_slabs_ringing_read_in_closed_form_is_what_stepping_it_gives_and_both_are_da
         decay_time: round / (2.0 * std::f64::consts::PI * zeta),
     };
     let pulse_end = (3.0e-3 / h).ceil() as usize + 1;
-    let mut stepped = SlabWaves::new(&slab, mass, zone, zeta, h, 1.0);
+    let mut stepped = SlabWaves::new(&slab, mass, zone, zeta, h, 1.0, 1);
     stepped.revive(0);
     for n in 1..=pulse_end {
         stepped.push(force(n as f64 * h));
@@ -239,4 +239,97 @@ fn a_slab_history_put_on_a_grid_in_one_pass_is_the_history_read_instant_by_insta
         }
     }
     assert!(checked > 100_000, "{checked} samples");
+}
+
+/// A run whose grid is finer than the slabs' memory budget allows keeps one force every k grid
+/// points for drawing the waves, so that the memory is set by the record, not the steps. The
+/// waves drawn from those samples are the ones drawn from every sample: H = F + r H(t - T) holds
+/// at every instant, so the recursion on the coarser grid samples the same history; only its
+/// look-ups of H a round trip back are interpolated more coarsely. Both against the sum
+/// H(t) = sum_k r^k F(t - k T) of the two contacts' forces, over a second contact that starts
+/// while the first still rings (whose history also holds the round trips before it).
+#[test]
+fn a_slab_keeping_every_third_force_draws_the_waves_of_one_keeping_every_force() {
+    let (slab, mass) = slab();
+    let (zeta, zone) = (0.05, 1.0);
+    let round = 2.0 * slab.length_m / slab.wave_speed_m_s(mass);
+    let h = round / 2000.3;
+    let pulse_end = (3.0e-3 / h).ceil() as usize + 1;
+    let stepped = |keep: usize| {
+        let mut s = SlabWaves::new(&slab, mass, zone, zeta, h, 1.0, keep);
+        // Two contacts, the second while the first still rings, then ringing to the end.
+        let mut n = 0;
+        for start in [0usize, pulse_end + (1.7 * round / h) as usize] {
+            while n < start {
+                n += 1;
+            }
+            s.revive(n);
+            for j in 1..=pulse_end {
+                s.push(force(j as f64 * h));
+            }
+            n += pulse_end;
+            for _ in 0..(2.2 * round / h) as usize {
+                s.push(0.0);
+                n += 1;
+            }
+            s.settle();
+        }
+        (s.waves(n as f64 * h), n)
+    };
+    let second = pulse_end + (2.2 * round / h) as usize;
+    let ((every, end), (third, _)) = (stepped(1), stepped(3));
+    let samples = |w: &pounding::model::field::BarWaves| match &w.history {
+        pounding::model::field::History::Segments { dt_s, segments } => (
+            *dt_s,
+            segments.iter().map(|s| s.values.len()).sum::<usize>(),
+        ),
+        _ => panic!("a slab's history is kept in stretches"),
+    };
+    let ((dt1, n1), (dt3, n3)) = (samples(&every), samples(&third));
+    assert!(
+        (dt3 - 3.0 * dt1).abs() <= 1e-12 * dt3,
+        "{dt3} against {dt1}"
+    );
+    // A third of the samples (each stretch's history also holds the round trip before it, on
+    // its own grid, whose look-ups' reach rounds differently: a few tens of samples).
+    assert!(3 * n3 <= n1 + 64, "{n3} samples kept against {n1}");
+    let t_end = end as f64 * h;
+    let r = (-2.0 * std::f64::consts::PI * zeta).exp();
+    let truth = |t: f64| {
+        (0..20)
+            .map(|k| {
+                r.powi(k)
+                    * (force(t - k as f64 * round)
+                        + force(t - second as f64 * h - k as f64 * round))
+            })
+            .sum::<f64>()
+    };
+    let (mut e1, mut e3) = (0.0f64, 0.0f64);
+    let (mut largest, mut worst) = (0.0f64, 0.0f64);
+    for i in 0..=4000 {
+        let t = t_end * i as f64 / 4000.0;
+        let (a, b) = (every.history_at(t), third.history_at(t));
+        e1 = e1.max((a - truth(t)).abs());
+        e3 = e3.max((b - truth(t)).abs());
+        largest = largest.max(a.abs());
+        worst = worst.max((a - b).abs());
+    }
+    eprintln!(
+        "every third force: H differs by {worst:.2e} of {largest:.2e}; off the sum by {e1:.2e} (every force) and {e3:.2e} (every third)"
+    );
+    assert!(largest > 1e6, "the pulses are there: {largest:e}");
+    // A cubic look-up across the force's kinks is off by a fraction of what the force changes
+    // over one kept step: within a quarter of that, on either grid.
+    let slope = 4.0e6 / 1.5e-3;
+    for (e, keep) in [(e1, 1.0), (e3, 3.0)] {
+        assert!(
+            e <= 0.25 * slope * keep * h,
+            "keeping every {keep} forces: off by {e:.2e}, against {:.2e}",
+            0.25 * slope * keep * h
+        );
+    }
+    assert!(
+        worst <= 0.25 * slope * 3.0 * h,
+        "{worst:.2e} of {largest:.2e}: the drawing would move"
+    );
 }

@@ -139,13 +139,16 @@ impl BarWaves {
             // The samples before the stretch: the previous stretch's ringing, or rest.
             let start = first.saturating_sub(lead);
             ring.next = start;
+            // Kept as they are made: the lead is longer than the ring, which keeps only the
+            // look-ups' reach (read back from it, the oldest would be later samples').
+            let mut values: Vec<f64> = Vec::with_capacity(first - start + forces.len());
             for i in start..*first {
                 let v = segments.last().map_or(0.0, |s: &HistorySegment| {
                     s.value_at(i as f64, round_steps, r)
                 });
                 ring.push(v);
+                values.push(v);
             }
-            let mut values: Vec<f64> = (start..*first).map(|i| ring.at(i as isize)).collect();
             for &f in forces {
                 let v = (f + r * ring.known(&tap)) * gain;
                 ring.push(v);

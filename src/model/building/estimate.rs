@@ -48,18 +48,19 @@ pub fn refined(sc: &BuildingScenario, factor: f64) -> BuildingScenario {
 }
 
 /// The run the estimate compares with: the contact step and the grid on which onsets are sought
-/// and peaks sampled halved (through the tolerance and the steps per contact time scale). The
-/// free motion between contacts is exact whatever the length of its steps, so those keep theirs,
-/// unless the grid cannot be halved within them.
+/// and peaks sampled halved (every step the tolerance and the steps per contact time scale set,
+/// with twice the step budget, so that a run held to its budget's step is refined too). The free
+/// motion between contacts is exact whatever the length of its steps, so those keep theirs,
+/// unless the grid cannot be halved within them. This is the scenario; the halving is the
+/// companion run's ([`companion_run`]).
 pub fn companion(sc: &BuildingScenario, fine_step_s: f64) -> BuildingScenario {
-    let fine = refined(sc, 2.0);
     if sc.max_step_s / (0.5 * fine_step_s) <= super::solve::MAX_FREE_STEP as f64 {
-        BuildingScenario {
-            max_step_s: sc.max_step_s,
-            ..fine
-        }
+        sc.clone()
     } else {
-        fine
+        BuildingScenario {
+            max_step_s: sc.max_step_s / 2.0,
+            ..sc.clone()
+        }
     }
 }
 
@@ -93,11 +94,12 @@ pub fn companion_run(
     fine_step_s: f64,
     control: &Control,
 ) -> Result<BuildingResult, SolveError> {
-    super::solve_summary_tracking(
+    super::solve::solve_summary_refined(
         &companion(sc, fine_step_s),
         motion,
         control,
         super::Tracked::Floors,
+        2.0,
     )
 }
 

@@ -32,8 +32,8 @@ pub use result::{
 };
 pub use scenario::{Building, BuildingScenario, SLAB_YOUNGS_MODULUS_PA, Slab};
 pub use solve::{
-    PUBLISH_EVERY, Tracked, solve, solve_streaming, solve_summary, solve_summary_tracking,
-    solve_summary_with, solve_with,
+    PUBLISH_EVERY, SLAB_MEMORY_BUDGET, Tracked, planned_step_s, solve, solve_streaming,
+    solve_summary, solve_summary_tracking, solve_summary_with, solve_with,
 };
 pub use warning::Warning;
 

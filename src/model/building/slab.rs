@@ -85,8 +85,11 @@ pub struct SlabWaves {
     quiet: Option<Quiet>,
     /// The buffers of the last quiet window, kept for the next.
     spare: Quiet,
-    /// Stretches of forces while stepping: (index of the first, the forces).
+    /// Stretches of forces while stepping, one kept every `keep` grid points: (the first's
+    /// index on that coarser grid, the forces).
     forces: Vec<(usize, Vec<f64>)>,
+    /// Every how many grid points a force is kept for the waves' drawing (0: none).
+    keep: usize,
     geometry: BarBody,
 }
 
@@ -105,7 +108,8 @@ pub struct SlabMark {
 impl SlabWaves {
     /// The slab `slab` carrying `mass_kg`, read at `zone_m` from its contact end, with damping
     /// ratio `damping_ratio`, on a grid of step `h`; `push_direction` is +1 when the force
-    /// pushes it towards +x (the right building), -1 for the left. It starts at rest, quiet.
+    /// pushes it towards +x (the right building), -1 for the left. It keeps the force of every
+    /// `keep`-th grid point for drawing its waves (none for 0). It starts at rest, quiet.
     pub fn new(
         slab: &Slab,
         mass_kg: f64,
@@ -113,6 +117,7 @@ impl SlabWaves {
         damping_ratio: f64,
         h: f64,
         push_direction: f64,
+        keep: usize,
     ) -> Self {
         let c = slab.wave_speed_m_s(mass_kg);
         let t = 2.0 * slab.length_m / c;
@@ -172,6 +177,7 @@ impl SlabWaves {
             }),
             spare: Quiet::default(),
             forces: Vec::new(),
+            keep,
             geometry: BarBody {
                 length_m: slab.length_m,
                 area_m2: slab.area_m2(),
@@ -245,7 +251,11 @@ impl SlabWaves {
         self.q.push(q1);
         self.f_prev = force;
         self.elastic = e0 + e1 * force;
-        if let Some((_, f)) = self.forces.last_mut() {
+        // The force just pushed stands at grid index next - 1.
+        if self.keep > 0
+            && (self.q.next - 1).is_multiple_of(self.keep)
+            && let Some((_, f)) = self.forces.last_mut()
+        {
             f.push(force);
         }
         self.zero_run = if force == 0.0 { self.zero_run + 1 } else { 0 };
@@ -371,7 +381,11 @@ impl SlabWaves {
         self.f_prev = 0.0;
         self.elastic = self.quiet_elastic(&q, n as f64);
         self.zero_run = 0;
-        self.forces.push((n + 1, Vec::new()));
+        // The first kept sample at or after the next grid point, on the coarser grid (none kept
+        // for a keep of 0).
+        if let Some(first) = (n + self.keep).checked_div(self.keep) {
+            self.forces.push((first, Vec::new()));
+        }
         self.spare = q;
     }
 
@@ -406,6 +420,12 @@ impl SlabWaves {
     /// them, read as any bar's (stress from the contact end to the free end). `end_s` is the
     /// run's end.
     pub fn waves(&self, end_s: f64) -> BarWaves {
-        BarWaves::from_stretches(self.geometry, self.ringing.h, &self.forces, end_s)
+        let keep = self.keep.max(1);
+        BarWaves::from_stretches(
+            self.geometry,
+            self.ringing.h * keep as f64,
+            &self.forces,
+            end_s,
+        )
     }
 }

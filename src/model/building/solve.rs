@@ -19,8 +19,14 @@ use std::time::Instant;
 /// The most fine steps one free step spans (its exact sub-steps are precomputed).
 pub(super) const MAX_FREE_STEP: usize = 4096;
 
-/// Memory the Sears slabs' histories may take [bytes]: 16 bytes a step per slab.
-pub const SLAB_MEMORY_BUDGET: f64 = 1.0e9;
+/// Memory the Sears slabs' force samples, kept for drawing their waves, may take [bytes]: 8
+/// bytes a sample per slab, counted as if every slab were pushed at every grid point of the
+/// record. Where the grid is finer than that allows, a slab keeps every k-th sample (its waves
+/// drawn on a grid k steps apart), so that this memory is set by the record and the number of
+/// slabs, never by the steps; the step itself is not coarsened for it. The presets keep every
+/// sample (the paper's pair could keep one every 0.5 us; its grid is 14 us); 100 storeys a side
+/// (200 slabs) keep one every 4 steps, 58 us, over a hundred a slab's round trip.
+pub const SLAB_MEMORY_BUDGET: f64 = 2.56e8;
 
 /// The contact's own time scale at a level: the rise of a wave-limited force or the lumped
 /// contact's period (1 m/s bounds the Hertzian elements' scale from below: pounding velocities
@@ -72,6 +78,7 @@ fn plan(
     motion: &GroundMotion,
     levels: &[Level],
     modes: &[super::modal::Modes; 2],
+    refine: f64,
 ) -> (Grid, Option<Warning>) {
     let dt = motion.dt_s;
     let duration = motion.duration_s();
@@ -88,17 +95,14 @@ fn plan(
     // the tolerance.
     let w1 = modes[0].omega_rad_s[0].max(modes[1].omega_rad_s[0]);
     let peaks = (2.0 * sc.tolerance).sqrt() / w1;
-    let wanted = (scale / steps).min(peaks).min(dt).min(sc.max_step_s);
-    let slabs = if sc.contact == ContactModel::Sears {
-        levels
-            .iter()
-            .map(|l| sc.level_slabs(l).iter().flatten().count())
-            .sum::<usize>()
-    } else {
-        0
-    };
-    let floor = (duration / (0.5 * sc.max_steps as f64))
-        .max(duration * 16.0 * slabs as f64 / SLAB_MEMORY_BUDGET);
+    // A refined run (the error estimate's companion) divides every step the tolerance sets,
+    // and has a step budget as many times larger: a run held to its budget's step is refined
+    // too, not held at the same step (its estimate would be zero).
+    let wanted = ((scale / steps).min(peaks) / refine)
+        .min(dt)
+        .min(sc.max_step_s);
+    let max_steps = refined_budget(sc.max_steps, refine);
+    let floor = duration / (0.5 * max_steps as f64);
     let mut warning = None;
     let mut h = wanted;
     if h < floor {
@@ -110,6 +114,14 @@ fn plan(
             max_steps: sc.max_steps,
         });
     }
+    let slabs = if sc.contact == ContactModel::Sears {
+        levels
+            .iter()
+            .map(|l| sc.level_slabs(l).iter().flatten().count())
+            .sum::<usize>()
+    } else {
+        0
+    };
     // Free steps divide the record's step, and fine steps the free step, so that every free
     // step but the first after a contact has the same, precomputed, exact map.
     let free_per_sample = ((dt / sc.max_step_s) * (1.0 - 1e-12)).ceil().max(1.0) as usize;
@@ -135,7 +147,8 @@ fn plan(
     // w_max dt <= 0.3 sqrt(tolerance) (a balance within 1e-7 on the paper's pair), and refines
     // with the tolerance.
     let yield_piece =
-        ((0.3 * sc.tolerance.sqrt() / w_max / h).floor() as usize).clamp(1, per_free_step);
+        ((0.3 * sc.tolerance.sqrt() / w_max / refine / h).floor() as usize).clamp(1, per_free_step);
+    let slab_spacing = duration * 8.0 * slabs as f64 / SLAB_MEMORY_BUDGET;
     (
         Grid {
             h,
@@ -146,9 +159,24 @@ fn plan(
             contact_sample_s: (scale / CONTACT_SAMPLES_PER_SCALE)
                 .max(h)
                 .max(duration / CONTACT_SAMPLE_BUDGET),
+            slab_keep: ((slab_spacing / h) * (1.0 - 1e-12)).ceil().max(1.0) as usize,
+            max_steps,
         },
         warning,
     )
+}
+
+/// A run's step budget refined `refine` times: as many times the steps, within what the budget
+/// may be set to.
+fn refined_budget(max_steps: usize, refine: f64) -> usize {
+    let most = match crate::model::settings::building::MAX_STEPS.kind {
+        crate::model::settings::Kind::Count { max, .. } => max as f64,
+        _ => f64::INFINITY,
+    };
+    if refine <= 1.0 {
+        return max_steps;
+    }
+    (max_steps as f64 * refine).min(most.max(max_steps as f64)) as usize
 }
 
 /// The fine step a run of `sc` under `motion` takes (its [`BuildingStats::fine_step_s`]),
@@ -157,7 +185,7 @@ fn plan(
 ///
 /// [`BuildingStats::fine_step_s`]: super::BuildingStats::fine_step_s
 pub fn planned_step_s(sc: &BuildingScenario, motion: &GroundMotion) -> Result<f64, SolveError> {
-    Ok(planned(sc, motion)?.grid.h)
+    Ok(planned(sc, motion, 1.0)?.grid.h)
 }
 
 /// What a run of `sc` under `motion` is made of before it steps: its levels, its buildings'
@@ -169,11 +197,15 @@ struct Planned {
     warning: Option<Warning>,
 }
 
-fn planned(sc: &BuildingScenario, motion: &GroundMotion) -> Result<Planned, SolveError> {
+fn planned(
+    sc: &BuildingScenario,
+    motion: &GroundMotion,
+    refine: f64,
+) -> Result<Planned, SolveError> {
     sc.validate()?;
     let levels = sc.levels();
     let modes = [sc.left.modes(), sc.right.modes()];
-    let (grid, warning) = plan(sc, motion, &levels, &modes);
+    let (grid, warning) = plan(sc, motion, &levels, &modes, refine);
     Ok(Planned {
         levels,
         modes,
@@ -249,6 +281,18 @@ pub fn solve_summary_tracking(
     run(sc, motion, control, false, tracked)
 }
 
+/// [`solve_summary_tracking`] with every step the tolerance sets divided by `refine`, and a step
+/// budget `refine` times larger: the error estimate's companion.
+pub(super) fn solve_summary_refined(
+    sc: &BuildingScenario,
+    motion: &GroundMotion,
+    control: &Control,
+    tracked: Tracked,
+    refine: f64,
+) -> Result<BuildingResult, SolveError> {
+    run_publishing(sc, motion, control, false, tracked, refine, None)
+}
+
 /// [`solve_with`], handing `publish` what the run has solved so far, at most once per `every`
 /// of wall time (its histories to the instant solved, marked by
 /// [`BuildingResult::solved_to_s`]), so a window can draw a long run while it solves. It is
@@ -267,6 +311,7 @@ pub fn solve_streaming(
         control,
         true,
         Tracked::All,
+        1.0,
         Some((every, publish)),
     )
 }
@@ -282,7 +327,7 @@ fn run(
     histories: bool,
     tracked: Tracked,
 ) -> Result<BuildingResult, SolveError> {
-    run_publishing(sc, motion, control, histories, tracked, None)
+    run_publishing(sc, motion, control, histories, tracked, 1.0, None)
 }
 
 /// What every run shares: the levels, the modes, the grid, the warnings known before it starts.
@@ -300,6 +345,7 @@ fn run_publishing(
     control: &Control,
     histories: bool,
     tracked: Tracked,
+    refine: f64,
     publish: Option<(std::time::Duration, &mut dyn FnMut(BuildingResult))>,
 ) -> Result<BuildingResult, SolveError> {
     let start = Instant::now();
@@ -308,9 +354,9 @@ fn run_publishing(
         modes,
         grid,
         warning: grid_warning,
-    } = planned(sc, motion)?;
-    if grid.total > sc.max_steps {
-        return Err(step_budget(sc.max_steps, grid.h, 0.0));
+    } = planned(sc, motion, refine)?;
+    if grid.total > grid.max_steps {
+        return Err(step_budget(grid.max_steps, grid.h, 0.0));
     }
     let mut warnings: Vec<Warning> = grid_warning.into_iter().collect();
     warnings.extend(paper_reading_warnings(sc, &levels));
@@ -518,4 +564,54 @@ pub(crate) fn step_budget(max_steps: usize, dt_s: f64, reached_s: f64) -> SolveE
             "step budget exceeded: the run needs more than solver.max_steps = {max_steps} steps (step {dt_s:e} s, reached t = {reached_s:e} s); raise solver.max_steps, or shorten the record with motion.duration"
         ),
     ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The tall pair of the issue (100 storeys a side, 200 slabs) over 8 s of El Centro.
+    fn tall() -> (BuildingScenario, GroundMotion) {
+        let mut setup: crate::io::building_settings::BuildingSetup =
+            crate::io::preset::load_for("mdof-3-5", "buildings").expect("preset");
+        for a in [
+            "left.storeys=100",
+            "right.storeys=100",
+            "contact.model=sears",
+        ] {
+            setup.apply_assignment(a).expect("key");
+        }
+        let m = crate::io::motion::load(&setup.motion).expect("record");
+        (setup.scenario, m)
+    }
+
+    #[test]
+    fn two_hundred_slabs_keep_their_forces_within_the_budget_on_a_coarser_grid() {
+        let (sc, m) = tall();
+        let grid = planned(&sc, &m, 1.0).unwrap().grid;
+        let slabs = 2.0 * sc.levels().len() as f64;
+        let kept = m.duration_s() / (grid.h * grid.slab_keep as f64);
+        assert!(grid.slab_keep >= 2, "every {} grid points", grid.slab_keep);
+        assert!(
+            8.0 * kept * slabs <= SLAB_MEMORY_BUDGET,
+            "{kept} samples a slab"
+        );
+        // And no coarser than the budget needs: one grid point fewer would not fit.
+        let finer = m.duration_s() / (grid.h * (grid.slab_keep - 1) as f64);
+        assert!(8.0 * finer * slabs > SLAB_MEMORY_BUDGET);
+    }
+
+    #[test]
+    fn a_refined_plan_halves_a_step_held_to_the_budget() {
+        let (mut sc, m) = tall();
+        sc.max_steps = 500_000;
+        let run = planned(&sc, &m, 1.0).unwrap();
+        let refined = planned(&sc, &m, 2.0).unwrap();
+        assert!(run.warning.is_some(), "held to the budget");
+        // Each grid divides the free step, rounding it by at most one step in a free step.
+        let ratio = run.grid.h / refined.grid.h;
+        let rounding = 2.0 / run.grid.per_free_step as f64;
+        assert!((ratio - 2.0).abs() <= rounding, "{ratio}");
+        assert_eq!(refined.grid.max_steps, 1_000_000);
+    }
 }

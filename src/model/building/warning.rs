@@ -6,7 +6,7 @@ use std::fmt;
 /// A warning attached to a building run.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Warning {
-    /// The contact's time scale needs a finer grid than the step or memory budget allows; a
+    /// The contact's time scale needs a finer grid than the step budget allows; a
     /// coarser grid is used (stable: the contact force is implicit) and the force's rise is not
     /// resolved.
     GridOverBudget {
@@ -58,7 +58,7 @@ impl fmt::Display for Warning {
                 max_steps,
             } => write!(
                 f,
-                "the contact's time scale ({scale_s:.3e} s) needs a step of {wanted_s:.3e} s, over the step or memory budget (solver.max_steps = {max_steps}) for this record: using {used_s:.3e} s, which does not resolve the force's rise; raise solver.max_steps or shorten the record for accurate forces"
+                "the contact's time scale ({scale_s:.3e} s) needs a step of {wanted_s:.3e} s, over the step budget (solver.max_steps = {max_steps}) for this record: using {used_s:.3e} s, which does not resolve the force's rise; raise solver.max_steps or shorten the record for accurate forces"
             ),
             Warning::PaperReadingUnstable { level, a_tau } => write!(
                 f,

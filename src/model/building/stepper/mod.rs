@@ -61,6 +61,11 @@ pub(super) struct Grid {
     pub contact_sample_s: f64,
     /// Fine steps a planned piece of free motion takes at most where storeys yield.
     pub yield_piece: usize,
+    /// Each Sears slab keeps the force of every this many grid points for drawing its waves
+    /// (within [`SLAB_MEMORY_BUDGET`](super::super::solve::SLAB_MEMORY_BUDGET)).
+    pub slab_keep: usize,
+    /// The most steps the run may take.
+    pub max_steps: usize,
 }
 
 impl Grid {
@@ -416,7 +421,11 @@ impl<'a> Stepper<'a> {
         let sears = sc.contact == ContactModel::Sears;
         let points: Vec<Point> = levels
             .iter()
-            .map(|level| new_point(sc, &sides, level, grid.h, sears))
+            .map(|level| {
+                // A summary's slabs keep no forces: their waves are not drawn.
+                let keep = if histories { grid.slab_keep } else { 0 };
+                new_point(sc, &sides, level, grid.h, sears, keep)
+            })
             .collect();
         let signals = Signal::all(&sides, &points, tracked);
         let mut s = Stepper {
@@ -479,9 +488,9 @@ impl<'a> Stepper<'a> {
 
     fn count_step(&mut self) -> Result<(), SolveError> {
         self.steps += 1;
-        if self.steps > self.sc.max_steps {
+        if self.steps > self.grid.max_steps {
             return Err(super::solve::step_budget(
-                self.sc.max_steps,
+                self.grid.max_steps,
                 self.grid.h,
                 self.time(),
             ));
@@ -656,6 +665,7 @@ fn new_point(
     level: &Level,
     h: f64,
     sears: bool,
+    keep: usize,
 ) -> Point {
     let attach = [level.left, level.right];
     let r: [Vec<f64>; 2] = std::array::from_fn(|s| {
@@ -687,6 +697,7 @@ fn new_point(
                 sc.slab_damping,
                 h,
                 if i == 0 { -1.0 } else { 1.0 },
+                keep,
             )
         })
     };
