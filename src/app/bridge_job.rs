@@ -36,9 +36,8 @@ use super::job_error::JobError;
 /// The job: its stages go to `stages`, its last is returned. The drawing (the girders' waves
 /// on their GPU grid) is made here, off the UI thread.
 pub(super) fn run_job(setup: BridgeSetup, control: &Control, stages: &Stages<Output>) -> Output {
-    let motion = crate::io::motion::load(&setup.motion)?;
+    let (motion, stats) = super::motion_cache::load(&setup.motion)?;
     control.stage(0, 3);
-    let stats = motion.stats();
     let result = solve_streaming(
         &setup.scenario,
         &motion,

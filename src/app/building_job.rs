@@ -40,10 +40,9 @@ pub(super) use super::job_error::JobError;
 /// The job: its stages go to `stages`, its last is returned. The drawings (the slabs' waves
 /// and their GPU grid) are made here, off the UI thread.
 pub(super) fn run_job(setup: BuildingSetup, control: &Control, stages: &Stages<Output>) -> Output {
-    let motion = crate::io::motion::load(&setup.motion)?;
+    let (motion, stats) = super::motion_cache::load(&setup.motion)?;
     // Three parts of the progress bar: the run, the run without contact, the estimate.
     control.stage(0, 3);
-    let stats = motion.stats();
     let result = solve_streaming(
         &setup.scenario,
         &motion,

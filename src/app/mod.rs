@@ -30,6 +30,7 @@ mod lecture;
 mod lesson_panel;
 pub mod lesson_player;
 mod menus;
+mod motion_cache;
 mod motion_params;
 mod paper_figures;
 mod params;

@@ -333,6 +333,40 @@ pub fn parse_at2(text: &str, source: &str) -> Result<GroundMotion, MotionError> 
     })
 }
 
+/// Calls `f` with each field of a line: the text between commas and white space. An ASCII line
+/// (any record we know of) is split byte by byte.
+fn each_field(
+    t: &str,
+    mut f: impl FnMut(&str) -> Result<(), MotionError>,
+) -> Result<(), MotionError> {
+    if !t.is_ascii() {
+        for s in t
+            .split(|c: char| c == ',' || c.is_whitespace())
+            .filter(|s| !s.is_empty())
+        {
+            f(s)?;
+        }
+        return Ok(());
+    }
+    // The ASCII characters char::is_whitespace takes: u8's white space and the vertical tab.
+    let apart = |b: u8| b == b',' || b.is_ascii_whitespace() || b == 0x0b;
+    let b = t.as_bytes();
+    let mut i = 0;
+    while i < b.len() {
+        while i < b.len() && apart(b[i]) {
+            i += 1;
+        }
+        let start = i;
+        while i < b.len() && !apart(b[i]) {
+            i += 1;
+        }
+        if i > start {
+            f(&t[start..i])?;
+        }
+    }
+    Ok(())
+}
+
 /// Text: `#` or `%` comments, values separated by blanks or commas. Rows of two numbers are
 /// (time, acceleration) unless a step is given; anything else is a list of values at `dt_s`.
 pub fn parse_text(
@@ -342,19 +376,26 @@ pub fn parse_text(
     dt_s: Option<f64>,
 ) -> Result<GroundMotion, MotionError> {
     let scale = units.to_m_s2();
-    let mut rows: Vec<(usize, Vec<f64>)> = Vec::new();
+    // Every value in one column, each row its line and its range there (a vector a row took
+    // most of the time reading a record).
+    let mut values: Vec<f64> = Vec::with_capacity(text.len() / 8);
+    let mut spans: Vec<(usize, std::ops::Range<usize>)> = Vec::new();
     for (i, line) in text.lines().enumerate() {
         let t = line.trim();
         if t.is_empty() || t.starts_with('#') || t.starts_with('%') {
             continue;
         }
-        let toks: Result<Vec<f64>, _> = t
-            .split(|c: char| c == ',' || c.is_whitespace())
-            .filter(|s| !s.is_empty())
-            .map(|s| number(s, source, i + 1))
-            .collect();
-        rows.push((i + 1, toks?));
+        let start = values.len();
+        each_field(t, |s| {
+            values.push(number(s, source, i + 1)?);
+            Ok(())
+        })?;
+        spans.push((i + 1, start..values.len()));
     }
+    let rows: Vec<(usize, &[f64])> = spans
+        .into_iter()
+        .map(|(line, r)| (line, &values[r]))
+        .collect();
     if rows.is_empty() {
         return Err(err(source, None, "no data"));
     }
@@ -437,7 +478,7 @@ pub fn parse_text(
         accel_m_s2: rows
             .into_iter()
             .flat_map(|(_, r)| r)
-            .map(|a| a * scale)
+            .map(|&a| a * scale)
             .collect(),
     })
 }

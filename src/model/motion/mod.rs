@@ -212,19 +212,23 @@ impl GroundMotion {
         let sub = (40.0 * self.dt_s / period_s).ceil().max(1.0) as usize;
         let h = self.dt_s / sub as f64;
         let (k, c) = (w * w, 2.0 * damping * w);
-        let k_hat = k + 2.0 * c / h + 4.0 / (h * h);
+        // The step's constants worked out once: a report's spectrum takes 80 periods of a whole
+        // record, 130 000 steps for 8 s of El Centro.
+        let (two_h, four_h, four_hh) = (2.0 / h, 4.0 / h, 4.0 / (h * h));
+        let inv_k_hat = 1.0 / (k + c * two_h + four_hh);
+        let (on_u, on_v) = (four_hh + c * two_h, four_h + c);
         let (mut u, mut v) = (0.0f64, 0.0f64);
         let mut acc = -self.accel_m_s2.first().copied().unwrap_or(0.0);
         let mut peak = 0.0f64;
         for pair in self.accel_m_s2.windows(2) {
+            let slope = (pair[1] - pair[0]) / sub as f64;
             for j in 1..=sub {
-                let ag = pair[0] + (pair[1] - pair[0]) * j as f64 / sub as f64;
-                let p = -ag + 4.0 * u / (h * h) + 4.0 * v / h + acc + c * (2.0 * u / h + v);
-                let u1 = p / k_hat;
-                let v1 = 2.0 * (u1 - u) / h - v;
-                acc = 4.0 * (u1 - u) / (h * h) - 4.0 * v / h - acc;
+                let ag = pair[0] + slope * j as f64;
+                let u1 = (on_u * u + on_v * v + acc - ag) * inv_k_hat;
+                let du = u1 - u;
+                acc = four_hh * du - four_h * v - acc;
+                v = two_h * du - v;
                 u = u1;
-                v = v1;
                 peak = peak.max(u.abs());
             }
         }

@@ -249,12 +249,12 @@ impl Stepper<'_> {
                 .push(weighted(&p.r[0], &w.m5[0]) + weighted(&p.r[1], &w.m5[1]));
             let size =
                 (weighted(&p.r[0], &w.size[0]) + weighted(&p.r[1], &w.size[1])) * (1.0 + ROUNDING);
-            let elastic = if self.sears {
-                p.elastic_bound_from(self.n)
-            } else {
-                0.0
-            };
-            root.onset.push(contact && size + elastic >= self.sc.gap_m);
+            // The slabs' ringing is bounded (its envelope tabulated) only where the motion alone
+            // cannot reach the gap: the bound is never negative.
+            let onset = contact
+                && (size >= self.sc.gap_m
+                    || self.sears && size + p.elastic_bound_from(self.n) >= self.sc.gap_m);
+            root.onset.push(onset);
             root.closing
                 .push(size >= p.max_closing - 1e-6 * p.max_closing.abs());
         }
