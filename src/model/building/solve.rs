@@ -166,17 +166,14 @@ fn plan(
     )
 }
 
-/// A run's step budget refined `refine` times: as many times the steps, within what the budget
-/// may be set to.
+/// A run's step budget refined `refine` times: as many times the steps (beyond what a user may
+/// set: the companion of a run held to the largest budget must still halve its step).
 fn refined_budget(max_steps: usize, refine: f64) -> usize {
-    let most = match crate::model::settings::building::MAX_STEPS.kind {
-        crate::model::settings::Kind::Count { max, .. } => max as f64,
-        _ => f64::INFINITY,
-    };
     if refine <= 1.0 {
         return max_steps;
     }
-    (max_steps as f64 * refine).min(most.max(max_steps as f64)) as usize
+    // A float beyond usize's range saturates.
+    (max_steps as f64 * refine) as usize
 }
 
 /// The fine step a run of `sc` under `motion` takes (its [`BuildingStats::fine_step_s`]),
