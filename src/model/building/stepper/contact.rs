@@ -54,7 +54,8 @@ pub(super) struct Scratch {
     trial: Trial,
     /// Each side's modal displacements and velocities where the step started.
     modal_before: [[Vec<f64>; 2]; 2],
-    u_before: Vec<(f64, f64)>,
+    /// Each awake point's closing where the step started (its work's displacement).
+    u_before: Vec<f64>,
     /// Yielding storeys: each side's load of their corrections at the trial's end, per mode.
     pseudo1: [Vec<f64>; 2],
 }
@@ -544,9 +545,10 @@ impl Stepper<'_> {
         let ground0 = cs.ground0;
         // Only the awake points' entries are read (by `account_contacts`): the others may hold
         // an earlier step's.
-        cs.u_before.resize(self.points.len(), (0.0, 0.0));
+        cs.u_before.resize(self.points.len(), 0.0);
         for &i in &cs.awake {
-            cs.u_before[i] = self.point_now_of(&self.points[i]);
+            let p = &self.points[i];
+            cs.u_before[i] = dotv(&p.r[0], &self.sides[0].q) - dotv(&p.r[1], &self.sides[1].q);
         }
         for s in 0..2 {
             let side = &self.sides[s];
@@ -617,18 +619,28 @@ impl Stepper<'_> {
         let (t1, n1) = (self.time(), self.n);
         let mut opened_or_closed = false;
         for &i in &cs.awake {
-            let u_after = self.point_now(i);
+            // The closing now; its rate is read only where a contact opens without an approach
+            // velocity.
+            let closing = {
+                let p = &self.points[i];
+                dotv(&p.r[0], &self.sides[0].q) - dotv(&p.r[1], &self.sides[1].q)
+            };
+            let opening = {
+                let p = &self.points[i];
+                (p.force <= 0.0 && tr.forces[i] > 0.0 && p.v0 <= 0.0)
+                    .then(|| dotv(&p.r[0], &self.sides[0].v) - dotv(&p.r[1], &self.sides[1].v))
+            };
             let p = &mut self.points[i];
             // The point's force is still the step's first until it is set below.
             let (f0, f1) = (p.force, tr.forces[i]);
             // The contact's work on the buildings: -(F0 + F1)/2 times the closing displacement.
-            self.ledger.contact_work_j -= 0.5 * (f0 + f1) * (u_after.0 - cs.u_before[i].0);
+            self.ledger.contact_work_j -= 0.5 * (f0 + f1) * (closing - cs.u_before[i]);
             let delta0 = p.delta;
             p.delta = if self.sears && cs.far[i] {
                 // Out of reach: a lower bound on the overlap (no force is read from it).
-                u_after.0 - self.sc.gap_m - cs.far_bound[i]
+                closing - self.sc.gap_m - cs.far_bound[i]
             } else if self.sears {
-                u_after.0 - self.sc.gap_m - p.elastic_at(n1)
+                closing - self.sc.gap_m - p.elastic_at(n1)
             } else {
                 tr.deltas[i]
             };
@@ -656,8 +668,8 @@ impl Stepper<'_> {
                 } else {
                     t0
                 };
-                if p.v0 <= 0.0 {
-                    p.v0 = u_after.1.max(1e-12);
+                if let Some(rate) = opening {
+                    p.v0 = rate.max(1e-12);
                 }
                 p.open = Some(self.contacts.len());
                 self.contacts.push(RawContact {
