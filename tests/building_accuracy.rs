@@ -171,6 +171,11 @@ fn a_run_held_to_its_step_budget_still_bounds_its_error() {
         free.stats.fine_step_s
     );
     let truth = run(&refined(&BuildingScenario::paper(), 10.0), &m);
+    assert!(
+        truth.warnings.is_empty(),
+        "the reference is not held: {:?}",
+        truth.warnings
+    );
     let actual = compare(&r, &truth);
     let estimate = estimate_error(&held, &m, &r).unwrap();
     eprintln!(
@@ -196,4 +201,48 @@ fn a_run_held_to_its_step_budget_still_bounds_its_error() {
         assert!(a > 1e-9, "{what}: a coarse step has an error to estimate");
         assert!(e >= a, "{what} estimated {e:e} against an actual {a:e}");
     }
+}
+
+#[test]
+fn a_run_the_budget_does_not_hold_has_the_same_estimate_whatever_the_budget() {
+    // Between one and two times the grid's steps, the run is not held but a companion planned
+    // like a run (twice the steps, the same budget) was, and estimated a smaller error than it
+    // had. The companion's budget is now twice the run's: the estimate is the budget's concern
+    // only where the run itself is held.
+    let m = el_centro();
+    let sc = BuildingScenario::paper();
+    let roomy = run(&sc, &m);
+    let tight = BuildingScenario {
+        max_steps: 1_500_000,
+        ..BuildingScenario::paper()
+    };
+    let r = run(&tight, &m);
+    assert!(r.warnings.is_empty(), "not held: {:?}", r.warnings);
+    assert_eq!(r.stats.fine_step_s, roomy.stats.fine_step_s);
+    let [a, b] = [(&sc, &roomy), (&tight, &r)].map(|(sc, r)| estimate_error(sc, &m, r).unwrap());
+    assert_eq!(
+        (a.max_force, a.peak_displacement, a.impact_time),
+        (b.max_force, b.peak_displacement, b.impact_time)
+    );
+}
+
+#[test]
+fn a_run_at_the_tightest_tolerance_still_estimates_its_error() {
+    // A tolerance of 1e-12 (the tightest accepted) holds the run to its step budget; its
+    // companion used to be planned at a quarter of it, which no scenario accepts, and the run
+    // came without an estimate.
+    let m = el_centro().truncated(2.0);
+    let sc = BuildingScenario {
+        tolerance: 1e-12,
+        max_steps: 200_000,
+        ..BuildingScenario::paper()
+    };
+    let r = run(&sc, &m);
+    assert!(
+        r.warnings
+            .iter()
+            .any(|w| matches!(w, Warning::GridOverBudget { .. }))
+    );
+    let e = estimate_error(&sc, &m, &r).expect("an estimate");
+    assert!(e.max_force > 0.0 && e.max_force.is_finite(), "{e:?}");
 }

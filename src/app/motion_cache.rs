@@ -9,17 +9,28 @@ use crate::io::motion::{MotionError, MotionSpec};
 use crate::model::motion::{GroundMotion, MotionStats};
 use std::sync::Mutex;
 
-/// The last record worked out, by the spec it came from.
-static LAST: Mutex<Option<(MotionSpec, GroundMotion, MotionStats)>> = Mutex::new(None);
+/// A record worked out, by the spec it came from.
+type Kept = Mutex<Option<(MotionSpec, GroundMotion, MotionStats)>>;
+
+/// The last record the window's jobs worked out.
+static LAST: Kept = Mutex::new(None);
 
 /// The record `spec` names and its summary.
 pub(super) fn load(spec: &MotionSpec) -> Result<(GroundMotion, MotionStats), MotionError> {
+    load_keeping(&LAST, spec)
+}
+
+/// [`load`], keeping the record in `last`.
+fn load_keeping(
+    last: &Kept,
+    spec: &MotionSpec,
+) -> Result<(GroundMotion, MotionStats), MotionError> {
     let kept = spec
         .file
         .as_deref()
-        .is_none_or(|f| crate::io::motion::BUILT_IN.iter().any(|b| b.name == f));
+        .is_none_or(crate::io::motion::is_built_in);
     if kept
-        && let Some((s, m, stats)) = LAST.lock().unwrap_or_else(|e| e.into_inner()).as_ref()
+        && let Some((s, m, stats)) = last.lock().unwrap_or_else(|e| e.into_inner()).as_ref()
         && s == spec
     {
         return Ok((m.clone(), *stats));
@@ -27,7 +38,7 @@ pub(super) fn load(spec: &MotionSpec) -> Result<(GroundMotion, MotionStats), Mot
     let motion = crate::io::motion::load(spec)?;
     let stats = motion.stats();
     if kept {
-        *LAST.lock().unwrap_or_else(|e| e.into_inner()) =
+        *last.lock().unwrap_or_else(|e| e.into_inner()) =
             Some((spec.clone(), motion.clone(), stats));
     }
     Ok((motion, stats))
@@ -39,6 +50,9 @@ mod tests {
 
     #[test]
     fn a_record_file_is_read_again_and_a_built_in_one_kept() {
+        // Its own keeper: the window's is shared by every job in the process.
+        let last: Kept = Mutex::new(None);
+        let load = |spec: &MotionSpec| load_keeping(&last, spec);
         let dir =
             std::env::temp_dir().join(format!("pounding-motion-cache-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
@@ -64,9 +78,14 @@ mod tests {
             ..MotionSpec::default()
         };
         let (a, sa) = load(&built_in).unwrap();
-        let (b, sb) = load(&built_in).unwrap();
-        assert_eq!(a.accel_m_s2, b.accel_m_s2);
-        assert_eq!(sa, sb);
         assert_eq!(sa, crate::io::motion::load(&built_in).unwrap().stats());
+        // What is kept is what the next load of the same record returns, not read again: a
+        // mark put on the kept copy comes back.
+        if let Some((_, m, _)) = last.lock().unwrap().as_mut() {
+            m.accel_m_s2[0] = 12.5;
+        }
+        let (b, _) = load(&built_in).unwrap();
+        assert_eq!(b.accel_m_s2[0], 12.5);
+        assert_eq!(b.accel_m_s2[1..], a.accel_m_s2[1..]);
     }
 }

@@ -25,6 +25,11 @@ pub const BUILT_IN: &[BuiltIn] = &[BuiltIn {
     text: include_str!("../../assets/motions/elcentro-1940-ns.txt"),
 }];
 
+/// Whether `name` is a built-in record's.
+pub fn is_built_in(name: &str) -> bool {
+    BUILT_IN.iter().any(|b| b.name == name)
+}
+
 /// A built-in record by name.
 pub fn built_in(name: &str) -> Option<GroundMotion> {
     let b = BUILT_IN.iter().find(|b| b.name == name)?;
@@ -68,7 +73,7 @@ const MAX_SETTLE_SAMPLES: f64 = 1e7;
 /// scaled. Errors name the source and, for a malformed file, the line.
 pub fn load(spec: &MotionSpec) -> Result<GroundMotion, MotionError> {
     let mut motion = match &spec.file {
-        Some(name) if built_in(name).is_some() => built_in(name).expect("just found"),
+        Some(name) if is_built_in(name) => built_in(name).expect("just found"),
         Some(path) => {
             let text = super::file::read_text(std::path::Path::new(path)).map_err(|e| {
                 let names: Vec<&str> = BUILT_IN.iter().map(|b| b.name).collect();

@@ -37,7 +37,9 @@ pub struct BuildingErrorEstimate {
     pub wall_time_s: f64,
 }
 
-/// The same scenario with every discretisation parameter refined twofold.
+/// The same scenario with every discretisation parameter refined `factor`-fold (its step budget
+/// kept: a run that would outgrow it is held to a coarser step, with a warning, so a reference
+/// made this way must be checked for one).
 pub fn refined(sc: &BuildingScenario, factor: f64) -> BuildingScenario {
     BuildingScenario {
         steps_per_scale: Some(sc.steps_per_scale() * factor),
@@ -53,7 +55,7 @@ pub fn refined(sc: &BuildingScenario, factor: f64) -> BuildingScenario {
 /// motion between contacts is exact whatever the length of its steps, so those keep theirs,
 /// unless the grid cannot be halved within them. This is the scenario; the halving is the
 /// companion run's ([`companion_run`]).
-pub fn companion(sc: &BuildingScenario, fine_step_s: f64) -> BuildingScenario {
+pub fn companion_scenario(sc: &BuildingScenario, fine_step_s: f64) -> BuildingScenario {
     if sc.max_step_s / (0.5 * fine_step_s) <= super::solve::MAX_FREE_STEP as f64 {
         sc.clone()
     } else {
@@ -85,7 +87,7 @@ pub fn estimate_error_with(
     Ok(estimate_from(r, &fine, start.elapsed().as_secs_f64()))
 }
 
-/// The companion run of a run whose fine step is `fine_step_s` ([`companion`]), keeping only
+/// The companion run of a run whose fine step is `fine_step_s` ([`companion_scenario`]), keeping only
 /// what the estimate compares: the floors' peaks (the drifts' are not followed), the impacts and
 /// the forces.
 pub fn companion_run(
@@ -95,11 +97,11 @@ pub fn companion_run(
     control: &Control,
 ) -> Result<BuildingResult, SolveError> {
     super::solve::solve_summary_refined(
-        &companion(sc, fine_step_s),
+        &companion_scenario(sc, fine_step_s),
         motion,
         control,
         super::Tracked::Floors,
-        2.0,
+        2,
     )
 }
 

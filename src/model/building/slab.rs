@@ -85,11 +85,8 @@ pub struct SlabWaves {
     quiet: Option<Quiet>,
     /// The buffers of the last quiet window, kept for the next.
     spare: Quiet,
-    /// Stretches of forces while stepping, one kept every `keep` grid points: (the first's
-    /// index on that coarser grid, the forces).
-    forces: Vec<(usize, Vec<f64>)>,
-    /// Every how many grid points a force is kept for the waves' drawing (0: none).
-    keep: usize,
+    /// The forces kept for drawing the waves.
+    forces: KeptForces,
     geometry: BarBody,
 }
 
@@ -102,14 +99,14 @@ pub struct SlabMark {
     f_prev: f64,
     elastic: f64,
     zero_run: usize,
-    forces: usize,
 }
 
 impl SlabWaves {
     /// The slab `slab` carrying `mass_kg`, read at `zone_m` from its contact end, with damping
     /// ratio `damping_ratio`, on a grid of step `h`; `push_direction` is +1 when the force
-    /// pushes it towards +x (the right building), -1 for the left. It keeps the force of every
-    /// `keep`-th grid point for drawing its waves (none for 0). It starts at rest, quiet.
+    /// pushes it towards +x (the right building), -1 for the left. It keeps at most `share`
+    /// forces for drawing its waves (none for 0): every one while they fit, then every second,
+    /// fourth, ... grid point's. It starts at rest, quiet.
     pub fn new(
         slab: &Slab,
         mass_kg: f64,
@@ -117,7 +114,7 @@ impl SlabWaves {
         damping_ratio: f64,
         h: f64,
         push_direction: f64,
-        keep: usize,
+        share: usize,
     ) -> Self {
         let c = slab.wave_speed_m_s(mass_kg);
         let t = 2.0 * slab.length_m / c;
@@ -176,8 +173,7 @@ impl SlabWaves {
                 ..Quiet::default()
             }),
             spare: Quiet::default(),
-            forces: Vec::new(),
-            keep,
+            forces: KeptForces::new(share),
             geometry: BarBody {
                 length_m: slab.length_m,
                 area_m2: slab.area_m2(),
@@ -252,12 +248,7 @@ impl SlabWaves {
         self.f_prev = force;
         self.elastic = e0 + e1 * force;
         // The force just pushed stands at grid index next - 1.
-        if self.keep > 0
-            && (self.q.next - 1).is_multiple_of(self.keep)
-            && let Some((_, f)) = self.forces.last_mut()
-        {
-            f.push(force);
-        }
+        self.forces.push(self.q.next - 1, force);
         self.zero_run = if force == 0.0 { self.zero_run + 1 } else { 0 };
     }
 
@@ -381,11 +372,7 @@ impl SlabWaves {
         self.f_prev = 0.0;
         self.elastic = self.quiet_elastic(&q, n as f64);
         self.zero_run = 0;
-        // The first kept sample at or after the next grid point, on the coarser grid (none kept
-        // for a keep of 0).
-        if let Some(first) = (n + self.keep).checked_div(self.keep) {
-            self.forces.push((first, Vec::new()));
-        }
+        self.forces.start(n + 1);
         self.spare = q;
     }
 
@@ -398,7 +385,6 @@ impl SlabWaves {
             f_prev: self.f_prev,
             elastic: self.elastic,
             zero_run: self.zero_run,
-            forces: self.forces.last().map_or(0, |(_, f)| f.len()),
         }
     }
 
@@ -410,9 +396,7 @@ impl SlabWaves {
         self.f_prev = mark.f_prev;
         self.elastic = mark.elastic;
         self.zero_run = mark.zero_run;
-        if let Some((_, f)) = self.forces.last_mut() {
-            f.truncate(mark.forces);
-        }
+        self.forces.truncate_from(mark.next);
     }
 
     /// The slab's stress waves over the run: H = F + r H(t - T) on the step grid over each
@@ -420,12 +404,87 @@ impl SlabWaves {
     /// them, read as any bar's (stress from the contact end to the free end). `end_s` is the
     /// run's end.
     pub fn waves(&self, end_s: f64) -> BarWaves {
-        let keep = self.keep.max(1);
         BarWaves::from_stretches(
             self.geometry,
-            self.ringing.h * keep as f64,
-            &self.forces,
+            self.ringing.h * self.forces.keep as f64,
+            &self.forces.stretches,
             end_s,
         )
+    }
+}
+
+/// A slab's forces kept for drawing its waves, within a share of samples: every grid point's
+/// while they fit, and each time they outgrow it, every second one of those kept (so that the
+/// memory is set by the share, not by the steps, and the drawing is as fine as the share allows).
+#[derive(Debug, Clone)]
+struct KeptForces {
+    /// Stretches of forces: (the first's index on the grid of every `keep`-th point, the forces).
+    stretches: Vec<(usize, Vec<f64>)>,
+    /// Every how many grid points a force is kept (a power of two).
+    keep: usize,
+    /// The most forces kept (0: none).
+    share: usize,
+    kept: usize,
+}
+
+impl KeptForces {
+    fn new(share: usize) -> Self {
+        KeptForces {
+            stretches: Vec::new(),
+            keep: 1,
+            share,
+            kept: 0,
+        }
+    }
+
+    /// A stretch starts at grid index `first`.
+    fn start(&mut self, first: usize) {
+        if self.share > 0 {
+            self.stretches.push((first.div_ceil(self.keep), Vec::new()));
+        }
+    }
+
+    /// The force at grid index `i` (the stretch's next).
+    #[inline]
+    fn push(&mut self, i: usize, force: f64) {
+        // keep is a power of two: a multiple of it has no bits below it.
+        if self.share == 0 || i & (self.keep - 1) != 0 {
+            return;
+        }
+        if let Some((_, f)) = self.stretches.last_mut() {
+            f.push(force);
+            self.kept += 1;
+            if self.kept > self.share {
+                self.thin();
+            }
+        }
+    }
+
+    /// Every second force kept, on a grid twice as coarse.
+    #[cold]
+    fn thin(&mut self) {
+        self.kept = 0;
+        for (first, f) in self.stretches.iter_mut() {
+            // The kept ones are those at even indices of the present grid.
+            let skip = *first % 2;
+            let mut w = 0;
+            for r in (skip..f.len()).step_by(2) {
+                f[w] = f[r];
+                w += 1;
+            }
+            f.truncate(w);
+            *first = first.div_ceil(2);
+            self.kept += w;
+        }
+        self.keep *= 2;
+    }
+
+    /// Forgets the forces at grid index `i` and later (a step taken again).
+    fn truncate_from(&mut self, i: usize) {
+        if let Some((first, f)) = self.stretches.last_mut() {
+            let len = i.div_ceil(self.keep).saturating_sub(*first).min(f.len());
+            self.kept -= f.len() - len;
+            f.truncate(len);
+        }
     }
 }

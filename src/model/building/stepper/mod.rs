@@ -61,9 +61,9 @@ pub(super) struct Grid {
     pub contact_sample_s: f64,
     /// Fine steps a planned piece of free motion takes at most where storeys yield.
     pub yield_piece: usize,
-    /// Each Sears slab keeps the force of every this many grid points for drawing its waves
-    /// (within [`SLAB_MEMORY_BUDGET`](super::super::solve::SLAB_MEMORY_BUDGET)).
-    pub slab_keep: usize,
+    /// The most forces each Sears slab keeps for drawing its waves (its part of
+    /// [`SLAB_MEMORY_BUDGET`](super::super::solve::SLAB_MEMORY_BUDGET)).
+    pub slab_share: usize,
     /// The most steps the run may take.
     pub max_steps: usize,
 }
@@ -423,8 +423,8 @@ impl<'a> Stepper<'a> {
             .iter()
             .map(|level| {
                 // A summary's slabs keep no forces: their waves are not drawn.
-                let keep = if histories { grid.slab_keep } else { 0 };
-                new_point(sc, &sides, level, grid.h, sears, keep)
+                let share = if histories { grid.slab_share } else { 0 };
+                new_point(sc, &sides, level, grid.h, sears, share)
             })
             .collect();
         let signals = Signal::all(&sides, &points, tracked);
@@ -665,7 +665,7 @@ fn new_point(
     level: &Level,
     h: f64,
     sears: bool,
-    keep: usize,
+    share: usize,
 ) -> Point {
     let attach = [level.left, level.right];
     let r: [Vec<f64>; 2] = std::array::from_fn(|s| {
@@ -697,7 +697,7 @@ fn new_point(
                 sc.slab_damping,
                 h,
                 if i == 0 { -1.0 } else { 1.0 },
-                keep,
+                share,
             )
         })
     };
