@@ -399,10 +399,10 @@ impl SlabWaves {
         self.forces.truncate_from(mark.next);
     }
 
-    /// The slab's stress waves over the run: H = F + r H(t - T) on the step grid over each
-    /// stretch the slab was stepped, repeated round trip by round trip (attenuated by r) between
-    /// them, read as any bar's (stress from the contact end to the free end). `end_s` is the
-    /// run's end.
+    /// The slab's stress waves over the run: H = F + r H(t - T) on the grid of its kept forces
+    /// (the step grid while they fit in its share) over each stretch the slab was stepped,
+    /// repeated round trip by round trip (attenuated by r) between them, read as any bar's
+    /// (stress from the contact end to the free end). `end_s` is the run's end.
     pub fn waves(&self, end_s: f64) -> BarWaves {
         BarWaves::from_stretches(
             self.geometry,
