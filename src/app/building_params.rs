@@ -20,8 +20,13 @@ fn row(
     fields.setting(ui, BUILDINGS.entry(s), owner, setup);
 }
 
-/// The most storeys the panel offers (the command line takes up to 100).
-const MAX_STOREYS_SHOWN: usize = 20;
+/// The most storeys a building may have: the panel offers what the command line and a preset
+/// take. (It offered 20, and egui's field clamps the value it shows: a preset of 100 storeys
+/// opened as 20, its per-storey lists cut short.)
+const MAX_STOREYS: usize = match setting::STOREYS.kind {
+    crate::model::settings::Kind::Count { max, .. } => max as usize,
+    _ => 1,
+};
 
 /// A per-storey list with one value for every storey made explicit, so one storey can change.
 pub(super) fn expand(list: &mut Vec<f64>, n: usize) {
@@ -47,7 +52,7 @@ fn building_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup
             .id;
         let mut n = b.storeys;
         if ui
-            .add(egui::DragValue::new(&mut n).range(1..=MAX_STOREYS_SHOWN))
+            .add(egui::DragValue::new(&mut n).range(1..=MAX_STOREYS))
             .labelled_by(label)
             .changed()
         {

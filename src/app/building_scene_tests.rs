@@ -247,3 +247,29 @@ fn a_newer_requests_run_never_shows_an_older_ones_checks_and_gives_way_if_it_sto
     ));
     assert_eq!(h.state().playback.ready_s, None);
 }
+
+#[test]
+fn a_preset_of_a_hundred_storeys_keeps_them_in_the_panel() {
+    // The command line takes up to 100 storeys a side, and so does a preset; the panel showed at
+    // most 20, and egui's field clamped the value it showed: such a preset opened as 20 storeys.
+    let mut setup = paper_buildings();
+    for a in ["left.storeys=100", "right.storeys=100"] {
+        setup.apply_assignment(a).expect("key");
+    }
+    // A mass per storey, the list the panel would cut short.
+    setup.scenario.left.masses_kg = (0..100).map(|i| 1e5 - 100.0 * i as f64).collect();
+    let mut scene = quiet_scene();
+    scene.setup = setup.clone();
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(420.0, 1500.0))
+        .build_ui_state(
+            |ui, scene: &mut BuildingScene| {
+                egui::ScrollArea::vertical().show(ui, |ui| scene.params_ui(ui));
+            },
+            scene,
+        );
+    h.run_steps(3);
+    let shown = &h.state().setup.scenario;
+    assert_eq!((shown.left.storeys, shown.right.storeys), (100, 100));
+    assert_eq!(shown.left.masses_kg, setup.scenario.left.masses_kg);
+}
