@@ -69,12 +69,11 @@ fn every_command_line_in_the_readme_runs() {
             args.extend(["--exit-after-frames".to_string(), "5".to_string()]);
         }
         let dir = scratch(k);
-        let o = Command::new(env!("CARGO_BIN_EXE_pounding"))
-            .args(&args)
-            .current_dir(&dir)
-            .env("NO_COLOR", "1")
-            .output()
-            .expect("the binary runs");
+        let mut command = Command::new(env!("CARGO_BIN_EXE_pounding"));
+        command.args(&args).current_dir(&dir).env("NO_COLOR", "1");
+        let saved = common::with_own_saved_session(&mut command);
+        let o = command.output().expect("the binary runs");
+        std::fs::remove_dir_all(saved).ok();
         assert!(
             o.status.success(),
             "`pounding {}` failed: {}",
