@@ -1,6 +1,7 @@
 //! Every number with its error: the building runs' default accuracy against runs refined
 //! tenfold in every discretisation parameter, and their own error estimates against that.
 
+use pounding::model::building::BuildingErrorEstimate;
 use pounding::model::building::estimate::{compare, refined};
 use pounding::model::building::{
     BuildingResult, BuildingScenario, ContactModel, SlabReading, Warning, estimate_error, solve,
@@ -17,6 +18,39 @@ fn run(sc: &BuildingScenario, m: &GroundMotion) -> BuildingResult {
     solve(sc, m).unwrap_or_else(|e| panic!("{}: {e}", sc.contact.name()))
 }
 
+/// The figures an estimate bounds, each as (what, the actual error, the estimate), printed.
+fn errors_and_estimates(
+    label: &str,
+    actual: &BuildingErrorEstimate,
+    estimate: &BuildingErrorEstimate,
+) -> [(&'static str, f64, f64); 3] {
+    eprintln!(
+        "{label:9}: actual max force {:.2e}, peaks {:.2e}, impact times {:.2e}; estimated {:.2e}, {:.2e}, {:.2e}",
+        actual.max_force,
+        actual.peak_displacement,
+        actual.impact_time,
+        estimate.max_force,
+        estimate.peak_displacement,
+        estimate.impact_time
+    );
+    [
+        ("max force", actual.max_force, estimate.max_force),
+        (
+            "peak displacements",
+            actual.peak_displacement,
+            estimate.peak_displacement,
+        ),
+        ("impact times", actual.impact_time, estimate.impact_time),
+    ]
+}
+
+/// Whether a run was held to a coarser step by its step budget (and said so).
+fn held_to_budget(r: &BuildingResult) -> bool {
+    r.warnings
+        .iter()
+        .any(|w| matches!(w, Warning::GridOverBudget { .. }))
+}
+
 #[test]
 fn every_element_is_within_1e_3_of_a_tenfold_refined_run_and_its_estimate_tracks_the_error() {
     let m = el_centro();
@@ -29,31 +63,14 @@ fn every_element_is_within_1e_3_of_a_tenfold_refined_run_and_its_estimate_tracks
         let fine = run(&refined(&sc, 10.0), &m);
         let actual = compare(&default, &fine);
         let estimate = estimate_error(&sc, &m, &default).unwrap();
-        eprintln!(
-            "{:9}: actual max force {:.2e}, peaks {:.2e}, impact times {:.2e}; estimated {:.2e}, {:.2e}, {:.2e}",
-            model.name(),
-            actual.max_force,
-            actual.peak_displacement,
-            actual.impact_time,
-            estimate.max_force,
-            estimate.peak_displacement,
-            estimate.impact_time
-        );
+        let figures = errors_and_estimates(model.name(), &actual, &estimate);
         assert_eq!(
             actual.impact_count_change,
             0,
             "{}: the impacts are the same",
             model.name()
         );
-        for (what, a, e) in [
-            ("max force", actual.max_force, estimate.max_force),
-            (
-                "peak displacements",
-                actual.peak_displacement,
-                estimate.peak_displacement,
-            ),
-            ("impact times", actual.impact_time, estimate.impact_time),
-        ] {
+        for (what, a, e) in figures {
             assert!(a <= 1e-3, "{}: {what} off by {a:e}", model.name());
             // Where the error has fallen to round-off there is nothing to estimate.
             if a > 1e-9 {
@@ -156,13 +173,7 @@ fn a_run_held_to_its_step_budget_still_bounds_its_error() {
         ..BuildingScenario::paper()
     };
     let r = run(&held, &m);
-    assert!(
-        r.warnings
-            .iter()
-            .any(|w| matches!(w, Warning::GridOverBudget { .. })),
-        "held to the budget: {:?}",
-        r.warnings
-    );
+    assert!(held_to_budget(&r), "held to the budget: {:?}", r.warnings);
     let free = run(&BuildingScenario::paper(), &m);
     assert!(
         r.stats.fine_step_s > 2.0 * free.stats.fine_step_s,
@@ -178,26 +189,10 @@ fn a_run_held_to_its_step_budget_still_bounds_its_error() {
     );
     let actual = compare(&r, &truth);
     let estimate = estimate_error(&held, &m, &r).unwrap();
-    eprintln!(
-        "held: actual max force {:.2e}, peaks {:.2e}, impact times {:.2e}; estimated {:.2e}, {:.2e}, {:.2e}",
-        actual.max_force,
-        actual.peak_displacement,
-        actual.impact_time,
-        estimate.max_force,
-        estimate.peak_displacement,
-        estimate.impact_time
-    );
+    let figures = errors_and_estimates("held", &actual, &estimate);
     assert_eq!(actual.impact_count_change, 0);
     assert_eq!(estimate.impact_count_change, 0);
-    for (what, a, e) in [
-        ("max force", actual.max_force, estimate.max_force),
-        (
-            "peak displacements",
-            actual.peak_displacement,
-            estimate.peak_displacement,
-        ),
-        ("impact times", actual.impact_time, estimate.impact_time),
-    ] {
+    for (what, a, e) in figures {
         assert!(a > 1e-9, "{what}: a coarse step has an error to estimate");
         assert!(e >= a, "{what} estimated {e:e} against an actual {a:e}");
     }
@@ -238,11 +233,7 @@ fn a_run_at_the_tightest_tolerance_still_estimates_its_error() {
         ..BuildingScenario::paper()
     };
     let r = run(&sc, &m);
-    assert!(
-        r.warnings
-            .iter()
-            .any(|w| matches!(w, Warning::GridOverBudget { .. }))
-    );
+    assert!(held_to_budget(&r));
     let e = estimate_error(&sc, &m, &r).expect("an estimate");
     assert!(e.max_force > 0.0 && e.max_force.is_finite(), "{e:?}");
 }

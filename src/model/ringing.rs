@@ -210,6 +210,13 @@ fn floor_of(x: f64) -> f64 {
     if t > x { t - 1.0 } else { t }
 }
 
+/// The ceiling of x the same way ([`floor_of`]).
+#[inline]
+fn ceil_of(x: f64) -> f64 {
+    let t = x as i64 as f64;
+    if t < x { t + 1.0 } else { t }
+}
+
 /// A look-up of a frozen history at the grid indices m - lag for integer m, folded back `j`
 /// round trips: where m - lag - j T falls between grid points depends on the lag and j alone, so
 /// its stencil does too (made once for a run of grid indices with the same j).
@@ -235,10 +242,7 @@ impl Ringing {
         if past <= 0.0 {
             return 0.0;
         }
-        // A ceiling of a positive value by truncation (no libm call).
-        let x = past / self.round_steps;
-        let t = x as i64 as f64;
-        if t < x { t + 1.0 } else { t }
+        ceil_of(past / self.round_steps)
     }
 
     /// The look-up at m - `lag` folded back `j` round trips.
@@ -285,10 +289,10 @@ impl Fold {
 
 #[cfg(test)]
 mod tests {
-    use super::floor_of;
+    use super::{ceil_of, floor_of};
 
     #[test]
-    fn the_floor_by_truncation_is_the_floor() {
+    fn the_floor_and_ceiling_by_truncation_are_the_floor_and_ceiling() {
         // Integers, halves and their neighbours on both sides of zero, and a spread of magnitudes.
         let mut xs = vec![0.0, -0.0, 1.0, -1.0, 0.5, -0.5, 1e15 + 0.5, -1e15 - 0.5];
         for k in -1000..=1000 {
@@ -305,6 +309,7 @@ mod tests {
         }
         for x in xs {
             assert_eq!(floor_of(x), x.floor(), "{x:e}");
+            assert_eq!(ceil_of(x), x.ceil(), "{x:e}");
         }
     }
 }

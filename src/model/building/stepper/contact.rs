@@ -547,8 +547,7 @@ impl Stepper<'_> {
         // an earlier step's.
         cs.u_before.resize(self.points.len(), 0.0);
         for &i in &cs.awake {
-            let p = &self.points[i];
-            cs.u_before[i] = dotv(&p.r[0], &self.sides[0].q) - dotv(&p.r[1], &self.sides[1].q);
+            cs.u_before[i] = self.point_closing(&self.points[i]);
         }
         for s in 0..2 {
             let side = &self.sides[s];
@@ -621,14 +620,10 @@ impl Stepper<'_> {
         for &i in &cs.awake {
             // The closing now; its rate is read only where a contact opens without an approach
             // velocity.
-            let closing = {
-                let p = &self.points[i];
-                dotv(&p.r[0], &self.sides[0].q) - dotv(&p.r[1], &self.sides[1].q)
-            };
+            let closing = self.point_closing(&self.points[i]);
             let opening = {
                 let p = &self.points[i];
-                (p.force <= 0.0 && tr.forces[i] > 0.0 && p.v0 <= 0.0)
-                    .then(|| dotv(&p.r[0], &self.sides[0].v) - dotv(&p.r[1], &self.sides[1].v))
+                (p.force <= 0.0 && tr.forces[i] > 0.0 && p.v0 <= 0.0).then(|| self.point_now(i).1)
             };
             let p = &mut self.points[i];
             // The point's force is still the step's first until it is set below.

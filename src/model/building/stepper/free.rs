@@ -592,6 +592,11 @@ impl Stepper<'_> {
         )
     }
 
+    /// A point's closing motion now, without its rate: [`Stepper::point_state`]'s first part.
+    pub(super) fn point_closing(&self, p: &Point) -> f64 {
+        dotv(&p.r[0], &self.sides[0].q) - dotv(&p.r[1], &self.sides[1].q)
+    }
+
     /// A free stretch of arbitrary length (back onto the grid after an event, or up to a
     /// located onset), exact, checked at its end. Returns a level where a contact starts by its
     /// end, if one does.
