@@ -129,13 +129,20 @@ pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
     let motion = load_motion(&setup)?;
     let quiet = args.common.quiet || args.common.json;
     // The run with its error estimate and the run without contact, side by side, all three
-    // under the bar and Ctrl-C.
+    // under the bar and Ctrl-C. Histories only where a plot, a CSV or an animation draws them:
+    // the report reads the summaries.
+    let histories =
+        args.common.plot.is_some() || args.common.csv.is_some() || args.animation.animate.is_some();
     let pounding::model::building::Checked {
         result,
         estimate,
         baseline,
     } = super::with_control("buildings", quiet, |control| {
-        pounding::model::building::solve_checked(&setup.scenario, &motion, control)
+        if histories {
+            pounding::model::building::solve_checked(&setup.scenario, &motion, control)
+        } else {
+            pounding::model::building::solve_checked_summary(&setup.scenario, &motion, control)
+        }
     })?;
     write_animation(args, &setup, &motion, &result)?;
     args.common.write_plot((1200, 600), || {

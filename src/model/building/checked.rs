@@ -32,6 +32,18 @@ pub fn solve_checked(
     solve_checked_with(sc, motion, control, &Control::new())
 }
 
+/// [`solve_checked`] for a report that reads only the runs' summaries (their impacts, peaks,
+/// forces, energy and warnings): the run and the run without contact keep no histories, and
+/// every number in them is bit for bit the full runs' (recording reads the state, never moves
+/// it). `pounding buildings --json` without a plot, a CSV or an animation needs no more.
+pub fn solve_checked_summary(
+    sc: &BuildingScenario,
+    motion: &GroundMotion,
+    control: &Control,
+) -> Result<Checked, SolveError> {
+    checked_keeping(sc, motion, control, &Control::new(), false)
+}
+
 /// [`solve_checked`], the checks (the companion, then the run without contact) reporting to
 /// `checks`: cancelled wherever the run ends without a result, or `control` is cancelled.
 pub fn solve_checked_with(
@@ -40,6 +52,25 @@ pub fn solve_checked_with(
     control: &Control,
     checks: &Control,
 ) -> Result<Checked, SolveError> {
+    checked_keeping(sc, motion, control, checks, true)
+}
+
+/// The run and its checks, the run and the run without contact with their histories where
+/// `histories` asks for them.
+fn checked_keeping(
+    sc: &BuildingScenario,
+    motion: &GroundMotion,
+    control: &Control,
+    checks: &Control,
+    histories: bool,
+) -> Result<Checked, SolveError> {
+    let run = |sc: &BuildingScenario, control: &Control| {
+        if histories {
+            super::solve_with(sc, motion, control)
+        } else {
+            super::solve::solve_summary_with(sc, motion, control)
+        }
+    };
     let fine_step_s = super::solve::planned_step_s(sc, motion)?;
     let without_contact = BuildingScenario {
         contact: ContactModel::None,
@@ -54,7 +85,7 @@ pub fn solve_checked_with(
             let fine = companion_run(sc, motion, fine_step_s, checks);
             let wall = start.elapsed().as_secs_f64();
             checks.stage(1, 2);
-            let baseline = super::solve_with(without_contact, motion, checks);
+            let baseline = run(without_contact, checks);
             let _ = done.send(());
             (fine, wall, baseline)
         });
@@ -62,7 +93,7 @@ pub fn solve_checked_with(
         // checks too, rather than waiting for them to finish.
         let stop_checks = CancelOnDrop(checks);
         control.stage(0, 2);
-        let result = super::solve_with(sc, motion, control)?;
+        let result = run(sc, control)?;
         control.stage(1, 2);
         // Passes the checks' progress on, and a cancel back, until they end.
         while let Err(std::sync::mpsc::RecvTimeoutError::Timeout) =
@@ -101,5 +132,48 @@ struct CancelOnDrop<'a>(&'a Control);
 impl Drop for CancelOnDrop<'_> {
     fn drop(&mut self) {
         self.0.cancel();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_report_without_histories_finds_every_number_the_full_runs_find() {
+        // Recording reads the state and never moves it: the summaries' impacts, peaks, forces,
+        // energy and estimate are bit for bit the full runs', on the three-storey pair whose
+        // contacts open and close at three levels.
+        let setup: crate::io::building_settings::BuildingSetup =
+            crate::io::preset::load_for("mdof-3-5", "buildings").expect("preset");
+        let m = crate::io::motion::load(&setup.motion).expect("record");
+        let full = solve_checked(&setup.scenario, &m, &Control::new()).unwrap();
+        let summary = solve_checked_summary(&setup.scenario, &m, &Control::new()).unwrap();
+        assert!(!full.result.time_s.is_empty() && !full.baseline.time_s.is_empty());
+        assert!(summary.result.time_s.is_empty() && summary.baseline.time_s.is_empty());
+        for (a, b) in [
+            (&full.result, &summary.result),
+            (&full.baseline, &summary.baseline),
+        ] {
+            assert_eq!(a.impacts, b.impacts);
+            assert_eq!(
+                a.max_pounding_force_n.to_bits(),
+                b.max_pounding_force_n.to_bits()
+            );
+            assert_eq!(
+                format!("{:?}", a.peak_floor_displacement_m),
+                format!("{:?}", b.peak_floor_displacement_m)
+            );
+            assert_eq!(
+                format!("{:?}", a.peak_drift_ratio),
+                format!("{:?}", b.peak_drift_ratio)
+            );
+            assert_eq!(format!("{:?}", a.energy), format!("{:?}", b.energy));
+            assert_eq!(a.stats.steps, b.stats.steps);
+        }
+        assert!(full.result.max_pounding_force_n > 0.0);
+        let (e, f) = (full.estimate.unwrap(), summary.estimate.unwrap());
+        assert_eq!(e.max_force.to_bits(), f.max_force.to_bits());
+        assert_eq!(e.peak_displacement.to_bits(), f.peak_displacement.to_bits());
     }
 }

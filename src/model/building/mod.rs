@@ -22,7 +22,7 @@ mod solve;
 mod stepper;
 pub mod warning;
 
-pub use checked::{Checked, solve_checked, solve_checked_with};
+pub use checked::{Checked, solve_checked, solve_checked_summary, solve_checked_with};
 pub use estimate::{BuildingErrorEstimate, estimate_error, estimate_error_with};
 pub use levels::{Attachment, Level, LevelKind};
 pub use modal::{DampingModel, Modes};
