@@ -63,6 +63,17 @@ pub(crate) fn read_four(buf: &[f64], at: usize, (back, w): (usize, [f64; 4])) ->
     (w[0] * s[0] + w[1] * s[1]) + (w[2] * s[2] + w[3] * s[3])
 }
 
+/// [`read_four`] where the caller has shown `back` within 3 ..= `at` and `at` within the buffer:
+/// the four samples from `at - back` to at most `at` are then inside it, and read unchecked.
+#[inline]
+pub(crate) fn read_four_within(buf: &[f64], at: usize, (back, w): (usize, [f64; 4])) -> f64 {
+    debug_assert!((3..=at).contains(&back) && at < buf.len());
+    // SAFETY: back <= at keeps the first index at or above zero, and back >= 3 keeps the last,
+    // at - back + 3, at or below at, which is inside the buffer.
+    let s = |k: usize| unsafe { *buf.get_unchecked(at - back + k) };
+    (w[0] * s(0) + w[1] * s(1)) + (w[2] * s(2) + w[3] * s(3))
+}
+
 /// Cubic Lagrange interpolation in a window whose last sample has index `last`, at the fractional
 /// index `s` (at most `last`); zero before index 0.
 pub(crate) fn window_at(values: &[f64], last: usize, s: f64) -> f64 {
