@@ -18,6 +18,9 @@ pub(super) struct Trial {
     rates: Vec<f64>,
     /// The level whose Kelvin-Voigt link let go at the end of this (shortened) step.
     released: Option<usize>,
+    /// Each mode's load from the forces at the step's end, per side: the next step's
+    /// `load_now`, summed as [`Stepper::contact_loads`] sums it.
+    load: [Vec<f64>; 2],
 }
 
 /// The contact step's buffers.
@@ -58,6 +61,10 @@ pub(super) struct Scratch {
     u_before: Vec<f64>,
     /// Yielding storeys: each side's load of their corrections at the trial's end, per mode.
     pseudo1: [Vec<f64>; 2],
+    /// The step count after the last contact step whose trial's loads are the forces it left
+    /// (none let go inside it, no level out of the step holds a force): the next step reads
+    /// them as its `load_now` if it follows at once.
+    loads_after: Option<usize>,
 }
 
 impl Stepper<'_> {
@@ -69,13 +76,20 @@ impl Stepper<'_> {
 
     /// A contact step of length hh (the last one of a graded start lands on the grid).
     pub(super) fn contact_step_of(&mut self, hh: f64) -> Result<(), SolveError> {
-        self.count_step()?;
         let np = self.points.len();
         let mut cs = self
             .contact_scratch
             .take()
             .expect("the scratch is home between stages");
-        self.contact_loads(&mut cs);
+        // Straight after a contact step (no free step between: those end Newmark's steps), the
+        // loads are that step's trial's, already summed.
+        if self.newmark && cs.loads_after == Some(self.steps) {
+            std::mem::swap(&mut cs.load_now, &mut cs.trial.load);
+        } else {
+            self.contact_loads(&mut cs);
+        }
+        cs.loads_after = None;
+        self.count_step()?;
         if !self.newmark {
             self.equilibrium_accelerations(&cs.load_now);
             self.newmark = true;
@@ -335,7 +349,9 @@ impl Stepper<'_> {
             let sign = if s == 0 { -1.0 } else { 1.0 };
             let n = cs.step[s].len();
             out.dq[s].resize(n, 0.0);
+            out.load[s].resize(n, 0.0);
             let (dq, step, k_hat) = (&mut out.dq[s][..n], &cs.step[s][..n], &cs.k_hat[s][..n]);
+            let load = &mut out.load[s][..n];
             for k in 0..n {
                 let mut f = 0.0;
                 for &i in &cs.awake {
@@ -345,6 +361,9 @@ impl Stepper<'_> {
                     }
                 }
                 dq[k] = step[k] + sign * f / k_hat[k];
+                // Rounding is symmetric, so the sign taken out of the sum changes no bit of it;
+                // + 0.0 makes a zero positive, as a sum from +0 is.
+                load[k] = sign * f + 0.0;
             }
         }
         out.hh = hh;
@@ -590,13 +609,18 @@ impl Stepper<'_> {
             }
         }
         // A sleeping level keeps sleeping with what the trial left of its margin.
+        let mut asleep_without_force = true;
         for i in 0..self.points.len() {
             if cs.asleep[i] {
                 cs.margin[i] = cs.margin_next[i];
+                asleep_without_force &= self.points[i].force == 0.0;
             }
         }
         let opened_or_closed = self.account_contacts(cs, t0);
         self.contact_steps += 1;
+        if cs.trial.released.is_none() && asleep_without_force {
+            cs.loads_after = Some(self.steps);
+        }
         if self.sears {
             for p in self.points.iter_mut().filter(|p| p.force <= 0.0) {
                 for slab in p.slabs.iter_mut().flatten() {
