@@ -159,6 +159,17 @@ fn whole_run_side_by_side(c: &mut Criterion) {
                 .expect("solves")
             })
         });
+        // What `pounding buildings --json` runs: the same, without the histories it never reads.
+        g.bench_function(format!("{name}_report"), |b| {
+            b.iter(|| {
+                pounding::model::building::solve_checked_summary(
+                    black_box(&sc),
+                    black_box(&motion),
+                    &pounding::model::control::Control::new(),
+                )
+                .expect("solves")
+            })
+        });
     }
     g.finish();
 }

@@ -319,7 +319,10 @@ impl SlabWaves {
         // Every look-up reads four samples from `back` before the one being made, at most that
         // one: within the buffer from its first sample to the newest, which the loop's reads
         // are then left unchecked for (the checks were a third of its work).
-        if looks.iter().all(|(back, _)| (3..=q.w.q.len()).contains(back)) {
+        if looks
+            .iter()
+            .all(|(back, _)| (3..=q.w.q.len()).contains(back))
+        {
             self.tabulate_reading(q, looks, read_four_within)
         } else {
             self.tabulate_reading(q, looks, read_four)
@@ -349,8 +352,8 @@ impl SlabWaves {
                 b = e * b + 0.5 * h * (e * a + a1);
                 a = a1;
                 let q1 = (a1 + self.ringing.round_decay * read(&buf, at, recur)) * gain;
-                let near_far = self.near_weight * read(&buf, at, near)
-                    + self.far_weight * read(&buf, at, far);
+                let near_far =
+                    self.near_weight * read(&buf, at, near) + self.far_weight * read(&buf, at, far);
                 let elastic = self.inv_z * (near_far + top * q1) - self.inv_m * b;
                 buf[at] = q1;
                 *most = most.max(elastic.abs());
