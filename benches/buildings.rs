@@ -6,7 +6,10 @@
 use criterion::{Criterion, criterion_group, criterion_main};
 use pounding::io::building_settings::BuildingSetup;
 use pounding::io::preset;
-use pounding::model::building::{BuildingScenario, ContactModel, estimate_error, solve};
+use pounding::model::building::{
+    BuildingScenario, Checked, ContactModel, estimate_error, solve, solve_checked,
+    solve_checked_summary,
+};
 use pounding::model::motion::GroundMotion;
 use pounding::model::motion::synthetic::SyntheticSpec;
 use pounding::study::Control;
@@ -128,6 +131,13 @@ fn whole_run(c: &mut Criterion) {
 /// The same whole runs as `pounding buildings` now makes them: the estimate's companion and the
 /// run without contact on a second thread beside the run (`solve_checked`). The same
 /// instructions; on two cores, about the companion's time.
+/// A run with its checks, as [`solve_checked`] makes it.
+type Checker = fn(
+    &BuildingScenario,
+    &GroundMotion,
+    &Control,
+) -> Result<Checked, pounding::model::error::SolveError>;
+
 fn whole_run_side_by_side(c: &mut Criterion) {
     let motion = record();
     let mut g = c.benchmark_group("whole_run_side_by_side");
@@ -149,27 +159,18 @@ fn whole_run_side_by_side(c: &mut Criterion) {
             contact: model,
             ..base
         };
-        g.bench_function(name, |b| {
-            b.iter(|| {
-                pounding::model::building::solve_checked(
-                    black_box(&sc),
-                    black_box(&motion),
-                    &pounding::model::control::Control::new(),
-                )
-                .expect("solves")
-            })
-        });
-        // What `pounding buildings --json` runs: the same, without the histories it never reads.
-        g.bench_function(format!("{name}_report"), |b| {
-            b.iter(|| {
-                pounding::model::building::solve_checked_summary(
-                    black_box(&sc),
-                    black_box(&motion),
-                    &pounding::model::control::Control::new(),
-                )
-                .expect("solves")
-            })
-        });
+        // With the histories a window draws, and as `pounding buildings --json` runs it,
+        // without the histories it never reads.
+        for (suffix, checked) in [
+            ("", solve_checked as Checker),
+            ("_report", solve_checked_summary),
+        ] {
+            g.bench_function(format!("{name}{suffix}"), |b| {
+                b.iter(|| {
+                    checked(black_box(&sc), black_box(&motion), &Control::new()).expect("solves")
+                })
+            });
+        }
     }
     g.finish();
 }

@@ -2,8 +2,8 @@
 //! made alone, and one cancel stops them all.
 
 use pounding::model::building::{
-    BuildingScenario, ContactModel, estimate_error, solve, solve_checked, solve_checked_with,
-    solve_with,
+    BuildingResult, BuildingScenario, ContactModel, estimate_error, solve, solve_checked,
+    solve_checked_summary, solve_checked_with, solve_with,
 };
 use pounding::model::control::Control;
 use pounding::model::error::SolveError;
@@ -12,6 +12,26 @@ fn record() -> pounding::model::motion::GroundMotion {
     pounding::io::motion::built_in("elcentro-1940")
         .expect("built in")
         .truncated(8.0)
+}
+
+/// Asserts that two runs found the same, bit for bit: the max force, the floors' and drifts'
+/// peaks, the impacts, the energy and the steps.
+fn assert_same_findings(a: &BuildingResult, b: &BuildingResult) {
+    assert_eq!(
+        a.max_pounding_force_n.to_bits(),
+        b.max_pounding_force_n.to_bits()
+    );
+    assert_eq!(
+        format!("{:?}", a.peak_floor_displacement_m),
+        format!("{:?}", b.peak_floor_displacement_m)
+    );
+    assert_eq!(
+        format!("{:?}", a.peak_drift_ratio),
+        format!("{:?}", b.peak_drift_ratio)
+    );
+    assert_eq!(format!("{:?}", a.impacts), format!("{:?}", b.impacts));
+    assert_eq!(format!("{:?}", a.energy), format!("{:?}", b.energy));
+    assert_eq!(a.stats.steps, b.stats.steps);
 }
 
 #[test]
@@ -34,15 +54,10 @@ fn the_run_and_its_checks_made_side_by_side_are_bit_for_bit_those_made_one_after
         )
         .expect("runs");
         let r = &checked.result;
-        assert_eq!(r.max_pounding_force_n, alone.max_pounding_force_n);
+        assert_same_findings(r, &alone);
         assert_eq!(r.force_n, alone.force_n);
         assert_eq!(r.time_s, alone.time_s);
         assert_eq!(r.floor_displacement_m, alone.floor_displacement_m);
-        assert_eq!(r.peak_floor_displacement_m, alone.peak_floor_displacement_m);
-        assert_eq!(r.peak_drift_ratio, alone.peak_drift_ratio);
-        assert_eq!(format!("{:?}", r.impacts), format!("{:?}", alone.impacts));
-        assert_eq!(format!("{:?}", r.energy), format!("{:?}", alone.energy));
-        assert_eq!(r.stats.steps, alone.stats.steps);
         let e = checked.estimate.expect("an estimate");
         assert_eq!(
             (e.max_force, e.peak_displacement, e.impact_time),
@@ -58,6 +73,26 @@ fn the_run_and_its_checks_made_side_by_side_are_bit_for_bit_those_made_one_after
             baseline.peak_floor_displacement_m
         );
     }
+}
+
+#[test]
+fn a_report_without_histories_finds_every_number_the_full_runs_find() {
+    // Recording reads the state and never moves it: the summaries' impacts, peaks, forces,
+    // energy and estimate are bit for bit the full runs', on the three-storey pair whose
+    // contacts open and close at three levels.
+    let setup: pounding::io::building_settings::BuildingSetup =
+        pounding::io::preset::load_for("mdof-3-5", "buildings").expect("preset");
+    let m = pounding::io::motion::load(&setup.motion).expect("record");
+    let full = solve_checked(&setup.scenario, &m, &Control::new()).unwrap();
+    let summary = solve_checked_summary(&setup.scenario, &m, &Control::new()).unwrap();
+    assert!(!full.result.time_s.is_empty() && !full.baseline.time_s.is_empty());
+    assert!(summary.result.time_s.is_empty() && summary.baseline.time_s.is_empty());
+    assert_same_findings(&full.result, &summary.result);
+    assert_same_findings(&full.baseline, &summary.baseline);
+    assert!(full.result.max_pounding_force_n > 0.0);
+    let (e, f) = (full.estimate.unwrap(), summary.estimate.unwrap());
+    assert_eq!(e.max_force.to_bits(), f.max_force.to_bits());
+    assert_eq!(e.peak_displacement.to_bits(), f.peak_displacement.to_bits());
 }
 
 #[test]

@@ -419,22 +419,16 @@ pub(crate) fn with_control<T: Send>(
     let _polling = Polling::start();
     let out = std::thread::scope(|scope| {
         // The job says when it ends, so the answer does not wait for the bar's next tick.
-        let (done, ended) = std::sync::mpsc::channel::<()>();
         let control = &control;
-        let job = scope.spawn(move || {
-            let out = work(control);
-            let _ = done.send(());
-            out
-        });
-        while let Err(std::sync::mpsc::RecvTimeoutError::Timeout) =
-            ended.recv_timeout(std::time::Duration::from_millis(20))
-        {
-            if interrupted() {
-                control.cancel();
-            }
-            bar.set_position((control.fraction().clamp(0.0, 1.0) * 1000.0) as u64);
-        }
-        job.join()
+        pounding::model::control::spawn_told(scope, move || work(control)).wait_looking(
+            std::time::Duration::from_millis(20),
+            || {
+                if interrupted() {
+                    control.cancel();
+                }
+                bar.set_position((control.fraction().clamp(0.0, 1.0) * 1000.0) as u64);
+            },
+        )
     });
     bar.finish_and_clear();
     match out {

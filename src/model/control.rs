@@ -16,6 +16,43 @@ pub const CHECK_EVERY: usize = 4096;
 /// window holds a change for a run (a second), so the change always decides first.
 pub const PAUSE_LIMIT_MS: u32 = 3000;
 
+/// A job on a scoped thread that says when it ends (with its result or its panic), so that the
+/// thread waiting for it can look at something else at a steady pace and still answer the
+/// moment it ends, not at its next look.
+pub struct Told<'scope, T> {
+    job: std::thread::ScopedJoinHandle<'scope, T>,
+    ended: std::sync::mpsc::Receiver<()>,
+}
+
+/// Starts `work` on `scope` as a [`Told`] job.
+pub fn spawn_told<'scope, 'env, T: Send + 'scope>(
+    scope: &'scope std::thread::Scope<'scope, 'env>,
+    work: impl FnOnce() -> T + Send + 'scope,
+) -> Told<'scope, T> {
+    let (done, ended) = std::sync::mpsc::channel::<()>();
+    let job = scope.spawn(move || {
+        let out = work();
+        // A panic drops `done` instead, which ends the wait as well.
+        let _ = done.send(());
+        out
+    });
+    Told { job, ended }
+}
+
+impl<T> Told<'_, T> {
+    /// Calls `look` every `every` until the job ends, then joins it.
+    pub fn wait_looking(
+        self,
+        every: std::time::Duration,
+        mut look: impl FnMut(),
+    ) -> std::thread::Result<T> {
+        while let Err(std::sync::mpsc::RecvTimeoutError::Timeout) = self.ended.recv_timeout(every) {
+            look();
+        }
+        self.job.join()
+    }
+}
+
 /// A cancel flag and the fraction done, shared between a solve and its caller.
 #[derive(Debug, Default)]
 pub struct Control {

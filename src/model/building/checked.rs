@@ -6,18 +6,18 @@
 
 use super::estimate::{companion_run, estimate_from};
 use super::{BuildingErrorEstimate, BuildingResult, BuildingScenario, ContactModel};
-use crate::model::control::Control;
+use crate::model::control::{Control, spawn_told};
 use crate::model::error::SolveError;
 use crate::model::motion::GroundMotion;
 
 /// A run, its error estimate (none where the companion run failed) and the run without contact.
 #[derive(Debug, Clone)]
 pub struct Checked {
-    /// The run, with its histories.
+    /// The run, with its histories (none from [`solve_checked_summary`]).
     pub result: BuildingResult,
     /// Its error estimate.
     pub estimate: Option<BuildingErrorEstimate>,
-    /// The same buildings without contact, with their histories.
+    /// The same buildings without contact, with their histories (as the run's).
     pub baseline: BuildingResult,
 }
 
@@ -78,15 +78,13 @@ fn checked_keeping(
     };
     let without_contact = &without_contact;
     std::thread::scope(|scope| {
-        let (done, ended) = std::sync::mpsc::channel::<()>();
-        let side = scope.spawn(move || {
+        let side = spawn_told(scope, move || {
             let start = std::time::Instant::now();
             checks.stage(0, 2);
             let fine = companion_run(sc, motion, fine_step_s, checks);
             let wall = start.elapsed().as_secs_f64();
             checks.stage(1, 2);
             let baseline = run(without_contact, checks);
-            let _ = done.send(());
             (fine, wall, baseline)
         });
         // Whatever ends the run without a result (an error, a cancel, a panic) stops the
@@ -96,15 +94,13 @@ fn checked_keeping(
         let result = run(sc, control)?;
         control.stage(1, 2);
         // Passes the checks' progress on, and a cancel back, until they end.
-        while let Err(std::sync::mpsc::RecvTimeoutError::Timeout) =
-            ended.recv_timeout(std::time::Duration::from_millis(10))
-        {
+        let checked = side.wait_looking(std::time::Duration::from_millis(10), || {
             if control.report(checks.fraction()).is_err() {
                 checks.cancel();
             }
-        }
+        });
         std::mem::forget(stop_checks);
-        let (fine, wall, baseline) = match side.join() {
+        let (fine, wall, baseline) = match checked {
             Ok(v) => v,
             Err(panic) => std::panic::resume_unwind(panic),
         };
@@ -132,48 +128,5 @@ struct CancelOnDrop<'a>(&'a Control);
 impl Drop for CancelOnDrop<'_> {
     fn drop(&mut self) {
         self.0.cancel();
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn a_report_without_histories_finds_every_number_the_full_runs_find() {
-        // Recording reads the state and never moves it: the summaries' impacts, peaks, forces,
-        // energy and estimate are bit for bit the full runs', on the three-storey pair whose
-        // contacts open and close at three levels.
-        let setup: crate::io::building_settings::BuildingSetup =
-            crate::io::preset::load_for("mdof-3-5", "buildings").expect("preset");
-        let m = crate::io::motion::load(&setup.motion).expect("record");
-        let full = solve_checked(&setup.scenario, &m, &Control::new()).unwrap();
-        let summary = solve_checked_summary(&setup.scenario, &m, &Control::new()).unwrap();
-        assert!(!full.result.time_s.is_empty() && !full.baseline.time_s.is_empty());
-        assert!(summary.result.time_s.is_empty() && summary.baseline.time_s.is_empty());
-        for (a, b) in [
-            (&full.result, &summary.result),
-            (&full.baseline, &summary.baseline),
-        ] {
-            assert_eq!(a.impacts, b.impacts);
-            assert_eq!(
-                a.max_pounding_force_n.to_bits(),
-                b.max_pounding_force_n.to_bits()
-            );
-            assert_eq!(
-                format!("{:?}", a.peak_floor_displacement_m),
-                format!("{:?}", b.peak_floor_displacement_m)
-            );
-            assert_eq!(
-                format!("{:?}", a.peak_drift_ratio),
-                format!("{:?}", b.peak_drift_ratio)
-            );
-            assert_eq!(format!("{:?}", a.energy), format!("{:?}", b.energy));
-            assert_eq!(a.stats.steps, b.stats.steps);
-        }
-        assert!(full.result.max_pounding_force_n > 0.0);
-        let (e, f) = (full.estimate.unwrap(), summary.estimate.unwrap());
-        assert_eq!(e.max_force.to_bits(), f.max_force.to_bits());
-        assert_eq!(e.peak_displacement.to_bits(), f.peak_displacement.to_bits());
     }
 }

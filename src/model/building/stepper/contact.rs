@@ -19,7 +19,8 @@ pub(super) struct Trial {
     /// The level whose Kelvin-Voigt link let go at the end of this (shortened) step.
     released: Option<usize>,
     /// Each mode's load from the forces at the step's end, per side: the next step's
-    /// `load_now`, summed as [`Stepper::contact_loads`] sums it.
+    /// `load_now`, summed as [`Stepper::contact_loads`] sums it (made again by it where the
+    /// committed forces are not the trial's).
     load: [Vec<f64>; 2],
 }
 
@@ -61,10 +62,6 @@ pub(super) struct Scratch {
     u_before: Vec<f64>,
     /// Yielding storeys: each side's load of their corrections at the trial's end, per mode.
     pseudo1: [Vec<f64>; 2],
-    /// The step count after the last contact step whose trial's loads are the forces it left
-    /// (none let go inside it, no level out of the step holds a force): the next step reads
-    /// them as its `load_now` if it follows at once.
-    loads_after: Option<usize>,
 }
 
 impl Stepper<'_> {
@@ -76,20 +73,19 @@ impl Stepper<'_> {
 
     /// A contact step of length hh (the last one of a graded start lands on the grid).
     pub(super) fn contact_step_of(&mut self, hh: f64) -> Result<(), SolveError> {
+        self.count_step()?;
         let np = self.points.len();
         let mut cs = self
             .contact_scratch
             .take()
             .expect("the scratch is home between stages");
-        // Straight after a contact step (no free step between: those end Newmark's steps), the
-        // loads are that step's trial's, already summed.
-        if self.newmark && cs.loads_after == Some(self.steps) {
+        // Straight after a contact step (Newmark's steps go on until a free step), the loads are
+        // the ones it committed, already summed.
+        if self.newmark {
             std::mem::swap(&mut cs.load_now, &mut cs.trial.load);
         } else {
-            self.contact_loads(&mut cs);
+            self.contact_loads(&mut cs.load_now);
         }
-        cs.loads_after = None;
-        self.count_step()?;
         if !self.newmark {
             self.equilibrium_accelerations(&cs.load_now);
             self.newmark = true;
@@ -266,12 +262,11 @@ impl Stepper<'_> {
         any
     }
 
-    /// Each mode's load from the contact forces where the step starts, per side, into
-    /// `cs.load_now`: point by point, each mode's sum in the points' order.
-    fn contact_loads(&self, cs: &mut Scratch) {
-        for s in 0..2 {
+    /// Each mode's load from the points' contact forces, per side, into `loads`: point by point,
+    /// each mode's sum in the points' order.
+    fn contact_loads(&self, loads: &mut [Vec<f64>; 2]) {
+        for (s, load) in loads.iter_mut().enumerate() {
             let sign = if s == 0 { -1.0 } else { 1.0 };
-            let load = &mut cs.load_now[s];
             load.clear();
             load.resize(self.sides[s].modes(), 0.0);
             for p in self.points.iter().filter(|p| p.force != 0.0) {
@@ -618,8 +613,10 @@ impl Stepper<'_> {
         }
         let opened_or_closed = self.account_contacts(cs, t0);
         self.contact_steps += 1;
-        if cs.trial.released.is_none() && asleep_without_force {
-            cs.loads_after = Some(self.steps);
+        // The trial summed the loads of the awake points' forces as it found them: a link let go
+        // inside the step, or a force held by a point out of it, makes them again.
+        if cs.trial.released.is_some() || !asleep_without_force {
+            self.contact_loads(&mut cs.trial.load);
         }
         if self.sears {
             for p in self.points.iter_mut().filter(|p| p.force <= 0.0) {
