@@ -595,9 +595,11 @@ impl Stepper<'_> {
             let t1 = self.time();
             self.commit_storeys(t1 - hh, t1);
         }
-        for (i, p) in self.points.iter_mut().enumerate() {
+        // A level asleep has no live slab: it fell asleep with its slabs quiet (a live one's
+        // ringing has no bound), and only a level the step pushes revives them.
+        for &i in &cs.awake {
             let f1 = tr.forces[i];
-            for slab in p.slabs.iter_mut().flatten() {
+            for slab in self.points[i].slabs.iter_mut().flatten() {
                 if slab.is_live() {
                     slab.push(f1);
                 }
@@ -619,9 +621,12 @@ impl Stepper<'_> {
             self.contact_loads(&mut cs.trial.load);
         }
         if self.sears {
-            for p in self.points.iter_mut().filter(|p| p.force <= 0.0) {
-                for slab in p.slabs.iter_mut().flatten() {
-                    slab.settle();
+            for &i in &cs.awake {
+                let p = &mut self.points[i];
+                if p.force <= 0.0 {
+                    for slab in p.slabs.iter_mut().flatten() {
+                        slab.settle();
+                    }
                 }
             }
         }
