@@ -227,8 +227,6 @@ impl Stepper<'_> {
             }
         }
         self.accelerations(w, 0);
-        let weighted =
-            |r: &[f64], m: &[f64]| -> f64 { r.iter().zip(m).map(|(r, m)| r.abs() * m).sum() };
         let contact = self.sc.contact != ContactModel::None;
         let root = &mut w.root;
         root.onset.clear();
@@ -237,18 +235,21 @@ impl Stepper<'_> {
         w.prev.clear();
         w.point_m4.clear();
         w.point_m5.clear();
-        for p in &self.points {
+        for s in 0..2 {
+            let m = [&w.size[s][..], &w.m4[s], &w.m5[s]];
+            self.bound_rows.points[s].weigh(m, &mut w.point_bounds[s]);
+            self.bound_rows.signals[s].weigh(m, &mut w.signal_bounds[s]);
+        }
+        for (j, p) in self.points.iter().enumerate() {
             let (c, cv) = self.point_state(p, [&w.q[0], &w.q[1]], [&w.v[0], &w.v[1]]);
             let ca = self
                 .point_state(p, [&w.acc[0], &w.acc[1]], [&w.acc[0], &w.acc[1]])
                 .0;
             w.prev.push([c, cv, ca]);
-            w.point_m4
-                .push(weighted(&p.r[0], &w.m4[0]) + weighted(&p.r[1], &w.m4[1]));
-            w.point_m5
-                .push(weighted(&p.r[0], &w.m5[0]) + weighted(&p.r[1], &w.m5[1]));
-            let size =
-                (weighted(&p.r[0], &w.size[0]) + weighted(&p.r[1], &w.size[1])) * (1.0 + ROUNDING);
+            let [l, r] = [0, 1].map(|s| w.point_bounds[s].each_ref().map(|b| b[j]));
+            w.point_m4.push(l[1] + r[1]);
+            w.point_m5.push(l[2] + r[2]);
+            let size = (l[0] + r[0]) * (1.0 + ROUNDING);
             // The slabs' ringing is bounded (its envelope tabulated) only where the motion alone
             // cannot reach the gap: the bound is never negative.
             let onset = contact
@@ -262,12 +263,16 @@ impl Stepper<'_> {
         w.signal_m5.clear();
         w.signal_acc.clear();
         for (i, sig) in self.signals.iter().enumerate() {
-            // A signal the run does not follow needs no bounds.
-            let watched = sig.watched();
-            let bound = |m: &[Vec<f64>; 2]| if watched { sig.bound(m) } else { 0.0 };
-            w.signal_m4.push(bound(&w.m4));
-            w.signal_m5.push(bound(&w.m5));
-            let open = watched && bound(&w.size) * (1.0 + ROUNDING) >= self.peaks.peak(i);
+            // A signal the run does not follow has no bounds.
+            let [size, m4, m5] = match self.bound_rows.row_of[i] {
+                Some(j) => w.signal_bounds[sig.side_and_coefficients().0]
+                    .each_ref()
+                    .map(|b| b[j]),
+                None => [0.0; 3],
+            };
+            w.signal_m4.push(m4);
+            w.signal_m5.push(m5);
+            let open = sig.watched() && size * (1.0 + ROUNDING) >= self.peaks.peak(i);
             root.peak.push(open);
             if open {
                 // Its last instant is this one (a stretch that left it alone did not keep it).

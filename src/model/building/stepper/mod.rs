@@ -26,6 +26,7 @@ mod contact;
 mod free;
 mod onset;
 mod record;
+mod weights;
 mod yielding;
 
 pub(super) use record::Record;
@@ -312,6 +313,8 @@ pub(super) struct Stepper<'a> {
     /// The signals the run follows, with what the contact steps' proofs read of each, side by
     /// side in one array (the proofs run over every one of them at every contact step).
     watch: Vec<record::Watch>,
+    /// The points' and the followed signals' |coefficients|, for a free stretch's bounds.
+    bound_rows: weights::BoundRows,
     peaks: Peaks,
     /// Signals whose last instant the free stretches have not kept (they could not reach their
     /// peak there): the next look at them starts afresh.
@@ -359,6 +362,10 @@ struct Scratch {
     point_m5: Vec<f64>,
     signal_m4: Vec<f64>,
     signal_m5: Vec<f64>,
+    /// Per side, the bounds on each point's and each followed signal's size and fourth and
+    /// fifth derivatives, by row of [`weights::BoundRows`].
+    point_bounds: [[Vec<f64>; 3]; 2],
+    signal_bounds: [[Vec<f64>; 3]; 2],
     /// What the stretch must be looked into for at all, and each depth of its halving.
     root: Depth,
     depths: Vec<Depth>,
@@ -446,6 +453,11 @@ impl<'a> Stepper<'a> {
             )
             .with_shears([&sc.left, &sc.right].map(|b| if b.yields() { b.storeys } else { 0 })),
             watch: record::Watch::all(&signals),
+            bound_rows: weights::BoundRows::new(
+                [sides[0].modes(), sides[1].modes()],
+                &points,
+                &signals,
+            ),
             signals,
             sides,
             points,

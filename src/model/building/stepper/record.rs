@@ -87,13 +87,9 @@ impl Signal {
         self.same_as.is_none() && self.kept
     }
 
-    /// The bound on its fourth derivative, from its modes' bounds.
-    pub(super) fn bound(&self, m4: &[Vec<f64>; 2]) -> f64 {
-        self.coef
-            .iter()
-            .zip(&m4[self.side])
-            .map(|(c, m)| c.abs() * m)
-            .sum()
+    /// Its side and its value per unit of each of the side's modes.
+    pub(super) fn side_and_coefficients(&self) -> (usize, &[f64]) {
+        (self.side, &self.coef)
     }
 }
 
