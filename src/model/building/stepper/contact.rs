@@ -87,6 +87,7 @@ impl Stepper<'_> {
             self.contact_loads(&mut cs.load_now);
         }
         if !self.newmark {
+            self.start_contact_proofs();
             self.equilibrium_accelerations(&cs.load_now);
             self.newmark = true;
             // The free stretch before moved every level: none is known to be out of reach.

@@ -355,6 +355,18 @@ impl Stepper<'_> {
         self.headroom[i] = self.peaks.peak(i) - u.abs();
     }
 
+    /// Where a contact phase starts: a signal the free stretches kept reading is known at its
+    /// last instant there, and its rate's distance from zero is its rate's size then (not what
+    /// the last contact step left).
+    pub(super) fn start_contact_proofs(&mut self) {
+        for w in &self.watch {
+            let i = w.i;
+            if !self.stale[i] {
+                self.sign_room[i] = self.peaks.last(i).1.abs();
+            }
+        }
+    }
+
     /// Every signal's peak brought up to the end of a contact step from `before` (each side's
     /// modal displacements and velocities where it started) that moved each side's modes by
     /// `dq`. A signal is read only where neither of two proofs holds, each checked at the cost
