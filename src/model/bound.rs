@@ -90,6 +90,35 @@ pub(crate) fn derivative_bounds(omega: f64, zeta: f64, y: &[f64; 4]) -> (f64, f6
     (m4, m4 * rate)
 }
 
+/// The bound on the second time derivative of one mode's response over a stretch where its
+/// forcing is linear, from the augmented state y = [q, q', g, g'] at its start: the particular
+/// line has none, the free vibration's is at most |lambda|^2 times its amplitude (as
+/// [`fourth_derivative`] takes the fourth).
+pub(crate) fn second_derivative(omega: f64, zeta: f64, y: &[f64; 4]) -> f64 {
+    if omega <= 0.0 || !omega.is_finite() {
+        return f64::INFINITY;
+    }
+    let w2 = omega * omega;
+    let beta = y[3] / w2;
+    let alpha = (y[2] - 2.0 * zeta * omega * beta) / w2;
+    let (qh, vh) = (y[0] - alpha, y[1] - beta);
+    if zeta < 0.999 {
+        let wd = omega * (1.0 - zeta * zeta).sqrt();
+        let b = (vh + zeta * omega * qh) / wd;
+        (qh * qh + b * b).sqrt() * w2
+    } else if zeta <= 1.001 {
+        // (|A| + |B| / (e w)) w^2 + 2 |B| w, doubled as for the fourth.
+        let b = vh + omega * qh;
+        2.0 * (qh.abs() * w2 + b.abs() * omega * (2.0 + std::f64::consts::E.recip()))
+    } else {
+        let root = (zeta * zeta - 1.0).sqrt();
+        let (l1, l2) = (-omega * (zeta - root), -omega * (zeta + root));
+        let a1 = (vh - l2 * qh) / (l1 - l2);
+        let a2 = qh - a1;
+        a1.abs() * l1 * l1 + a2.abs() * l2 * l2
+    }
+}
+
 /// The bound on the fourth time derivative of one mode's response over a stretch where its
 /// forcing is linear, from the augmented state y = [q, q', g, g'] at the stretch's start.
 pub(crate) fn fourth_derivative(omega: f64, zeta: f64, y: &[f64; 4]) -> f64 {

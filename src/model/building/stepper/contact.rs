@@ -598,11 +598,13 @@ impl Stepper<'_> {
         }
         // A level asleep has no live slab: it fell asleep with its slabs quiet (a live one's
         // ringing has no bound), and only a level the step pushes revives them.
-        for &i in &cs.awake {
-            let f1 = tr.forces[i];
-            for slab in self.points[i].slabs.iter_mut().flatten() {
+        for ((p, f1), asleep) in self.points.iter_mut().zip(&tr.forces).zip(&cs.asleep) {
+            if *asleep {
+                continue;
+            }
+            for slab in p.slabs.iter_mut().flatten() {
                 if slab.is_live() {
-                    slab.push(f1);
+                    slab.push(*f1);
                 }
             }
         }
@@ -622,9 +624,8 @@ impl Stepper<'_> {
             self.contact_loads(&mut cs.trial.load);
         }
         if self.sears {
-            for &i in &cs.awake {
-                let p = &mut self.points[i];
-                if p.force <= 0.0 {
+            for (p, asleep) in self.points.iter_mut().zip(&cs.asleep) {
+                if p.force <= 0.0 && !asleep {
                     for slab in p.slabs.iter_mut().flatten() {
                         slab.settle();
                     }

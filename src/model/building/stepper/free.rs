@@ -4,8 +4,18 @@
 use super::*;
 use crate::model::bound::{
     ROUNDING, cubic_bound, cubic_margin, cubic_max, cubic_max_abs, mode_bounds, monotone,
+    second_derivative,
 };
 use crate::model::building::modal::evaluate;
+
+/// The sum of |r_k| m_k over the modes.
+fn weighted(r: &[f64], m: &[f64]) -> f64 {
+    r.iter().zip(m).map(|(r, m)| r.abs() * m).sum()
+}
+
+/// Modes from which a side's signals are tested, at a stretch's start, on where they are (see
+/// [`Stepper::prepare`]).
+const TALL: usize = 16;
 
 /// A part this short (in grid steps) is walked rather than halved again.
 const WALK_SPAN: usize = 8;
@@ -215,6 +225,7 @@ impl Stepper<'_> {
             w.acc[s].resize(n, 0.0);
             w.m4[s].clear();
             w.m5[s].clear();
+            w.m2[s].clear();
             w.size[s].clear();
             for k in 0..n {
                 let y = &w.y0[s][k];
@@ -222,6 +233,10 @@ impl Stepper<'_> {
                 w.size[s].push(size);
                 w.m4[s].push(m4);
                 w.m5[s].push(m5);
+                // Only a tall building's signals are tested on it (see below).
+                if n >= TALL {
+                    w.m2[s].push(second_derivative(side.omega[k], side.zeta[k], y));
+                }
                 w.q[s][k] = y[0];
                 w.v[s][k] = y[1];
             }
@@ -235,9 +250,13 @@ impl Stepper<'_> {
         w.prev.clear();
         w.point_m4.clear();
         w.point_m5.clear();
-        for s in 0..2 {
+        // A tall building's bounds come from its tables, a few modes' row by row (the same
+        // sums).
+        let tall = [0, 1].map(|s| self.sides[s].modes() >= TALL);
+        for s in (0..2).filter(|&s| tall[s]) {
             let m = [&w.size[s][..], &w.m4[s], &w.m5[s]];
             self.bound_rows.points[s].weigh(m, &mut w.point_bounds[s]);
+            let m = [&w.size[s][..], &w.m4[s], &w.m5[s], &w.m2[s]];
             self.bound_rows.signals[s].weigh(m, &mut w.signal_bounds[s]);
         }
         for (j, p) in self.points.iter().enumerate() {
@@ -246,7 +265,20 @@ impl Stepper<'_> {
                 .point_state(p, [&w.acc[0], &w.acc[1]], [&w.acc[0], &w.acc[1]])
                 .0;
             w.prev.push([c, cv, ca]);
-            let [l, r] = [0, 1].map(|s| w.point_bounds[s].each_ref().map(|b| b[j]));
+            let of_side = |s: usize| {
+                if tall[s] {
+                    let b = &w.point_bounds[s];
+                    [b[0][j], b[1][j], b[2][j]]
+                } else {
+                    let r = &p.r[s];
+                    [
+                        weighted(r, &w.size[s]),
+                        weighted(r, &w.m4[s]),
+                        weighted(r, &w.m5[s]),
+                    ]
+                }
+            };
+            let (l, r) = (of_side(0), of_side(1));
             w.point_m4.push(l[1] + r[1]);
             w.point_m5.push(l[2] + r[2]);
             let size = (l[0] + r[0]) * (1.0 + ROUNDING);
@@ -264,19 +296,41 @@ impl Stepper<'_> {
         w.signal_acc.clear();
         for (i, sig) in self.signals.iter().enumerate() {
             // A signal the run does not follow has no bounds.
-            let [size, m4, m5] = match self.bound_rows.row_of[i] {
-                Some(j) => w.signal_bounds[sig.side_and_coefficients().0]
-                    .each_ref()
-                    .map(|b| b[j]),
-                None => [0.0; 3],
+            let side = sig.side_and_coefficients().0;
+            let [size, m4, m5, m2] = match self.bound_rows.row_of[i] {
+                Some(j) if tall[side] => {
+                    let b = &w.signal_bounds[side];
+                    [b[0][j], b[1][j], b[2][j], b[3][j]]
+                }
+                Some(_) => [
+                    sig.bound(&w.size),
+                    sig.bound(&w.m4),
+                    sig.bound(&w.m5),
+                    f64::INFINITY,
+                ],
+                None => [0.0; 4],
             };
             w.signal_m4.push(m4);
             w.signal_m5.push(m5);
-            let open = sig.watched() && size * (1.0 + ROUNDING) >= self.peaks.peak(i);
+            let peak = self.peaks.peak(i);
+            let mut open = sig.watched() && size * (1.0 + ROUNDING) >= peak;
+            let mut now = (0.0, 0.0);
+            if open {
+                now = self.signal(i, [&w.q[0], &w.q[1]], [&w.v[0], &w.v[1]]);
+                // The sum of the modes' sizes is far above what a tall building's signal
+                // reaches: from where it is, at its rate, with its acceleration's bound, it may
+                // still stay below its peak over the stretch (rounding: a hair of the sizes
+                // its sums are made from). A few modes' sum is close enough.
+                if m2.is_finite() {
+                    let (u, r) = now;
+                    let reach = u.abs() + r.abs() * span + 0.5 * m2 * span * span;
+                    open = reach + ROUNDING * (size + reach) >= peak;
+                }
+            }
             root.peak.push(open);
             if open {
                 // Its last instant is this one (a stretch that left it alone did not keep it).
-                let (u, r) = self.signal(i, [&w.q[0], &w.q[1]], [&w.v[0], &w.v[1]]);
+                let (u, r) = now;
                 self.peaks.pass(i, t0, u, r);
                 self.stale[i] = false;
                 w.signal_acc

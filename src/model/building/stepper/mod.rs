@@ -353,6 +353,8 @@ struct Scratch {
     size: [Vec<f64>; 2],
     m4: [Vec<f64>; 2],
     m5: [Vec<f64>; 2],
+    /// And on its second derivative.
+    m2: [Vec<f64>; 2],
     /// Each point's closing motion, its rate and acceleration at the last point looked at.
     prev: Vec<[f64; 3]>,
     /// Each signal's acceleration at its last instant.
@@ -362,10 +364,10 @@ struct Scratch {
     point_m5: Vec<f64>,
     signal_m4: Vec<f64>,
     signal_m5: Vec<f64>,
-    /// Per side, the bounds on each point's and each followed signal's size and fourth and
-    /// fifth derivatives, by row of [`weights::BoundRows`].
+    /// Per side, the bounds on each point's size and fourth and fifth derivatives, and on
+    /// each followed signal's and its second derivative, by row of [`weights::BoundRows`].
     point_bounds: [[Vec<f64>; 3]; 2],
-    signal_bounds: [[Vec<f64>; 3]; 2],
+    signal_bounds: [[Vec<f64>; 4]; 2],
     /// What the stretch must be looked into for at all, and each depth of its halving.
     root: Depth,
     depths: Vec<Depth>,

@@ -87,6 +87,15 @@ impl Signal {
         self.same_as.is_none() && self.kept
     }
 
+    /// The bound on its size (or a derivative's), from its modes' bounds.
+    pub(super) fn bound(&self, m: &[Vec<f64>; 2]) -> f64 {
+        self.coef
+            .iter()
+            .zip(&m[self.side])
+            .map(|(c, m)| c.abs() * m)
+            .sum()
+    }
+
     /// Its side and its value per unit of each of the side's modes.
     pub(super) fn side_and_coefficients(&self) -> (usize, &[f64]) {
         (self.side, &self.coef)

@@ -67,24 +67,24 @@ impl AbsRows {
         AbsRows { rows: n, abs }
     }
 
-    /// Each row's sums of |c_k| m_k for the three bounds `m` (size, fourth and fifth
-    /// derivatives), into `out[0..3]`, each `rows()` long: mode after mode, as a row's own sum
-    /// takes them.
-    pub(super) fn weigh(&self, m: [&[f64]; 3], out: &mut [Vec<f64>; 3]) {
+    /// Each row's sums of |c_k| m_k for each of the bounds `m` (a size, derivatives), into
+    /// `out`, each `rows` long: mode after mode, as a row's own sum takes them.
+    pub(super) fn weigh<const M: usize>(&self, m: [&[f64]; M], out: &mut [Vec<f64>; M]) {
         let n = self.rows;
         for o in out.iter_mut() {
-            o.clear();
-            o.resize(n, 0.0);
+            // The same length at every stretch of a run: set to zero where it stands.
+            if o.len() != n {
+                o.resize(n, 0.0);
+            }
+            o.fill(0.0);
         }
-        let [o0, o1, o2] = out;
-        let (o0, o1, o2) = (&mut o0[..n], &mut o1[..n], &mut o2[..n]);
         for (k, abs) in self.abs.chunks_exact(n.max(1)).enumerate() {
-            let (a, b, c) = (m[0][k], m[1][k], m[2][k]);
             let abs = &abs[..n];
-            for j in 0..n {
-                o0[j] += abs[j] * a;
-                o1[j] += abs[j] * b;
-                o2[j] += abs[j] * c;
+            for (o, m) in out.iter_mut().zip(&m) {
+                let (o, mk) = (&mut o[..n], m[k]);
+                for j in 0..n {
+                    o[j] += abs[j] * mk;
+                }
             }
         }
     }
