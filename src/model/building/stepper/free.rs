@@ -297,23 +297,15 @@ impl Stepper<'_> {
         for (i, sig) in self.signals.iter().enumerate() {
             // A signal the run does not follow has no bounds.
             let side = sig.side_and_coefficients().0;
-            let [size, m4, m5, m2] = match self.bound_rows.row_of[i] {
-                Some(j) if tall[side] => {
-                    let b = &w.signal_bounds[side];
-                    [b[0][j], b[1][j], b[2][j], b[3][j]]
-                }
-                Some(_) => [
-                    sig.bound(&w.size),
-                    sig.bound(&w.m4),
-                    sig.bound(&w.m5),
-                    f64::INFINITY,
-                ],
-                None => [0.0; 4],
-            };
-            w.signal_m4.push(m4);
-            w.signal_m5.push(m5);
+            let row = self.bound_rows.row_of[i];
+            let table = row.filter(|_| tall[side]).map(|_| &w.signal_bounds[side]);
             let peak = self.peaks.peak(i);
-            let mut open = sig.watched() && size * (1.0 + ROUNDING) >= peak;
+            let size = match (row, table) {
+                (Some(j), Some(b)) => b[0][j],
+                (Some(_), None) => sig.bound(&w.size),
+                (None, _) => 0.0,
+            };
+            let mut open = row.is_some() && size * (1.0 + ROUNDING) >= peak;
             let mut now = (0.0, 0.0);
             if open {
                 now = self.signal(i, [&w.q[0], &w.q[1]], [&w.v[0], &w.v[1]]);
@@ -321,12 +313,20 @@ impl Stepper<'_> {
                 // reaches: from where it is, at its rate, with its acceleration's bound, it may
                 // still stay below its peak over the stretch (rounding: a hair of the sizes
                 // its sums are made from). A few modes' sum is close enough.
-                if m2.is_finite() {
+                if let (Some(j), Some(b)) = (row, table) {
                     let (u, r) = now;
-                    let reach = u.abs() + r.abs() * span + 0.5 * m2 * span * span;
+                    let reach = u.abs() + r.abs() * span + 0.5 * b[3][j] * span * span;
                     open = reach + ROUNDING * (size + reach) >= peak;
                 }
             }
+            // A signal the stretch leaves alone needs no bounds on its derivatives.
+            let [m4, m5] = match (open, row, table) {
+                (false, ..) | (_, None, _) => [0.0; 2],
+                (true, Some(j), Some(b)) => [b[1][j], b[2][j]],
+                (true, Some(_), None) => [sig.bound(&w.m4), sig.bound(&w.m5)],
+            };
+            w.signal_m4.push(m4);
+            w.signal_m5.push(m5);
             root.peak.push(open);
             if open {
                 // Its last instant is this one (a stretch that left it alone did not keep it).
