@@ -326,6 +326,9 @@ pub(super) struct Stepper<'a> {
     sign_room: Vec<f64>,
     deferred: Vec<bool>,
     any_deferred: bool,
+    /// The sizes of each side's modal velocities where the last contact step ended, and the
+    /// step count then (a contact step straight after it starts from them).
+    speeds_after: Option<(usize, [[f64; 2]; 2])>,
     pub steps: usize,
     pub contact_steps: usize,
     sears: bool,
@@ -447,6 +450,7 @@ impl<'a> Stepper<'a> {
             sign_room: vec![0.0; signals.len()],
             deferred: vec![false; signals.len()],
             any_deferred: false,
+            speeds_after: None,
             record: Record::new(
                 sc.left.storeys,
                 sc.right.storeys,

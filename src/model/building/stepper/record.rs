@@ -396,9 +396,15 @@ impl Stepper<'_> {
     ) {
         let t = self.time();
         let moved: [[f64; 2]; 2] = std::array::from_fn(|s| sizes(dq[s].iter().copied()));
-        let speeds: [[f64; 2]; 2] = std::array::from_fn(|s| sizes(before[s][1].iter().copied()));
+        // Straight after another contact step (the step count one on), the velocities this one
+        // started from are those that one ended with, and so are their sizes.
+        let speeds: [[f64; 2]; 2] = match self.speeds_after.take() {
+            Some((step, sizes)) if step + 1 == self.steps => sizes,
+            _ => std::array::from_fn(|s| sizes(before[s][1].iter().copied())),
+        };
         let speed_after: [[f64; 2]; 2] =
             std::array::from_fn(|s| sizes(self.sides[s].v.iter().copied()));
+        self.speeds_after = Some((self.steps, speed_after));
         // What the step changed the modal velocities by, worked out where a proof needs it.
         let mut kicked: [Option<[f64; 2]>; 2] = [None; 2];
         for w in 0..self.watch.len() {
