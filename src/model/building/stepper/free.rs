@@ -215,7 +215,9 @@ impl Stepper<'_> {
         let span = len as f64 * self.grid.h;
         // The free stretch moves every signal: what a contact step had shown of its headroom
         // holds no more.
-        self.headroom.fill(f64::NEG_INFINITY);
+        for pr in self.proof.iter_mut() {
+            pr.headroom = f64::NEG_INFINITY;
+        }
         for s in 0..2 {
             self.initial_into(s, t0, &mut w.y0[s]);
             let side = &self.sides[s];
@@ -332,11 +334,11 @@ impl Stepper<'_> {
                 // Its last instant is this one (a stretch that left it alone did not keep it).
                 let (u, r) = now;
                 self.peaks.pass(i, t0, u, r);
-                self.stale[i] = false;
+                self.proof[i].stale = false;
                 w.signal_acc
                     .push(self.signal_value(i, [&w.acc[0], &w.acc[1]]));
             } else {
-                self.stale[i] = true;
+                self.proof[i].stale = true;
                 w.signal_acc.push(0.0);
             }
         }

@@ -316,15 +316,9 @@ pub(super) struct Stepper<'a> {
     /// The points' and the followed signals' |coefficients|, for a free stretch's bounds.
     bound_rows: weights::BoundRows,
     peaks: Peaks,
-    /// Signals whose last instant the free stretches have not kept (they could not reach their
-    /// peak there): the next look at them starts afresh.
-    stale: Vec<bool>,
-    /// Inside contacts: how far below its peak each signal has been shown to stay.
-    headroom: Vec<f64>,
-    /// Inside contacts: each signal's rate's proven distance from zero since it was last read,
-    /// whether it is left unread as monotone since, and whether any is.
-    sign_room: Vec<f64>,
-    deferred: Vec<bool>,
+    /// What the proofs know of each signal.
+    proof: Vec<record::Proof>,
+    /// Whether any signal is left unread as monotone.
     any_deferred: bool,
     /// The sizes of each side's modal velocities where the last contact step ended, and the
     /// step count then (a contact step straight after it starts from them).
@@ -445,10 +439,7 @@ impl<'a> Stepper<'a> {
             motion,
             grid,
             peaks: Peaks::new(signals.len()),
-            stale: vec![false; signals.len()],
-            headroom: vec![f64::NEG_INFINITY; signals.len()],
-            sign_room: vec![0.0; signals.len()],
-            deferred: vec![false; signals.len()],
+            proof: vec![record::Proof::NONE; signals.len()],
             any_deferred: false,
             speeds_after: None,
             record: Record::new(

@@ -161,6 +161,29 @@ fn join(l: [f64; 4]) -> f64 {
     (l[0] + l[2]) + (l[1] + l[3])
 }
 
+/// What the proofs know of a signal.
+#[derive(Clone, Copy)]
+pub(super) struct Proof {
+    /// Inside contacts: how far below its peak it has been shown to stay.
+    pub headroom: f64,
+    /// Inside contacts: its rate's proven distance from zero since it was last read.
+    pub sign_room: f64,
+    /// Its last instant not kept (a free stretch, or contact steps, left it alone where it
+    /// could not reach its peak): the next look at it starts afresh.
+    pub stale: bool,
+    /// Left unread as monotone since it was last read.
+    pub deferred: bool,
+}
+
+impl Proof {
+    pub(super) const NONE: Proof = Proof {
+        headroom: f64::NEG_INFINITY,
+        sign_room: 0.0,
+        stale: false,
+        deferred: false,
+    };
+}
+
 /// A followed signal as the contact steps' proofs read it.
 #[derive(Clone, Copy)]
 pub(super) struct Watch {
@@ -351,17 +374,19 @@ impl Stepper<'_> {
             [&self.sides[0].q, &self.sides[1].q],
             [&self.sides[0].v, &self.sides[1].v],
         );
-        if self.stale[i] {
+        if self.proof[i].stale {
             // Left alone since its last instant, where a bound kept it below its peak.
             self.peaks.pass(i, t, u, r);
-            self.stale[i] = false;
         } else {
             // Read now after steps it was shown monotone over, too: its peak is at an end.
             self.peaks.update(i, t, u, r);
         }
-        self.deferred[i] = false;
-        self.sign_room[i] = r.abs();
-        self.headroom[i] = self.peaks.peak(i) - u.abs();
+        self.proof[i] = Proof {
+            headroom: self.peaks.peak(i) - u.abs(),
+            sign_room: r.abs(),
+            stale: false,
+            deferred: false,
+        };
     }
 
     /// Where a contact phase starts: a signal the free stretches kept reading is known at its
@@ -370,8 +395,8 @@ impl Stepper<'_> {
     pub(super) fn start_contact_proofs(&mut self) {
         for w in &self.watch {
             let i = w.i;
-            if !self.stale[i] {
-                self.sign_room[i] = self.peaks.last(i).1.abs();
+            if !self.proof[i].stale {
+                self.proof[i].sign_room = self.peaks.last(i).1.abs();
             }
         }
     }
@@ -418,39 +443,40 @@ impl Stepper<'_> {
             // |sum c dq| is at most max|c| sum|dq| and |c| |dq|: the tighter of the two, for
             // the step's displacement and for the rates at both ends.
             let most = |[l1, l2]: [f64; 2]| (largest * l1).min(norm * l2);
-            if !self.deferred[i] {
+            let pr = &mut self.proof[i];
+            if !pr.deferred {
                 let step = most(moved[s]);
                 let (rate0, rate1) = (most(speeds[s]), most(speed_after[s]));
-                let room = self.headroom[i] - step - 4.0 / 27.0 * hh * (rate0 + rate1);
+                let room = pr.headroom - step - 4.0 / 27.0 * hh * (rate0 + rate1);
                 if room > 1e-9 * peak {
-                    self.headroom[i] = room;
-                    self.stale[i] = true;
+                    pr.headroom = room;
+                    pr.stale = true;
                     continue;
                 }
             }
-            if !self.stale[i] {
+            if !pr.stale {
                 let kick = *kicked[s].get_or_insert_with(|| {
                     let (v0, v1) = (&before[s][1], &self.sides[s].v);
                     sizes(v0.iter().zip(v1).map(|(a, b)| b - a))
                 });
-                let keeps = self.sign_room[i] - most(kick);
-                if keeps > 1e-9 * self.sign_room[i].abs().max(f64::MIN_POSITIVE) {
-                    self.sign_room[i] = keeps;
-                    self.deferred[i] = true;
-                    self.any_deferred = true;
-                    continue;
-                }
+                let keeps = pr.sign_room - most(kick);
                 // A tall building's bound on the kick sees the contact force at every floor:
                 // its rate alone, read exactly, shows it monotone at half a reading's cost (the
                 // step's ends' rates of one sign keep Newmark's cubic monotone between them).
-                if let Some(room) = self.rate_keeps_sign(i, s) {
-                    self.sign_room[i] = room;
-                    self.deferred[i] = true;
+                let room = if keeps > 1e-9 * pr.sign_room.abs().max(f64::MIN_POSITIVE) {
+                    Some(keeps)
+                } else {
+                    self.rate_keeps_sign(i, s)
+                };
+                if let Some(room) = room {
+                    let pr = &mut self.proof[i];
+                    pr.sign_room = room;
+                    pr.deferred = true;
                     self.any_deferred = true;
                     continue;
                 }
             }
-            if self.deferred[i] {
+            if self.proof[i].deferred {
                 let (u0, r0) = self.signal(
                     i,
                     [&before[0][0], &before[1][0]],
@@ -478,7 +504,7 @@ impl Stepper<'_> {
     /// end.
     fn peak_so_far(&self, i: usize) -> f64 {
         let peak = self.peaks.peak(i);
-        if !self.deferred[i] {
+        if !self.proof[i].deferred {
             return peak;
         }
         let side = &self.sides[self.signals[i].side];
@@ -494,7 +520,7 @@ impl Stepper<'_> {
         }
         let t = self.time();
         for i in 0..self.signals.len() {
-            if self.deferred[i] {
+            if self.proof[i].deferred {
                 // Never stale while deferred: read from its last instant.
                 self.read_signal(i, t);
             }
