@@ -501,9 +501,8 @@ impl Stepper<'_> {
         let out = &mut cs.trial;
         out.forces.clear();
         out.forces.extend(self.points.iter().map(|p| p.force));
-        out.deltas.clear();
+        // Only the awake points' entries are written and read.
         out.deltas.resize(np, 0.0);
-        out.rates.clear();
         out.rates.resize(np, 0.0);
         let g = if cs.use_full {
             cs.g_full.as_ref().expect("made")
