@@ -389,14 +389,17 @@ impl Stepper<'_> {
         };
     }
 
-    /// Where a contact phase starts: a signal the free stretches kept reading is known at its
-    /// last instant there, and its rate's distance from zero is its rate's size then (not what
-    /// the last contact step left).
+    /// Where a contact phase starts: no headroom is known, and a signal the free stretches kept
+    /// reading is known at its last instant there, its rate's distance from zero its rate's
+    /// size then (not what the last contact step left).
     pub(super) fn start_contact_proofs(&mut self) {
         for w in &self.watch {
-            let i = w.i;
-            if !self.proof[i].stale {
-                self.proof[i].sign_room = self.peaks.last(i).1.abs();
+            let pr = &mut self.proof[w.i];
+            // The free stretches moved it: what a contact step had shown of its headroom holds
+            // no more.
+            pr.headroom = f64::NEG_INFINITY;
+            if !pr.stale {
+                pr.sign_room = self.peaks.last(w.i).1.abs();
             }
         }
     }
