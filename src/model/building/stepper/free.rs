@@ -254,9 +254,8 @@ impl Stepper<'_> {
         // sums).
         let tall = [0, 1].map(|s| self.sides[s].modes() >= TALL);
         for s in (0..2).filter(|&s| tall[s]) {
-            let m = [&w.size[s][..], &w.m4[s], &w.m5[s]];
-            self.bound_rows.points[s].weigh(m, &mut w.point_bounds[s]);
             let m = [&w.size[s][..], &w.m4[s], &w.m5[s], &w.m2[s]];
+            self.bound_rows.points[s].weigh(m, &mut w.point_bounds[s]);
             self.bound_rows.signals[s].weigh(m, &mut w.signal_bounds[s]);
         }
         for (j, p) in self.points.iter().enumerate() {
@@ -265,17 +264,20 @@ impl Stepper<'_> {
                 .point_state(p, [&w.acc[0], &w.acc[1]], [&w.acc[0], &w.acc[1]])
                 .0;
             w.prev.push([c, cv, ca]);
-            let mut sides = [[0.0; 3]; 2];
+            // Per side: the bounds on the point's size, its fourth and fifth derivatives, and
+            // (both sides tall) its second.
+            let mut sides = [[0.0; 4]; 2];
             for (s, out) in sides.iter_mut().enumerate() {
                 *out = if tall[s] {
                     let b = &w.point_bounds[s];
-                    [b[0][j], b[1][j], b[2][j]]
+                    [b[0][j], b[1][j], b[2][j], b[3][j]]
                 } else {
                     let r = &p.r[s];
                     [
                         weighted(r, &w.size[s]),
                         weighted(r, &w.m4[s]),
                         weighted(r, &w.m5[s]),
+                        f64::INFINITY,
                     ]
                 };
             }
@@ -283,14 +285,31 @@ impl Stepper<'_> {
             w.point_m4.push(l[1] + r[1]);
             w.point_m5.push(l[2] + r[2]);
             let size = (l[0] + r[0]) * (1.0 + ROUNDING);
+            let gap = self.sc.gap_m;
+            let below = p.max_closing - 1e-6 * p.max_closing.abs();
             // The slabs' ringing is bounded (its envelope tabulated) only where the motion alone
             // cannot reach the gap: the bound is never negative.
-            let onset = contact
-                && (size >= self.sc.gap_m
-                    || self.sears && size + p.elastic_bound_from(self.n) >= self.sc.gap_m);
+            let ringing = |reach: f64| {
+                if self.sears && reach < gap {
+                    p.elastic_bound_from(self.n)
+                } else {
+                    0.0
+                }
+            };
+            let mut onset = contact && (size >= gap || size + ringing(size) >= gap);
+            let mut closing = size >= below;
+            // As for a tall building's signals (below): from where the closing motion is, at its
+            // rate, with its acceleration's bound, it may still stay below the gap and its
+            // largest value over the stretch.
+            let m2 = l[3] + r[3];
+            if (onset || closing) && m2.is_finite() {
+                let reach = c + cv.abs() * span + 0.5 * m2 * span * span;
+                let reach = reach + ROUNDING * (size + reach.abs());
+                onset &= reach + ringing(reach) >= gap;
+                closing &= reach >= below;
+            }
             root.onset.push(onset);
-            root.closing
-                .push(size >= p.max_closing - 1e-6 * p.max_closing.abs());
+            root.closing.push(closing);
         }
         w.signal_m4.clear();
         w.signal_m5.clear();

@@ -361,9 +361,9 @@ struct Scratch {
     point_m5: Vec<f64>,
     signal_m4: Vec<f64>,
     signal_m5: Vec<f64>,
-    /// Per side, the bounds on each point's size and fourth and fifth derivatives, and on
-    /// each followed signal's and its second derivative, by row of [`weights::BoundRows`].
-    point_bounds: [[Vec<f64>; 3]; 2],
+    /// Per side, the bounds on each point's and each followed signal's size, its fourth and
+    /// fifth derivatives and its second, by row of [`weights::BoundRows`].
+    point_bounds: [[Vec<f64>; 4]; 2],
     signal_bounds: [[Vec<f64>; 4]; 2],
     /// What the stretch must be looked into for at all, and each depth of its halving.
     root: Depth,

@@ -67,9 +67,9 @@ impl AbsRows {
         AbsRows { rows: n, abs }
     }
 
-    /// Each row's sums of |c_k| m_k for each of the bounds `m` (a size, derivatives), into
+    /// Each row's sums of |c_k| m_k for each of the four bounds `m` (a size, derivatives), into
     /// `out`, each `rows` long: mode after mode, as a row's own sum takes them.
-    pub(super) fn weigh<const M: usize>(&self, m: [&[f64]; M], out: &mut [Vec<f64>; M]) {
+    pub(super) fn weigh(&self, m: [&[f64]; 4], out: &mut [Vec<f64>; 4]) {
         let n = self.rows;
         for o in out.iter_mut() {
             // The same length at every stretch of a run: set to zero where it stands.
@@ -78,13 +78,17 @@ impl AbsRows {
             }
             o.fill(0.0);
         }
+        let [o0, o1, o2, o3] = out;
+        let (o0, o1, o2, o3) = (&mut o0[..n], &mut o1[..n], &mut o2[..n], &mut o3[..n]);
         for (k, abs) in self.abs.chunks_exact(n.max(1)).enumerate() {
+            let (m0, m1, m2, m3) = (m[0][k], m[1][k], m[2][k], m[3][k]);
             let abs = &abs[..n];
-            for (o, m) in out.iter_mut().zip(&m) {
-                let (o, mk) = (&mut o[..n], m[k]);
-                for j in 0..n {
-                    o[j] += abs[j] * mk;
-                }
+            for j in 0..n {
+                let a = abs[j];
+                o0[j] += a * m0;
+                o1[j] += a * m1;
+                o2[j] += a * m2;
+                o3[j] += a * m3;
             }
         }
     }
@@ -107,13 +111,13 @@ mod tests {
             let rows: Vec<Vec<f64>> = (0..7)
                 .map(|_| (0..modes).map(|_| next() * 1e3).collect())
                 .collect();
-            let m: [Vec<f64>; 3] =
+            let m: [Vec<f64>; 4] =
                 std::array::from_fn(|_| (0..modes).map(|_| next().abs()).collect());
             let table = AbsRows::new(modes, rows.iter().map(|r| r.as_slice()));
-            let mut out = [vec![], vec![], vec![]];
-            table.weigh([&m[0], &m[1], &m[2]], &mut out);
+            let mut out = [vec![], vec![], vec![], vec![]];
+            table.weigh([&m[0], &m[1], &m[2], &m[3]], &mut out);
             for (j, row) in rows.iter().enumerate() {
-                for b in 0..3 {
+                for b in 0..4 {
                     let own: f64 = row.iter().zip(&m[b]).map(|(c, m)| c.abs() * m).sum();
                     assert_eq!(out[b][j].to_bits(), own.to_bits(), "row {j}, bound {b}");
                 }
