@@ -128,9 +128,6 @@ fn whole_run(c: &mut Criterion) {
     g.finish();
 }
 
-/// The same whole runs as `pounding buildings` now makes them: the estimate's companion and the
-/// run without contact on a second thread beside the run (`solve_checked`). The same
-/// instructions; on two cores, about the companion's time.
 /// A run with its checks, as [`solve_checked`] makes it.
 type Checker = fn(
     &BuildingScenario,
@@ -138,6 +135,9 @@ type Checker = fn(
     &Control,
 ) -> Result<Checked, pounding::model::error::SolveError>;
 
+/// The same whole runs as `pounding buildings` now makes them: the estimate's companion and the
+/// run without contact on a second thread beside the run (`solve_checked`). The same
+/// instructions; on two cores, about the companion's time.
 fn whole_run_side_by_side(c: &mut Criterion) {
     let motion = record();
     let mut g = c.benchmark_group("whole_run_side_by_side");

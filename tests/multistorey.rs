@@ -474,16 +474,33 @@ fn impacts(contacts: &[(usize, f64, f64, f64)], merge: f64) -> Vec<(usize, f64, 
 }
 
 fn against_the_exact_piecewise_linear_solution(preset_name: &str) {
-    let mut sc = preset_scenario(preset_name);
-    sc.contact = ContactModel::Linear;
-    sc.stiffness = Some(1.5e10);
-    against_the_exact_solution(preset_name, &sc, 100);
+    against_the_exact_solution(
+        preset_name,
+        &linear_spring(preset_scenario(preset_name)),
+        100,
+    );
+}
+
+/// The scenario pounding through the linear spring of 1.5e10 N/m the exact solution takes.
+fn linear_spring(sc: BuildingScenario) -> BuildingScenario {
+    BuildingScenario {
+        contact: ContactModel::Linear,
+        stiffness: Some(1.5e10),
+        ..sc
+    }
+}
+
+/// mdof-3-5 with `left` and `right` storeys.
+fn mdof_pair(left: usize, right: usize) -> BuildingScenario {
+    let mut sc = preset_scenario("mdof-3-5");
+    sc.left.storeys = left;
+    sc.right.storeys = right;
+    sc
 }
 
 /// The run of `sc` against the exact solution stepped `sub` times per record interval: its
 /// impacts, and every floor's and storey's peak.
-fn against_the_exact_solution(name: &str, sc: &BuildingScenario, sub: usize) {
-    let preset_name = name;
+fn against_the_exact_solution(preset_name: &str, sc: &BuildingScenario, sub: usize) {
     let m = el_centro();
     let r = run(sc, &m);
     let exact = Reference::new(sc).solve(&m, sub);
@@ -546,10 +563,10 @@ fn floor_to_column_pounding_matches_an_exact_solution_of_the_piecewise_linear_sy
 fn a_tall_pair_without_contact_peaks_as_the_exact_solution_on_every_floor_and_storey() {
     // Sixteen modes a side and more: the free stretches' tall-building bounds (tables, and a
     // signal left alone where its value, rate and acceleration keep it below its peak).
-    let mut sc = preset_scenario("mdof-3-5");
-    sc.left.storeys = 17;
-    sc.right.storeys = 20;
-    sc.contact = ContactModel::None;
+    let sc = BuildingScenario {
+        contact: ContactModel::None,
+        ..mdof_pair(17, 20)
+    };
     against_the_exact_solution("17 and 20 storeys, no contact", &sc, 100);
 }
 
@@ -557,11 +574,7 @@ fn a_tall_pair_without_contact_peaks_as_the_exact_solution_on_every_floor_and_st
 fn a_tall_pair_pounding_peaks_as_the_exact_solution_on_every_floor_and_storey() {
     // The contact steps' proofs over sixteen modes a side and more (a rate read alone where the
     // bound on its kick fails).
-    let mut sc = preset_scenario("mdof-3-5");
-    sc.left.storeys = 16;
-    sc.right.storeys = 18;
-    sc.contact = ContactModel::Linear;
-    sc.stiffness = Some(1.5e10);
+    let sc = linear_spring(mdof_pair(16, 18));
     against_the_exact_solution("16 and 18 storeys, linear", &sc, 100);
 }
 

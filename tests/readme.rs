@@ -69,11 +69,12 @@ fn every_command_line_in_the_readme_runs() {
             args.extend(["--exit-after-frames".to_string(), "5".to_string()]);
         }
         let dir = scratch(k);
-        let mut command = Command::new(env!("CARGO_BIN_EXE_pounding"));
-        command.args(&args).current_dir(&dir).env("NO_COLOR", "1");
-        let saved = common::with_own_saved_session(&mut command);
-        let o = command.output().expect("the binary runs");
-        std::fs::remove_dir_all(saved).ok();
+        let o = common::output_in_own_session(
+            Command::new(env!("CARGO_BIN_EXE_pounding"))
+                .args(&args)
+                .current_dir(&dir)
+                .env("NO_COLOR", "1"),
+        );
         assert!(
             o.status.success(),
             "`pounding {}` failed: {}",

@@ -46,30 +46,106 @@ pub(crate) struct Envelope {
     pub free: f64,
 }
 
+/// A mode's response where its forcing is linear, split as the particular line alpha + beta t
+/// and the free vibration about it.
+struct Response {
+    alpha: f64,
+    beta: f64,
+    w2: f64,
+    free: Free,
+}
+
+/// The free vibration about the particular line, by damping.
+enum Free {
+    /// A e^(lambda t) with |lambda| = w: its amplitude.
+    Under { amplitude: f64 },
+    /// Near critical damping, (A + B t) e^(-w t).
+    Critical { a: f64, b: f64 },
+    /// a1 e^(l1 t) + a2 e^(l2 t).
+    Over { a1: f64, a2: f64, l1: f64, l2: f64 },
+}
+
+impl Response {
+    /// The response from the augmented state y = [q, q', g, g'] (none for a mode without
+    /// stiffness).
+    fn of(omega: f64, zeta: f64, y: &[f64; 4]) -> Option<Response> {
+        if omega <= 0.0 || !omega.is_finite() {
+            return None;
+        }
+        let w2 = omega * omega;
+        // The particular response to g + g' s is alpha + beta s.
+        let beta = y[3] / w2;
+        let alpha = (y[2] - 2.0 * zeta * omega * beta) / w2;
+        let (qh, vh) = (y[0] - alpha, y[1] - beta);
+        let free = if zeta < 0.999 {
+            let wd = omega * (1.0 - zeta * zeta).sqrt();
+            let b = (vh + zeta * omega * qh) / wd;
+            Free::Under {
+                amplitude: (qh * qh + b * b).sqrt(),
+            }
+        } else if zeta <= 1.001 {
+            Free::Critical {
+                a: qh,
+                b: vh + omega * qh,
+            }
+        } else {
+            let root = (zeta * zeta - 1.0).sqrt();
+            let (l1, l2) = (-omega * (zeta - root), -omega * (zeta + root));
+            let a1 = (vh - l2 * qh) / (l1 - l2);
+            Free::Over {
+                a1,
+                a2: qh - a1,
+                l1,
+                l2,
+            }
+        };
+        Some(Response {
+            alpha,
+            beta,
+            w2,
+            free,
+        })
+    }
+
+    /// How far the free vibration ever takes the mode from the line.
+    fn free_size(&self, omega: f64) -> f64 {
+        match self.free {
+            Free::Under { amplitude } => amplitude,
+            // (A + B t) e^(-w t) is at most |A| + |B| / (e w); doubled for zeta near, not at, 1.
+            Free::Critical { a, b } => 2.0 * (a.abs() + b.abs() / (std::f64::consts::E * omega)),
+            Free::Over { a1, a2, .. } => a1.abs() + a2.abs(),
+        }
+    }
+
+    /// The bound on the mode's n-th time derivative (n = 2 or 4): the line has none, and each
+    /// derivative of the free vibration is at most |lambda| times the one before.
+    fn derivative(&self, omega: f64, n: i32) -> f64 {
+        debug_assert!(n == 2 || n == 4);
+        let w_n2 = if n == 4 { self.w2 } else { 1.0 };
+        let w_n = w_n2 * self.w2;
+        match self.free {
+            Free::Under { amplitude } => amplitude * w_n,
+            // Near critical damping the n-th derivative is within (|A| + |B| / (e w)) w^n +
+            // n |B| w^(n-1); the factor 2 covers the few per mille by which zeta may differ from
+            // 1 here.
+            Free::Critical { a, b } => {
+                2.0 * (a.abs() * w_n
+                    + b.abs() * omega * w_n2 * (f64::from(n) + std::f64::consts::E.recip()))
+            }
+            Free::Over { a1, a2, l1, l2 } => a1.abs() * l1.powi(n) + a2.abs() * l2.powi(n),
+        }
+    }
+}
+
 /// The envelope of one mode from its augmented state y = [q, q', g, g'] (none for a mode
 /// without stiffness).
 pub(crate) fn envelope(omega: f64, zeta: f64, y: &[f64; 4]) -> Option<Envelope> {
-    if omega <= 0.0 || !omega.is_finite() {
-        return None;
-    }
-    let w2 = omega * omega;
-    let beta = y[3] / w2;
-    let alpha = (y[2] - 2.0 * zeta * omega * beta) / w2;
-    let (qh, vh) = (y[0] - alpha, y[1] - beta);
-    let free = if zeta < 0.999 {
-        let wd = omega * (1.0 - zeta * zeta).sqrt();
-        let b = (vh + zeta * omega * qh) / wd;
-        (qh * qh + b * b).sqrt()
-    } else if zeta <= 1.001 {
-        // (A + B t) e^(-w t) is at most |A| + |B| / (e w); doubled for zeta near, not at, 1.
-        2.0 * (qh.abs() + (vh + omega * qh).abs() / (std::f64::consts::E * omega))
-    } else {
-        let root = (zeta * zeta - 1.0).sqrt();
-        let (l1, l2) = (-omega * (zeta - root), -omega * (zeta + root));
-        let a1 = (vh - l2 * qh) / (l1 - l2);
-        a1.abs() + (qh - a1).abs()
-    };
-    Some(Envelope { alpha, beta, free })
+    let r = Response::of(omega, zeta, y)?;
+    Some(Envelope {
+        alpha: r.alpha,
+        beta: r.beta,
+        free: r.free_size(omega),
+    })
 }
 
 /// The bounds on the fourth and fifth time derivatives of one mode's response over a stretch
@@ -91,63 +167,15 @@ pub(crate) fn derivative_bounds(omega: f64, zeta: f64, y: &[f64; 4]) -> (f64, f6
 }
 
 /// The bound on the second time derivative of one mode's response over a stretch where its
-/// forcing is linear, from the augmented state y = [q, q', g, g'] at its start: the particular
-/// line has none, the free vibration's is at most |lambda|^2 times its amplitude (as
-/// [`fourth_derivative`] takes the fourth).
+/// forcing is linear, from the augmented state y = [q, q', g, g'] at its start.
 pub(crate) fn second_derivative(omega: f64, zeta: f64, y: &[f64; 4]) -> f64 {
-    if omega <= 0.0 || !omega.is_finite() {
-        return f64::INFINITY;
-    }
-    let w2 = omega * omega;
-    let beta = y[3] / w2;
-    let alpha = (y[2] - 2.0 * zeta * omega * beta) / w2;
-    let (qh, vh) = (y[0] - alpha, y[1] - beta);
-    if zeta < 0.999 {
-        let wd = omega * (1.0 - zeta * zeta).sqrt();
-        let b = (vh + zeta * omega * qh) / wd;
-        (qh * qh + b * b).sqrt() * w2
-    } else if zeta <= 1.001 {
-        // (|A| + |B| / (e w)) w^2 + 2 |B| w, doubled as for the fourth.
-        let b = vh + omega * qh;
-        2.0 * (qh.abs() * w2 + b.abs() * omega * (2.0 + std::f64::consts::E.recip()))
-    } else {
-        let root = (zeta * zeta - 1.0).sqrt();
-        let (l1, l2) = (-omega * (zeta - root), -omega * (zeta + root));
-        let a1 = (vh - l2 * qh) / (l1 - l2);
-        let a2 = qh - a1;
-        a1.abs() * l1 * l1 + a2.abs() * l2 * l2
-    }
+    Response::of(omega, zeta, y).map_or(f64::INFINITY, |r| r.derivative(omega, 2))
 }
 
 /// The bound on the fourth time derivative of one mode's response over a stretch where its
 /// forcing is linear, from the augmented state y = [q, q', g, g'] at the stretch's start.
 pub(crate) fn fourth_derivative(omega: f64, zeta: f64, y: &[f64; 4]) -> f64 {
-    if omega <= 0.0 || !omega.is_finite() {
-        return f64::INFINITY;
-    }
-    let w2 = omega * omega;
-    // The particular response to g + g' s is alpha + beta s.
-    let beta = y[3] / w2;
-    let alpha = (y[2] - 2.0 * zeta * omega * beta) / w2;
-    let (qh, vh) = (y[0] - alpha, y[1] - beta);
-    let w4 = w2 * w2;
-    if zeta < 0.999 {
-        let wd = omega * (1.0 - zeta * zeta).sqrt();
-        let b = (vh + zeta * omega * qh) / wd;
-        (qh * qh + b * b).sqrt() * w4
-    } else if zeta <= 1.001 {
-        // Near critical damping, (A + B t) e^(-w t) bounds it: the n-th derivative is within
-        // (|A| + |B| / (e w)) w^n + n |B| w^(n-1); the factor 2 covers the few per mille by which
-        // zeta may differ from 1 here.
-        let b = vh + omega * qh;
-        2.0 * (qh.abs() * w4 + b.abs() * omega * w2 * (4.0 + std::f64::consts::E.recip()))
-    } else {
-        let root = (zeta * zeta - 1.0).sqrt();
-        let (l1, l2) = (-omega * (zeta - root), -omega * (zeta + root));
-        let a1 = (vh - l2 * qh) / (l1 - l2);
-        let a2 = qh - a1;
-        a1.abs() * l1.powi(4) + a2.abs() * l2.powi(4)
-    }
+    Response::of(omega, zeta, y).map_or(f64::INFINITY, |r| r.derivative(omega, 4))
 }
 
 /// The cubic through (0, y0) and (l, y1) with slopes v0 and v1: its largest value over [0, l],

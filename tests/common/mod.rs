@@ -7,9 +7,12 @@ use pounding::model::scenario::ImpactScenario;
 
 /// The `pounding` binary run with `args`.
 pub fn pounding(args: &[&str]) -> std::process::Output {
-    let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_pounding"));
-    command.args(args);
-    let saved = with_own_saved_session(&mut command);
+    output_in_own_session(std::process::Command::new(env!("CARGO_BIN_EXE_pounding")).args(args))
+}
+
+/// Runs a command with its own place for the window's saved session, removed after.
+pub fn output_in_own_session(command: &mut std::process::Command) -> std::process::Output {
+    let saved = with_own_saved_session(command);
     let o = command.output().expect("the binary runs");
     std::fs::remove_dir_all(saved).ok();
     o
@@ -18,7 +21,7 @@ pub fn pounding(args: &[&str]) -> std::process::Output {
 /// Gives a command its own, empty, place for the window's saved session (returned, for
 /// removing): a window the tests open neither starts from the machine user's last session (a
 /// 100-storey scene made every window test wait for its run) nor leaves its own there.
-pub fn with_own_saved_session(command: &mut std::process::Command) -> std::path::PathBuf {
+fn with_own_saved_session(command: &mut std::process::Command) -> std::path::PathBuf {
     static NEXT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
     let k = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     let dir =

@@ -79,14 +79,13 @@ impl Stepper<'_> {
             .contact_scratch
             .take()
             .expect("the scratch is home between stages");
-        // Straight after a contact step (Newmark's steps go on until a free step), the loads are
-        // the ones it committed, already summed.
         if self.newmark {
+            // Straight after a contact step (Newmark's steps go on until a free step), the loads
+            // are the ones it committed, already summed.
             std::mem::swap(&mut cs.load_now, &mut cs.trial.load);
         } else {
+            // A contact phase starts.
             self.contact_loads(&mut cs.load_now);
-        }
-        if !self.newmark {
             self.start_contact_proofs();
             self.equilibrium_accelerations(&cs.load_now);
             self.newmark = true;

@@ -13,10 +13,6 @@ fn weighted(r: &[f64], m: &[f64]) -> f64 {
     r.iter().zip(m).map(|(r, m)| r.abs() * m).sum()
 }
 
-/// Modes from which a side's signals are tested, at a stretch's start, on where they are (see
-/// [`Stepper::prepare`]).
-const TALL: usize = 16;
-
 /// A part this short (in grid steps) is walked rather than halved again.
 const WALK_SPAN: usize = 8;
 

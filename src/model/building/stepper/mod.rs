@@ -288,6 +288,12 @@ fn dotv(a: &[f64], b: &[f64]) -> f64 {
     a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
 
+/// Modes from which a side is a tall building: its free stretches' bounds come from tables
+/// and its signals and points are tested on where they are ([`weights`]), and its contact
+/// proofs read a signal's rate alone where the bound on its kick fails. Below, a few modes' sums
+/// are close to what they bound and cheaper taken one by one.
+const TALL: usize = 16;
+
 /// The first fine step after an onset is split into steps of 1/2^G, 1/2^G, 1/2^(G-1), ... 1/2 of
 /// it.
 const ONSET_GRADING: u32 = 8;

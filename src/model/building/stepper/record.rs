@@ -495,7 +495,7 @@ impl Stepper<'_> {
     /// signal was last read: its distance from zero.
     fn rate_keeps_sign(&self, i: usize, side: usize) -> Option<f64> {
         let coef = &self.signals[i].coef;
-        if coef.len() < LANES_FROM {
+        if coef.len() < TALL {
             return None;
         }
         let then = self.peaks.last(i).1;

@@ -7,9 +7,9 @@
 //! mode's term to every row: the same sums in the same order (bit for bit), vectorised across
 //! the rows.
 
-use super::{Point, Signal};
+use super::{Point, Signal, TALL};
 
-/// The tables of a run: each side's points and followed signals.
+/// The tables of a run: each tall side's points and followed signals.
 pub(super) struct BoundRows {
     pub points: [AbsRows; 2],
     pub signals: [AbsRows; 2],
@@ -28,9 +28,13 @@ impl BoundRows {
                 count[s] += 1;
             }
         }
+        // Only a tall side reads its tables; a few modes' side has none.
+        let rows_of = |s: usize, rows: Vec<&[f64]>| {
+            AbsRows::new(modes[s], if modes[s] >= TALL { rows } else { vec![] })
+        };
         BoundRows {
             points: std::array::from_fn(|s| {
-                AbsRows::new(modes[s], points.iter().map(|p| p.r[s].as_slice()))
+                rows_of(s, points.iter().map(|p| p.r[s].as_slice()).collect())
             }),
             signals: std::array::from_fn(|s| {
                 let rows = signals
@@ -39,7 +43,7 @@ impl BoundRows {
                     .map(|sig| sig.side_and_coefficients())
                     .filter(|&(side, _)| side == s)
                     .map(|(_, c)| c);
-                AbsRows::new(modes[s], rows)
+                rows_of(s, rows.collect())
             }),
             row_of,
         }
@@ -55,8 +59,7 @@ pub(super) struct AbsRows {
 
 impl AbsRows {
     /// The table of the given rows, each the coefficients of one row over the side's `modes`.
-    pub(super) fn new<'a>(modes: usize, rows: impl Iterator<Item = &'a [f64]>) -> Self {
-        let rows: Vec<&[f64]> = rows.collect();
+    pub(super) fn new(modes: usize, rows: Vec<&[f64]>) -> Self {
         let n = rows.len();
         let mut abs = vec![0.0; modes * n];
         for (j, row) in rows.iter().enumerate() {
@@ -113,7 +116,7 @@ mod tests {
                 .collect();
             let m: [Vec<f64>; 4] =
                 std::array::from_fn(|_| (0..modes).map(|_| next().abs()).collect());
-            let table = AbsRows::new(modes, rows.iter().map(|r| r.as_slice()));
+            let table = AbsRows::new(modes, rows.iter().map(|r| r.as_slice()).collect());
             let mut out = [vec![], vec![], vec![], vec![]];
             table.weigh([&m[0], &m[1], &m[2], &m[3]], &mut out);
             for (j, row) in rows.iter().enumerate() {
