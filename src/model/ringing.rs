@@ -43,15 +43,17 @@ impl Frozen {
     /// Q at indices n + 1 - len ..= n + `extra`, in one buffer: the window, then `extra` zeros
     /// for the steps a tabulation takes (before index 0 the history is zero).
     pub fn buffer(&self, extra: usize) -> Vec<f64> {
-        let len = self.q.len();
-        let base = self.n as isize + 1 - len as isize;
-        let mut buf = vec![0.0; len + extra];
-        for (k, (b, &v)) in buf.iter_mut().zip(&self.q).enumerate() {
-            if base + k as isize >= 0 {
-                *b = v;
-            }
-        }
+        let mut buf = vec![0.0; self.q.len() + extra];
+        self.fill(&mut buf[..self.q.len()]);
         buf
+    }
+
+    /// The window into `out` (as long as it): Q at indices n + 1 - len ..= n, zero before 0.
+    pub fn fill(&self, out: &mut [f64]) {
+        let base = self.n as isize + 1 - self.q.len() as isize;
+        for (k, (b, &v)) in out.iter_mut().zip(&self.q).enumerate() {
+            *b = if base + k as isize >= 0 { v } else { 0.0 };
+        }
     }
 }
 
@@ -61,17 +63,6 @@ impl Frozen {
 pub(crate) fn read_four(buf: &[f64], at: usize, (back, w): (usize, [f64; 4])) -> f64 {
     let s = &buf[at - back..at - back + 4];
     (w[0] * s[0] + w[1] * s[1]) + (w[2] * s[2] + w[3] * s[3])
-}
-
-/// [`read_four`] where the caller has shown `back` within 3 ..= `at` and `at` within the buffer:
-/// the four samples from `at - back` to at most `at` are then inside it, and read unchecked.
-#[inline]
-pub(crate) fn read_four_within(buf: &[f64], at: usize, (back, w): (usize, [f64; 4])) -> f64 {
-    debug_assert!((3..=at).contains(&back) && at < buf.len());
-    // SAFETY: back <= at keeps the first index at or above zero, and back >= 3 keeps the last,
-    // at - back + 3, at or below at, which is inside the buffer.
-    let s = |k: usize| unsafe { *buf.get_unchecked(at - back + k) };
-    (w[0] * s(0) + w[1] * s(1)) + (w[2] * s(2) + w[3] * s(3))
 }
 
 /// Cubic Lagrange interpolation in a window whose last sample has index `last`, at the fractional

@@ -35,7 +35,7 @@ use super::Slab;
 use crate::model::field::{BarBody, BarWaves};
 use crate::model::history::Tap;
 use crate::model::ring::{Look, Ring};
-use crate::model::ringing::{Frozen, Ringing, read_four, read_four_within};
+use crate::model::ringing::{Frozen, Ringing};
 
 /// The slab's state frozen when it fell quiet: its last samples, from which every later instant
 /// is read until the next contact.
@@ -87,7 +87,19 @@ pub struct SlabWaves {
     spare: Quiet,
     /// The forces kept for drawing the waves.
     forces: KeptForces,
+    /// The buffers of the last tabulation of its ringing, kept for the next.
+    tabulation: std::cell::RefCell<Tabulation>,
     geometry: BarBody,
+}
+
+/// What a tabulation of the ringing works in: Q over the window and two round trips after it,
+/// and A, B and e at each point of those.
+#[derive(Debug, Clone, Default)]
+struct Tabulation {
+    q: Vec<f64>,
+    a: Vec<f64>,
+    b: Vec<f64>,
+    e: Vec<f64>,
 }
 
 /// A saved state to return to after one trial step.
@@ -174,6 +186,7 @@ impl SlabWaves {
             }),
             spare: Quiet::default(),
             forces: KeptForces::new(share),
+            tabulation: Default::default(),
             geometry: BarBody {
                 length_m: slab.length_m,
                 area_m2: slab.area_m2(),
@@ -310,56 +323,119 @@ impl SlabWaves {
     /// the second: from the second on, e(t + T) = r e(t). The grid recursion is stepped on with
     /// zero force from the quiet window (a copy of its samples), the cheapest way to every grid
     /// point of two round trips.
+    ///
+    /// In stages, each the same arithmetic as stepping would do, in the same order (so bit for
+    /// bit the values stepping finds), laid out so that the compiler can put the stages in
+    /// vector lanes: A and B (a scalar recursion of their own), then Q block by block (the
+    /// recursion reads a round trip back, so a block shorter than that reads only blocks done),
+    /// then e at every point from the finished Q, then its largest |value|.
     fn tabulate_envelope(&self, q: &Quiet) -> [f64; 2] {
+        let steps = self.ringing.tabulated_steps();
+        let len = q.w.q.len();
         let looks = [
             self.recur.stored_four(),
             self.near.stored_four(),
             self.far.stored_four(),
         ];
         // Every look-up reads four samples from `back` before the one being made, at most that
-        // one: within the buffer from its first sample to the newest, which the loop's reads
-        // are then left unchecked for (the checks were a third of its work).
-        if looks
-            .iter()
-            .all(|(back, _)| (3..=q.w.q.len()).contains(back))
-        {
-            self.tabulate_reading(q, looks, read_four_within)
-        } else {
-            self.tabulate_reading(q, looks, read_four)
+        // one, so they stay within the buffer from its first sample on.
+        debug_assert!(looks.iter().all(|(back, _)| (3..=len).contains(back)));
+        let mut guard = self.tabulation.borrow_mut();
+        let t = &mut *guard;
+        // The buffers keep their length from one window to the next, and every entry read is
+        // written first: none is cleared.
+        for v in [&mut t.a, &mut t.b, &mut t.e] {
+            v.resize(2 * steps, 0.0);
+        }
+        t.q.resize(len + 2 * steps, 0.0);
+        q.w.fill(&mut t.q[..len]);
+        self.quiet_ab(q, &mut t.a, &mut t.b);
+        self.tabulate_q(&mut t.q, len, &t.a, looks[0]);
+        self.tabulate_elastic(&t.q, len, &t.b, [looks[1], looks[2]], &mut t.e);
+        let e = &t.e;
+        let most = |e: &[f64]| {
+            // Two partial maxima: the largest of a set is the same whatever the order.
+            let mut m = [0.0f64; 2];
+            let pairs = e.chunks_exact(2);
+            let rest = pairs.remainder();
+            for p in pairs {
+                m[0] = m[0].max(p[0].abs());
+                m[1] = m[1].max(p[1].abs());
+            }
+            rest.iter().fold(m[0].max(m[1]), |m, x| m.max(x.abs()))
+        };
+        [most(&e[..steps]), most(&e[steps..])]
+    }
+
+    /// A and B at each grid point after the slab fell quiet (as many as `out_a` holds), stepped
+    /// with zero force.
+    fn quiet_ab(&self, q: &Quiet, out_a: &mut [f64], out_b: &mut [f64]) {
+        let (e, h) = (self.ringing.step_decay, self.ringing.h);
+        let (mut a, mut b) = (q.w.a, q.w.b);
+        for (out_a, out_b) in out_a.iter_mut().zip(out_b) {
+            let a1 = e * a;
+            b = e * b + 0.5 * h * (e * a + a1);
+            a = a1;
+            *out_a = a;
+            *out_b = b;
         }
     }
 
-    /// [`SlabWaves::tabulate_envelope`] with the look-ups `[recur, near, far]` read by `read`.
-    #[inline(always)]
-    fn tabulate_reading(
-        &self,
-        q: &Quiet,
-        [recur, near, far]: [(usize, [f64; 4]); 3],
-        read: impl Fn(&[f64], usize, (usize, [f64; 4])) -> f64,
-    ) -> [f64; 2] {
-        let steps = self.ringing.tabulated_steps();
-        let len = q.w.q.len();
-        let mut buf = q.w.buffer(2 * steps);
-        let (e, h) = (self.ringing.step_decay, self.ringing.h);
-        let gain = 1.0 / (1.0 - self.ringing.round_decay * self.recur.newest);
-        let top = self.near_weight * self.near.newest + self.far_weight * self.far.newest;
-        let (mut a, mut b) = (q.w.a, q.w.b);
-        let mut most = [0.0f64; 2];
-        for (k, most) in most.iter_mut().enumerate() {
-            for i in k * steps..(k + 1) * steps {
-                let at = len + i;
-                let a1 = e * a;
-                b = e * b + 0.5 * h * (e * a + a1);
-                a = a1;
-                let q1 = (a1 + self.ringing.round_decay * read(&buf, at, recur)) * gain;
-                let near_far =
-                    self.near_weight * read(&buf, at, near) + self.far_weight * read(&buf, at, far);
-                let elastic = self.inv_z * (near_far + top * q1) - self.inv_m * b;
-                buf[at] = q1;
-                *most = most.max(elastic.abs());
+    /// Q after the window (`buf[len..]`) from A there, by the recursion Q = (A + r Q(t - T))
+    /// gain, whose look-up (`back`, weights) reads `back` samples back.
+    fn tabulate_q(&self, buf: &mut [f64], len: usize, a: &[f64], (back, w): (usize, [f64; 4])) {
+        let (round, gain) = (self.ringing.round_decay, self.gain);
+        let total = buf.len();
+        if back < 4 {
+            // A round trip within a step: the look-up's last weight is zero, on the point being
+            // made (still zero when stepping reads it).
+            for at in len..total {
+                let s = &buf[at - back..at];
+                let read = (w[0] * s[0] + w[1] * s[1]) + (w[2] * s[2] + w[3] * 0.0);
+                buf[at] = (a[at - len] + round * read) * gain;
             }
+            return;
         }
-        most
+        // A block of back - 3 points reads only points before it.
+        let block = back - 3;
+        let mut at = len;
+        while at < total {
+            let end = (at + block).min(total);
+            let (done, todo) = buf.split_at_mut(at);
+            let todo = &mut todo[..end - at];
+            let src = &done[at - back..at - back + todo.len() + 3];
+            let a = &a[at - len..end - len];
+            for k in 0..todo.len() {
+                let s = &src[k..k + 4];
+                let read = (w[0] * s[0] + w[1] * s[1]) + (w[2] * s[2] + w[3] * s[3]);
+                todo[k] = (a[k] + round * read) * gain;
+            }
+            at = end;
+        }
+    }
+
+    /// e at each point after the window, from the finished Q and B there: the plane's two
+    /// look-ups, the newest Q's share of them and the rigid part.
+    fn tabulate_elastic(
+        &self,
+        buf: &[f64],
+        len: usize,
+        b: &[f64],
+        [near, far]: [(usize, [f64; 4]); 2],
+        out: &mut [f64],
+    ) {
+        let (top, n) = (self.top, out.len());
+        let near_src = &buf[len - near.0..len - near.0 + n + 3];
+        let far_src = &buf[len - far.0..len - far.0 + n + 3];
+        let newest = &buf[len..len + n];
+        let b = &b[..n];
+        let four =
+            |s: &[f64], w: [f64; 4]| (w[0] * s[0] + w[1] * s[1]) + (w[2] * s[2] + w[3] * s[3]);
+        for k in 0..n {
+            let near_far = self.near_weight * four(&near_src[k..k + 4], near.1)
+                + self.far_weight * four(&far_src[k..k + 4], far.1);
+            out[k] = self.inv_z * (near_far + top * newest[k]) - self.inv_m * b[k];
+        }
     }
 
     /// Falls quiet once the force has stopped: from then on its ringing is read in closed form.
