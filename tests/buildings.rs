@@ -433,6 +433,40 @@ fn a_light_floor_in_contact_for_seconds_keeps_histories_set_by_the_record_not_by
 }
 
 #[test]
+fn between_contacts_the_histories_keep_a_sample_at_the_end_of_every_free_step() {
+    // A free stretch spans a whole sample of the record, and the free steps inside it only space
+    // the samples a plot or a CSV draws: each of their ends outside a contact is one.
+    let m = record();
+    for model in [
+        ContactModel::Sears,
+        ContactModel::Linear,
+        ContactModel::None,
+    ] {
+        let sc = BuildingScenario {
+            contact: model,
+            ..BuildingScenario::paper()
+        };
+        let r = run(&sc, &m);
+        let (free, fine) = (r.stats.coarse_step_s, r.stats.fine_step_s);
+        assert!(free < m.dt_s, "{model:?}: a free step of {free} s");
+        let steps = (m.duration_s() / free).round() as usize;
+        let mut missing = vec![];
+        for k in 1..=steps {
+            let t = k as f64 * free;
+            let in_contact = r
+                .contacts
+                .iter()
+                .any(|c| t >= c.start_s - 2.0 * fine && t <= c.end_s + 2.0 * fine);
+            let sampled = r.time_s.iter().any(|&s| (s - t).abs() <= 1e-9 * t);
+            if !in_contact && !sampled {
+                missing.push(t);
+            }
+        }
+        assert!(missing.is_empty(), "{model:?}: no sample at {missing:?}");
+    }
+}
+
+#[test]
 fn the_slabs_memory_never_coarsens_the_step_of_a_tall_pair() {
     // The paper's buildings with 100 storeys a side meet at 100 levels: 200 Sears slabs. Kept at
     // every step of 8 s, their forces would take about 0.9 GB; the drawing of their waves keeps

@@ -132,6 +132,7 @@ fn plan(
         .clamp(1.0, MAX_FREE_STEP as f64) as usize;
     let h = dt / (free_per_sample * per_free_step) as f64;
     let total = ((duration / h) - 1e-9).ceil().max(0.0) as usize;
+    let per_stretch = stretch_steps(sc, modes, free_per_sample, per_free_step);
     // A free stretch is checked every 1.2 / w_max at most: between two checks the cubic through
     // them is then within (1.2^4 / 384) of the motion's amplitude (a part in 180), so that a
     // check clears all but the parts that come close to the gap or to a peak, and those are
@@ -142,7 +143,7 @@ fn plan(
         .iter()
         .flat_map(|m| m.omega_rad_s.iter())
         .fold(0.0f64, |a, &w| a.max(w));
-    let check = ((1.2 / w_max / h).floor() as usize).clamp(1, per_free_step);
+    let check = ((1.2 / w_max / h).floor() as usize).clamp(1, per_stretch);
     // Where storeys yield, a piece of free motion takes the correction linear in time: its error
     // goes as (w dt)^2 (and the energy ledger's gap with it), so a piece is held to
     // w_max dt <= 0.3 sqrt(tolerance) (a balance within 1e-7 on the paper's pair), and refines
@@ -155,6 +156,7 @@ fn plan(
         Grid {
             h,
             per_free_step,
+            per_stretch,
             total,
             check,
             yield_piece,
@@ -166,6 +168,30 @@ fn plan(
         },
         warning,
     )
+}
+
+/// The most exact maps a side keeps for the steps inside a free stretch (modes x fine steps):
+/// 64 bytes each, 16 MiB a side.
+const STRETCH_MAPS: usize = 1 << 18;
+
+/// Fine steps a free stretch spans at most: a whole sample of the record, over which the ground
+/// is linear and one exact map takes the motion anywhere (the free steps inside it only space
+/// the histories' samples), so that a stretch is prepared and checked once a sample, not once a
+/// free step. Where storeys yield (their pieces are planned free step by free step), or where a
+/// side's maps over a sample would outgrow [`STRETCH_MAPS`], a stretch is a free step.
+fn stretch_steps(
+    sc: &BuildingScenario,
+    modes: &[super::modal::Modes; 2],
+    free_per_sample: usize,
+    per_free_step: usize,
+) -> usize {
+    let per_sample = free_per_sample * per_free_step;
+    let most_modes = modes.iter().map(|m| m.count()).max().unwrap_or(0);
+    if sc.left.yields() || sc.right.yields() || most_modes * per_sample > STRETCH_MAPS {
+        per_free_step
+    } else {
+        per_sample
+    }
 }
 
 /// The most forces each of `slabs` slabs keeps for drawing its waves.

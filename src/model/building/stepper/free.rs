@@ -67,7 +67,7 @@ impl Stepper<'_> {
         for s in 0..2 {
             let side = &mut self.sides[s];
             if let Some(j) = j
-                && j < self.grid.per_free_step
+                && j < self.grid.per_stretch
                 && side.part[j].is_none()
             {
                 side.part[j] = Some(
@@ -78,7 +78,7 @@ impl Stepper<'_> {
             }
             for k in 0..side.modes() {
                 let ints = match j {
-                    Some(j) if j == self.grid.per_free_step => side.full[k],
+                    Some(j) if j == self.grid.per_stretch => side.full[k],
                     Some(j) => side.part[j].as_ref().expect("just made")[k],
                     None => step_integrals(side.omega[k], side.zeta[k], len),
                 };
@@ -119,15 +119,15 @@ impl Stepper<'_> {
         }
     }
 
-    /// One free stretch from a grid point to the next sample of the record (or the longest free
-    /// step). Its parts are checked against the bounds; a part a bound cannot clear is halved
+    /// One free stretch from a grid point to the next sample of the record (or the next free
+    /// step's end, where a stretch is a free step: [`Grid::per_stretch`]). Its parts are checked against the bounds; a part a bound cannot clear is halved
     /// until what is left near an onset or a peak is walked grid point by grid point.
     pub(super) fn free_step(&mut self) -> Result<Free, SolveError> {
         self.newmark = false;
         let g = self.grid;
         // To the next free-step boundary (record samples are boundaries too); one fine step
         // where storeys yield (their corrections are planned step by step).
-        let len = (g.per_free_step - self.n % g.per_free_step).min(g.total - self.n);
+        let len = (g.per_stretch - self.n % g.per_stretch).min(g.total - self.n);
         let len = if self.single_step {
             len.min(self.grid.yield_piece)
         } else {
@@ -148,13 +148,23 @@ impl Stepper<'_> {
             };
             match self.refine(&mut w, 0, part, t0) {
                 Ok(None) => {}
-                other => {
+                Ok(Some(onset)) => {
+                    // The stretch is taken up to the grid point before the onset's step: its
+                    // samples before there first.
+                    if let Free::Onset { j, .. } = onset {
+                        self.record_inside(&mut w, j - 1);
+                    }
                     self.scratch = Some(w);
-                    return other.map(|o| o.expect("an onset"));
+                    return Ok(onset);
+                }
+                Err(e) => {
+                    self.scratch = Some(w);
+                    return Err(e);
                 }
             }
             a = part.b;
         }
+        self.record_inside(&mut w, len);
         // Every check ends by working out the states at its part's end (its halves and its walk
         // end there too): `w` holds the stretch's end.
         {
@@ -170,6 +180,41 @@ impl Stepper<'_> {
         self.n += len;
         self.record_free();
         Ok(Free::Done)
+    }
+
+    /// The histories' samples a free step apart inside a stretch of `len` fine steps from now
+    /// (its end is recorded once the stretch is taken): the exact states there, from its start.
+    fn record_inside(&mut self, w: &mut Scratch, len: usize) {
+        let every = self.grid.per_free_step;
+        if !self.histories || every >= self.grid.per_stretch {
+            return;
+        }
+        let n0 = self.n;
+        let mut j = every - n0 % every;
+        while j < len {
+            let [q, v] = &mut w.inside;
+            for s in 0..2 {
+                let n = self.sides[s].modes();
+                q[s].resize(n, 0.0);
+                v[s].resize(n, 0.0);
+            }
+            self.states_at(&w.y0, j, q, v);
+            // The sample reads the sides' states at the step's time: the stretch's own are put
+            // back after it.
+            self.swap_states(&mut w.inside);
+            self.n = n0 + j;
+            self.record_now();
+            self.n = n0;
+            self.swap_states(&mut w.inside);
+            j += every;
+        }
+    }
+
+    fn swap_states(&mut self, [q, v]: &mut [[Vec<f64>; 2]; 2]) {
+        for s in 0..2 {
+            std::mem::swap(&mut self.sides[s].q, &mut q[s]);
+            std::mem::swap(&mut self.sides[s].v, &mut v[s]);
+        }
     }
 
     /// Checks a part at depth `d` of the halving (for what its parent left open): clears it,

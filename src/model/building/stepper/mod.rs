@@ -52,8 +52,12 @@ use crate::model::root::bracket;
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Grid {
     pub h: f64,
-    /// Fine steps per free step at most (a free step divides the record's step).
+    /// Fine steps per free step at most (a free step divides the record's step): the spacing of
+    /// the histories' samples between contacts.
     pub per_free_step: usize,
+    /// Fine steps a free stretch spans at most: a whole number of free steps, within a sample
+    /// of the record.
+    pub per_stretch: usize,
     /// Fine steps over the record.
     pub total: usize,
     /// Fine steps between two checks of a free stretch at most.
@@ -70,7 +74,7 @@ pub(super) struct Grid {
 }
 
 impl Grid {
-    /// How many fine steps `len` is, where it is a whole number of them within a free step
+    /// How many fine steps `len` is, where it is a whole number of them within a free stretch
     /// (whose exact maps and integrals the run keeps); `None` for another length (up to an
     /// event inside a step).
     pub fn whole_steps(&self, len: f64) -> Option<usize> {
@@ -78,7 +82,7 @@ impl Grid {
         let whole = steps.round();
         ((steps - whole).abs() <= 1e-9 * steps.max(1.0))
             .then_some(whole as usize)
-            .filter(|j| (1..=self.per_free_step).contains(j))
+            .filter(|j| (1..=self.per_stretch).contains(j))
     }
 }
 
@@ -99,7 +103,7 @@ struct Side {
     a: Vec<f64>,
     /// `sub[j][k]`: mode k's exact step over (j + 1) h.
     sub: Vec<Vec<Propagator>>,
-    /// Integrals over a whole free step, per mode.
+    /// Integrals over a whole free stretch, per mode.
     full: Vec<StepIntegrals>,
     /// Integrals over j fine steps, per mode, computed when first needed.
     part: Vec<Option<Vec<StepIntegrals>>>,
@@ -117,19 +121,12 @@ impl Side {
         let n = modes.count();
         let h = grid.h;
         let powers: Vec<Vec<Propagator>> = (0..n)
-            .map(|k| {
-                step_powers(
-                    modes.omega_rad_s[k],
-                    modes.damping[k],
-                    h,
-                    grid.per_free_step,
-                )
-            })
+            .map(|k| step_powers(modes.omega_rad_s[k], modes.damping[k], h, grid.per_stretch))
             .collect();
-        let sub = (0..grid.per_free_step)
+        let sub = (0..grid.per_stretch)
             .map(|j| powers.iter().map(|p| p[j]).collect())
             .collect();
-        let free_len = grid.per_free_step as f64 * h;
+        let free_len = grid.per_stretch as f64 * h;
         Side {
             full: (0..n)
                 .map(|k| step_integrals(modes.omega_rad_s[k], modes.damping[k], free_len))
@@ -137,16 +134,9 @@ impl Side {
             k_hat: (0..n)
                 .map(|k| newmark_k_hat(modes.omega_rad_s[k], modes.damping[k], h))
                 .collect(),
-            part: vec![None; grid.per_free_step + 1],
+            part: vec![None; grid.per_stretch + 1],
             doublings: (0..n)
-                .map(|k| {
-                    doublings(
-                        modes.omega_rad_s[k],
-                        modes.damping[k],
-                        h,
-                        grid.per_free_step,
-                    )
-                })
+                .map(|k| doublings(modes.omega_rad_s[k], modes.damping[k], h, grid.per_stretch))
                 .collect(),
             omega: modes.omega_rad_s.clone(),
             zeta: modes.damping.clone(),
@@ -376,6 +366,8 @@ struct Scratch {
     depths: Vec<Depth>,
     /// The live slabs' states before the grid step being walked.
     marks: Vec<[Option<SlabMark>; 2]>,
+    /// Each side's modal displacements and velocities at a sample inside the stretch.
+    inside: [[Vec<f64>; 2]; 2],
 }
 
 /// What a part at one depth of a stretch's halving must still be looked into for, of what its
