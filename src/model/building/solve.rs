@@ -133,17 +133,20 @@ fn plan(
     let h = dt / (free_per_sample * per_free_step) as f64;
     let total = ((duration / h) - 1e-9).ceil().max(0.0) as usize;
     let per_stretch = stretch_steps(sc, modes, free_per_sample, per_free_step);
-    // A free stretch is checked every 1.2 / w_max at most: between two checks the cubic through
-    // them is then within (1.2^4 / 384) of the motion's amplitude (a part in 180), so that a
-    // check clears all but the parts that come close to the gap or to a peak, and those are
-    // halved. Checks every 0.3 / w_max (a part in 20 000) cleared more of each stretch but took
-    // more checks: 6.22e8 instructions for `pounding gaps` over 20 records (mdof-3-5) against
-    // 4.95e8 now, and the same at 0.6 and 5 / w_max; what a run finds is the same.
+    // A free stretch is checked every 2.4 / w_max at most: between two checks the cubic through
+    // them is then within (2.4^4 / 384) of the motion's amplitude (a part in 12), so that a check
+    // clears all but the parts that come close to the gap or to a peak, and those are halved.
+    // Checks every 0.3 / w_max (a part in 20 000) cleared more of each stretch but took more
+    // checks: 6.22e8 instructions for `pounding gaps` over 20 records (mdof-3-5) against 4.95e8
+    // at 1.2 / w_max, when a stretch was a free step. Over a whole sample of the record, 2.4
+    // takes mdof-3-5's command from 3.117e8 to 3.071e8 and mdof-unequal's from 1.770e8 to
+    // 1.708e8 (0.6: 3.168e8; 5 and more as 2.4: its stretch is then one check); what a run finds
+    // is the same, bit for bit.
     let w_max = modes
         .iter()
         .flat_map(|m| m.omega_rad_s.iter())
         .fold(0.0f64, |a, &w| a.max(w));
-    let check = ((1.2 / w_max / h).floor() as usize).clamp(1, per_stretch);
+    let check = ((2.4 / w_max / h).floor() as usize).clamp(1, per_stretch);
     // Where storeys yield, a piece of free motion takes the correction linear in time: its error
     // goes as (w dt)^2 (and the energy ledger's gap with it), so a piece is held to
     // w_max dt <= 0.3 sqrt(tolerance) (a balance within 1e-7 on the paper's pair), and refines
