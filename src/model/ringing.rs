@@ -186,16 +186,38 @@ impl Ringing {
                     w.q[(k - first) as usize]
                 }
             };
-            while i <= run_end {
+            let generic = |i: usize| {
                 let s = i as f64 - shift;
                 let base = floor_of(s) as isize;
-                let v = if base <= last - 2 {
+                if base <= last - 2 {
                     (wt[0] * at(base - 1) + wt[1] * at(base))
                         + (wt[2] * at(base + 1) + wt[3] * at(base + 2))
                 } else {
                     window_at(&w.q, w.n, s)
-                };
-                ring.push(j * a + weight * v);
+                }
+            };
+            // Where the fraction is clear of a whole number, the stencil's base moves on by one
+            // a step (the rounding of i - shift cannot move its floor), and inside the window it
+            // reads four consecutive samples: the same sums without the per-sample tests.
+            let fraction = s0 - floor_of(s0);
+            let steady = fraction > 1e-6 && fraction < 1.0 - 1e-6;
+            while i <= run_end {
+                let base = floor_of(i as f64 - shift) as isize;
+                if steady && base - 1 >= first.max(0) && base <= last - 2 {
+                    // Up to the run's end or the window's last stencil, whichever comes first.
+                    let count = (run_end - i + 1).min((last - 2 - base) as usize + 1);
+                    let start = (base - 1 - first) as usize;
+                    let q = &w.q[start..start + count + 3];
+                    for k in 0..count {
+                        let v = (wt[0] * q[k] + wt[1] * q[k + 1])
+                            + (wt[2] * q[k + 2] + wt[3] * q[k + 3]);
+                        ring.push(j * a + weight * v);
+                        a *= self.step_decay;
+                    }
+                    i += count;
+                    continue;
+                }
+                ring.push(j * a + weight * generic(i));
                 i += 1;
                 a *= self.step_decay;
             }
