@@ -104,17 +104,8 @@ fn plan(
         .min(sc.max_step_s);
     let max_steps = refined_budget(sc.max_steps, refine);
     let floor = duration / (0.5 * max_steps as f64);
-    let mut warning = None;
-    let mut h = wanted;
-    if h < floor {
-        h = floor;
-        warning = Some(Warning::GridOverBudget {
-            scale_s: scale,
-            wanted_s: wanted,
-            used_s: floor,
-            max_steps: sc.max_steps,
-        });
-    }
+    let held = wanted < floor;
+    let h = wanted.max(floor);
     let slabs = if sc.contact == ContactModel::Sears {
         levels
             .iter()
@@ -124,13 +115,22 @@ fn plan(
         0
     };
     // Free steps divide the record's step, and fine steps the free step, so that every free
-    // step but the first after a contact has the same, precomputed, exact map.
-    let free_per_sample = ((dt / sc.max_step_s) * (1.0 - 1e-12)).ceil().max(1.0) as usize;
+    // step but the first after a contact has the same, precomputed, exact map. A free step
+    // spans MAX_FREE_STEP fine steps at most: where the fine step is shorter than that allows,
+    // the free steps are (a free step held to the longest one would coarsen the fine step).
+    let per_sample = |longest: f64| ((dt / longest) * (1.0 - 1e-12)).ceil().max(1.0) as usize;
+    let free_per_sample = per_sample(sc.max_step_s).max(per_sample(h * MAX_FREE_STEP as f64));
     let free = dt / free_per_sample as f64;
     let per_free_step = ((free / h) * (1.0 - 1e-12))
         .ceil()
         .clamp(1.0, MAX_FREE_STEP as f64) as usize;
     let h = dt / (free_per_sample * per_free_step) as f64;
+    let warning = held.then_some(Warning::GridOverBudget {
+        scale_s: scale,
+        wanted_s: wanted,
+        used_s: h,
+        max_steps: sc.max_steps,
+    });
     let total = ((duration / h) - 1e-9).ceil().max(0.0) as usize;
     let per_stretch = stretch_steps(sc, modes, free_per_sample, per_free_step);
     // A free stretch is checked every 2.4 / w_max at most: between two checks the cubic through
@@ -632,6 +632,28 @@ mod tests {
         }
         let m = crate::io::motion::load(&setup.motion).expect("record");
         (setup.scenario, m)
+    }
+
+    #[test]
+    fn a_step_held_to_the_budget_is_no_longer_than_the_budget_allows() {
+        // A 1 kg floor asks for a step of 1.4e-7 s; the budget of 20 million steps holds it to
+        // 8e-7 s over 8 s. That is 6 250 steps a free step of 5 ms, more than one free step may
+        // span: the free steps are shortened, not the fine step lengthened (it once was, to
+        // 1.22e-6 s, while the warning said 8e-7 s).
+        let mut sc = BuildingScenario::paper();
+        sc.left.masses_kg = vec![1.0];
+        let m = crate::io::motion::built_in("elcentro-1940")
+            .unwrap()
+            .truncated(8.0);
+        let run = planned(&sc, &m, 1).unwrap();
+        let floor = m.duration_s() / (0.5 * sc.max_steps as f64);
+        assert!(run.grid.h <= floor, "{} s against {floor} s", run.grid.h);
+        assert!(run.grid.h > 0.999 * floor, "{} s", run.grid.h);
+        assert!(run.grid.per_free_step <= MAX_FREE_STEP);
+        match run.warning {
+            Some(Warning::GridOverBudget { used_s, .. }) => assert_eq!(used_s, run.grid.h),
+            other => panic!("{other:?}"),
+        }
     }
 
     #[test]
