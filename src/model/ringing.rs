@@ -203,7 +203,7 @@ impl Ringing {
             let steady = fraction > 1e-6 && fraction < 1.0 - 1e-6;
             while i <= run_end {
                 let base = floor_of(i as f64 - shift) as isize;
-                if steady && base - 1 >= first.max(0) && base <= last - 2 {
+                if steady && base > first.max(0) && base <= last - 2 {
                     // Up to the run's end or the window's last stencil, whichever comes first.
                     let count = (run_end - i + 1).min((last - 2 - base) as usize + 1);
                     let start = (base - 1 - first) as usize;
