@@ -111,7 +111,7 @@ impl Stepper<'_> {
         v: &mut [Vec<f64>; 2],
     ) {
         for s in 0..2 {
-            for (k, p) in self.sides[s].sub[j - 1].iter().enumerate() {
+            for (k, p) in self.sides[s].maps(j).iter().enumerate() {
                 let (qk, vk) = p.apply(&y0[s][k]);
                 q[s][k] = qk;
                 v[s][k] = vk;

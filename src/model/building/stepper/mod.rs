@@ -101,8 +101,8 @@ struct Side {
     v: Vec<f64>,
     /// Modal accelerations, kept inside contacts (Newmark).
     a: Vec<f64>,
-    /// `sub[j][k]`: mode k's exact step over (j + 1) h.
-    sub: Vec<Vec<Propagator>>,
+    /// `sub[j n + k]`: mode k's exact step over (j + 1) h ([`Side::maps`]).
+    sub: Vec<Propagator>,
     /// Integrals over a whole free stretch, per mode.
     full: Vec<StepIntegrals>,
     /// Integrals over j fine steps, per mode, computed when first needed.
@@ -123,9 +123,11 @@ impl Side {
         let powers: Vec<Vec<Propagator>> = (0..n)
             .map(|k| step_powers(modes.omega_rad_s[k], modes.damping[k], h, grid.per_stretch))
             .collect();
-        let sub = (0..grid.per_stretch)
-            .map(|j| powers.iter().map(|p| p[j]).collect())
-            .collect();
+        // One block of the modes' maps per number of steps, in one allocation.
+        let mut sub = Vec::with_capacity(grid.per_stretch * n);
+        for j in 0..grid.per_stretch {
+            sub.extend(powers.iter().map(|p| p[j]));
+        }
         let free_len = grid.per_stretch as f64 * h;
         Side {
             full: (0..n)
@@ -156,6 +158,12 @@ impl Side {
 
     fn modes(&self) -> usize {
         self.omega.len()
+    }
+
+    /// Every mode's exact step over j fine steps (1 <= j <= the stretch's steps).
+    fn maps(&self, j: usize) -> &[Propagator] {
+        let n = self.modes();
+        &self.sub[(j - 1) * n..j * n]
     }
 
     fn energy(&self) -> f64 {

@@ -13,14 +13,16 @@ impl Stepper<'_> {
             // Exactly to the grid point before.
             let y0 = [self.initial(0, t0), self.initial(1, t0)];
             let q: [Vec<f64>; 2] = std::array::from_fn(|s| {
-                self.sides[s].sub[j - 2]
+                self.sides[s]
+                    .maps(j - 1)
                     .iter()
                     .zip(&y0[s])
                     .map(|(p, y)| p.apply(y).0)
                     .collect()
             });
             let v: [Vec<f64>; 2] = std::array::from_fn(|s| {
-                self.sides[s].sub[j - 2]
+                self.sides[s]
+                    .maps(j - 1)
                     .iter()
                     .zip(&y0[s])
                     .map(|(p, y)| p.apply(y).1)

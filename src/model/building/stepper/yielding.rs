@@ -384,7 +384,7 @@ impl Stepper<'_> {
     /// them within a free step (the maps the run made once).
     fn grid_maps(&self, s: usize, len: f64) -> Option<&[Propagator]> {
         let j = self.grid.whole_steps(len)?;
-        self.sides[s].sub.get(j - 1).map(Vec::as_slice)
+        Some(self.sides[s].maps(j))
     }
 
     /// Plans a free step of length `len` from now: each side's corrections at its end, by the
