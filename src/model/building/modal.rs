@@ -454,19 +454,32 @@ pub(crate) fn integrals_over(
 /// for bit, at half its work.
 pub(crate) fn step_powers(omega: f64, zeta: f64, h: f64, count: usize) -> Vec<Propagator> {
     let first = full_map(omega, zeta, h);
-    let mut current = [first[0], first[1]];
+    let mut current = Propagator {
+        q: first[0],
+        v: first[1],
+    };
     let mut out = Vec::with_capacity(count);
     for j in 0..count {
         if j > 0 {
-            current = current
-                .map(|row| std::array::from_fn(|c| (0..4).map(|k| row[k] * first[k][c]).sum()));
+            current = current.then(&first);
         }
-        out.push(Propagator {
-            q: current[0],
-            v: current[1],
-        });
+        out.push(current);
     }
     out
+}
+
+impl Propagator {
+    /// This step followed by the one whose full map is `next` (the rows of q and q' only: see
+    /// [`step_powers`]).
+    #[inline]
+    pub(crate) fn then(&self, next: &[[f64; 4]; 4]) -> Propagator {
+        let times =
+            |row: [f64; 4]| std::array::from_fn(|c| (0..4).map(|k| row[k] * next[k][c]).sum());
+        Propagator {
+            q: times(self.q),
+            v: times(self.v),
+        }
+    }
 }
 
 /// The exact step's full 4 x 4 map in y = [q, q', g, g'].

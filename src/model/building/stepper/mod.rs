@@ -36,8 +36,8 @@ use yielding::Storeys;
 use super::elements::Element;
 use super::levels::Level;
 use super::modal::{
-    Modes, Propagator, StepIntegrals, doublings, integrals_over, propagator, step_integrals,
-    step_powers,
+    Modes, Propagator, StepIntegrals, doublings, full_map, integrals_over, propagator,
+    step_integrals,
 };
 use super::result::{BuildingEnergy, RawContact};
 use super::slab::{SlabMark, SlabWaves};
@@ -120,13 +120,25 @@ impl Side {
     fn new(modes: &Modes, heights: Vec<f64>, v0: f64, grid: &Grid) -> Self {
         let n = modes.count();
         let h = grid.h;
-        let powers: Vec<Vec<Propagator>> = (0..n)
-            .map(|k| step_powers(modes.omega_rad_s[k], modes.damping[k], h, grid.per_stretch))
+        // Every mode's exact steps over h, 2h, ... (each the one before times the first, as
+        // `step_powers` makes them), a block of the modes per number of steps, in one
+        // allocation.
+        let firsts: Vec<[[f64; 4]; 4]> = (0..n)
+            .map(|k| full_map(modes.omega_rad_s[k], modes.damping[k], h))
             .collect();
-        // One block of the modes' maps per number of steps, in one allocation.
-        let mut sub = Vec::with_capacity(grid.per_stretch * n);
+        let mut sub: Vec<Propagator> = Vec::with_capacity(grid.per_stretch * n);
         for j in 0..grid.per_stretch {
-            sub.extend(powers.iter().map(|p| p[j]));
+            for (k, first) in firsts.iter().enumerate() {
+                let map = if j == 0 {
+                    Propagator {
+                        q: first[0],
+                        v: first[1],
+                    }
+                } else {
+                    sub[(j - 1) * n + k].then(first)
+                };
+                sub.push(map);
+            }
         }
         let free_len = grid.per_stretch as f64 * h;
         Side {
