@@ -210,6 +210,8 @@ impl Stepper<'_> {
         }
     }
 
+    /// Trades the sides' modal displacements and velocities with `[q, v]` (no copies: twice
+    /// makes it as it was).
     fn swap_states(&mut self, [q, v]: &mut [[Vec<f64>; 2]; 2]) {
         for s in 0..2 {
             std::mem::swap(&mut self.sides[s].q, &mut q[s]);
