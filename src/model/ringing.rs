@@ -61,7 +61,13 @@ impl Frozen {
 /// [`Look::stored_four`](crate::model::ring::Look::stored_four)).
 #[inline]
 pub(crate) fn read_four(buf: &[f64], at: usize, (back, w): (usize, [f64; 4])) -> f64 {
-    let s = &buf[at - back..at - back + 4];
+    stencil(&w, &buf[at - back..at - back + 4])
+}
+
+/// Four weights on the first four of `s`, summed in pairs: the order every stepped and
+/// frozen reading of a history takes, so that they agree to the bit.
+#[inline(always)]
+pub(crate) fn stencil(w: &[f64; 4], s: &[f64]) -> f64 {
     (w[0] * s[0] + w[1] * s[1]) + (w[2] * s[2] + w[3] * s[3])
 }
 
@@ -190,8 +196,7 @@ impl Ringing {
                 let s = i as f64 - shift;
                 let base = floor_of(s) as isize;
                 if base <= last - 2 {
-                    (wt[0] * at(base - 1) + wt[1] * at(base))
-                        + (wt[2] * at(base + 1) + wt[3] * at(base + 2))
+                    stencil(&wt, &[at(base - 1), at(base), at(base + 1), at(base + 2)])
                 } else {
                     window_at(&w.q, w.n, s)
                 }
@@ -209,9 +214,7 @@ impl Ringing {
                     let start = (base - 1 - first) as usize;
                     let q = &w.q[start..start + count + 3];
                     for k in 0..count {
-                        let v = (wt[0] * q[k] + wt[1] * q[k + 1])
-                            + (wt[2] * q[k + 2] + wt[3] * q[k + 3]);
-                        ring.push(j * a + weight * v);
+                        ring.push(j * a + weight * stencil(&wt, &q[k..k + 4]));
                         a *= self.step_decay;
                     }
                     i += count;

@@ -453,19 +453,17 @@ pub(crate) fn integrals_over(
 /// product is that row of the left factor times the right one, so they are [`mul4`]'s rows, bit
 /// for bit, at half its work.
 pub(crate) fn step_powers(omega: f64, zeta: f64, h: f64, count: usize) -> Vec<Propagator> {
+    powers(omega, zeta, h).take(count).collect()
+}
+
+/// [`step_powers`] without end: the exact steps over h, 2h, 3h, ...
+pub(crate) fn powers(omega: f64, zeta: f64, h: f64) -> impl Iterator<Item = Propagator> {
     let first = full_map(omega, zeta, h);
-    let mut current = Propagator {
+    let one = Propagator {
         q: first[0],
         v: first[1],
     };
-    let mut out = Vec::with_capacity(count);
-    for j in 0..count {
-        if j > 0 {
-            current = current.then(&first);
-        }
-        out.push(current);
-    }
-    out
+    std::iter::successors(Some(one), move |p| Some(p.then(&first)))
 }
 
 impl Propagator {

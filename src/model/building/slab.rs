@@ -35,7 +35,7 @@ use super::Slab;
 use crate::model::field::{BarBody, BarWaves};
 use crate::model::history::Tap;
 use crate::model::ring::{Look, Ring};
-use crate::model::ringing::{Frozen, Ringing};
+use crate::model::ringing::{Frozen, Ringing, stencil};
 
 /// The slab's state frozen when it fell quiet: its last samples, from which every later instant
 /// is read until the next contact.
@@ -391,7 +391,7 @@ impl SlabWaves {
             // made (still zero when stepping reads it).
             for at in len..total {
                 let s = &buf[at - back..at];
-                let read = (w[0] * s[0] + w[1] * s[1]) + (w[2] * s[2] + w[3] * 0.0);
+                let read = stencil(&w, &[s[0], s[1], s[2], 0.0]);
                 buf[at] = (a[at - len] + round * read) * gain;
             }
             return;
@@ -406,9 +406,7 @@ impl SlabWaves {
             let src = &done[at - back..at - back + todo.len() + 3];
             let a = &a[at - len..end - len];
             for k in 0..todo.len() {
-                let s = &src[k..k + 4];
-                let read = (w[0] * s[0] + w[1] * s[1]) + (w[2] * s[2] + w[3] * s[3]);
-                todo[k] = (a[k] + round * read) * gain;
+                todo[k] = (a[k] + round * stencil(&w, &src[k..k + 4])) * gain;
             }
             at = end;
         }
@@ -429,11 +427,9 @@ impl SlabWaves {
         let far_src = &buf[len - far.0..len - far.0 + n + 3];
         let newest = &buf[len..len + n];
         let b = &b[..n];
-        let four =
-            |s: &[f64], w: [f64; 4]| (w[0] * s[0] + w[1] * s[1]) + (w[2] * s[2] + w[3] * s[3]);
         for k in 0..n {
-            let near_far = self.near_weight * four(&near_src[k..k + 4], near.1)
-                + self.far_weight * four(&far_src[k..k + 4], far.1);
+            let near_far = self.near_weight * stencil(&near.1, &near_src[k..k + 4])
+                + self.far_weight * stencil(&far.1, &far_src[k..k + 4]);
             out[k] = self.inv_z * (near_far + top * newest[k]) - self.inv_m * b[k];
         }
     }

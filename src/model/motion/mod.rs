@@ -255,11 +255,14 @@ impl GroundMotion {
     }
 }
 
-/// The period (0.05 s to 4 s, 80 log-spaced) where the 5%-damped spectrum peaks, and the peak.
+/// The periods the spectrum is read at: 0.05 s to 4 s, 80 log-spaced.
+fn spectrum_periods() -> impl Iterator<Item = f64> {
+    (0..80).map(|i| 0.05 * (4.0f64 / 0.05).powf(i as f64 / 79.0))
+}
+
+/// The period ([`spectrum_periods`]) where the 5%-damped spectrum peaks, and the peak.
 fn spectrum_peak(m: &GroundMotion) -> (f64, f64) {
-    let periods: Vec<f64> = (0..80)
-        .map(|i| 0.05 * (4.0f64 / 0.05).powf(i as f64 / 79.0))
-        .collect();
+    let periods: Vec<f64> = spectrum_periods().collect();
     // Two neighbours that divide the samples alike are worked out side by side.
     let mut sa = vec![0.0; periods.len()];
     let mut i = 0;
@@ -308,8 +311,7 @@ mod tests {
         let m = record(accel, dt);
         let (period, peak) = spectrum_peak(&m);
         let mut best = (0.0, 0.0);
-        for i in 0..80 {
-            let t = 0.05 * (4.0f64 / 0.05).powf(i as f64 / 79.0);
+        for t in spectrum_periods() {
             let alone = m.spectral_accels([t; 2], 0.05, m.spectrum_steps(t));
             assert_eq!(alone[0], alone[1], "lanes of one period at {t} s");
             if alone[0] > best.1 {

@@ -120,13 +120,14 @@ impl Stepper<'_> {
     }
 
     /// One free stretch from a grid point to the next sample of the record (or the next free
-    /// step's end, where a stretch is a free step: [`Grid::per_stretch`]). Its parts are checked against the bounds; a part a bound cannot clear is halved
-    /// until what is left near an onset or a peak is walked grid point by grid point.
+    /// step's end, where a stretch is a free step: [`Grid::per_stretch`]). Its parts are checked
+    /// against the bounds; a part a bound cannot clear is halved until what is left near an onset
+    /// or a peak is walked grid point by grid point.
     pub(super) fn free_step(&mut self) -> Result<Free, SolveError> {
         self.newmark = false;
         let g = self.grid;
-        // To the next free-step boundary (record samples are boundaries too); one fine step
-        // where storeys yield (their corrections are planned step by step).
+        // To the next stretch's end (a sample of the record, or a free step's end where a stretch
+        // is one); one fine step where storeys yield (their corrections are planned step by step).
         let len = (g.per_stretch - self.n % g.per_stretch).min(g.total - self.n);
         let len = if self.single_step {
             len.min(self.grid.yield_piece)
@@ -189,15 +190,15 @@ impl Stepper<'_> {
         if !self.histories || every >= self.grid.per_stretch {
             return;
         }
+        for s in 0..2 {
+            let n = self.sides[s].modes();
+            w.inside[0][s].resize(n, 0.0);
+            w.inside[1][s].resize(n, 0.0);
+        }
         let n0 = self.n;
         let mut j = every - n0 % every;
         while j < len {
             let [q, v] = &mut w.inside;
-            for s in 0..2 {
-                let n = self.sides[s].modes();
-                q[s].resize(n, 0.0);
-                v[s].resize(n, 0.0);
-            }
             self.states_at(&w.y0, j, q, v);
             // The sample reads the sides' states at the step's time: the stretch's own are put
             // back after it.

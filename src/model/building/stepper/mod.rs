@@ -36,8 +36,7 @@ use yielding::Storeys;
 use super::elements::Element;
 use super::levels::Level;
 use super::modal::{
-    Modes, Propagator, StepIntegrals, doublings, full_map, integrals_over, propagator,
-    step_integrals,
+    Modes, Propagator, StepIntegrals, doublings, integrals_over, powers, propagator, step_integrals,
 };
 use super::result::{BuildingEnergy, RawContact};
 use super::slab::{SlabMark, SlabWaves};
@@ -120,25 +119,14 @@ impl Side {
     fn new(modes: &Modes, heights: Vec<f64>, v0: f64, grid: &Grid) -> Self {
         let n = modes.count();
         let h = grid.h;
-        // Every mode's exact steps over h, 2h, ... (each the one before times the first, as
-        // `step_powers` makes them), a block of the modes per number of steps, in one
-        // allocation.
-        let firsts: Vec<[[f64; 4]; 4]> = (0..n)
-            .map(|k| full_map(modes.omega_rad_s[k], modes.damping[k], h))
+        // Every mode's exact steps over h, 2h, ..., a block of the modes per number of steps,
+        // in one allocation.
+        let mut each: Vec<_> = (0..n)
+            .map(|k| powers(modes.omega_rad_s[k], modes.damping[k], h))
             .collect();
         let mut sub: Vec<Propagator> = Vec::with_capacity(grid.per_stretch * n);
-        for j in 0..grid.per_stretch {
-            for (k, first) in firsts.iter().enumerate() {
-                let map = if j == 0 {
-                    Propagator {
-                        q: first[0],
-                        v: first[1],
-                    }
-                } else {
-                    sub[(j - 1) * n + k].then(first)
-                };
-                sub.push(map);
-            }
+        for _ in 0..grid.per_stretch {
+            sub.extend(each.iter_mut().map(|p| p.next().expect("without end")));
         }
         let free_len = grid.per_stretch as f64 * h;
         Side {

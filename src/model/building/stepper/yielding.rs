@@ -381,7 +381,7 @@ impl Stepper<'_> {
     }
 
     /// The fine steps' exact maps for a piece of length `len`, when it is a whole number of
-    /// them within a free step (the maps the run made once).
+    /// them within a free stretch (the maps the run made once).
     fn grid_maps(&self, s: usize, len: f64) -> Option<&[Propagator]> {
         let j = self.grid.whole_steps(len)?;
         Some(self.sides[s].maps(j))
