@@ -148,8 +148,9 @@ impl Stepper<'_> {
             self.trial(hh, cs);
         }
         // A Kelvin-Voigt link lets go where k delta + c delta' reaches zero, inside the step.
+        let kelvin = self.sc.contact == ContactModel::Kelvin;
         let released = cs.awake.iter().copied().find(|&i| {
-            self.sc.contact == ContactModel::Kelvin
+            kelvin
                 && self.points[i].force > 0.0
                 && cs.trial.forces[i] <= 0.0
                 && cs.trial.deltas[i] > 0.0
@@ -563,19 +564,21 @@ impl Stepper<'_> {
             cs.u_before[i] = self.point_closing(&self.points[i]);
         }
         for s in 0..2 {
-            let side = &self.sides[s];
-            let [q, v] = &mut cs.modal_before[s];
-            copy_few(q, &side.q);
-            copy_few(v, &side.v);
-        }
-        for s in 0..2 {
             let side = &mut self.sides[s];
             let n = side.modes();
+            // The state the step starts from is kept (the peaks' proofs read it) by trading the
+            // modes' buffers for the kept ones, which the step then fills: no copy.
+            let [q0, v0] = &mut cs.modal_before[s];
+            q0.resize(n, 0.0);
+            v0.resize(n, 0.0);
+            std::mem::swap(q0, &mut side.q);
+            std::mem::swap(v0, &mut side.v);
+            let (q0, v0s) = (&q0[..n], &v0[..n]);
             let (q, v, a) = (&mut side.q[..n], &mut side.v[..n], &mut side.a[..n]);
             let (omega, zeta, gamma) = (&side.omega[..n], &side.zeta[..n], &side.gamma[..n]);
             let dqs = &tr.dq[s][..n];
             for k in 0..n {
-                let (v0, a0) = (v[k], a[k]);
+                let (v0, a0) = (v0s[k], a[k]);
                 let dq = dqs[k];
                 let dv = 2.0 * dq / hh - 2.0 * v0;
                 let da = 4.0 * (dq - hh * v0) / (hh * hh) - 2.0 * a0;
@@ -584,7 +587,7 @@ impl Stepper<'_> {
                 // its forces times the displacement; the damping takes h/4 c (v0 + v1)^2.
                 self.ledger.input_j += 0.5 * dq * (-gamma[k]) * (ground0 + tr.ground);
                 self.ledger.damping_j += 0.25 * hh * 2.0 * zeta[k] * omega[k] * (v0 + v1).powi(2);
-                q[k] += dq;
+                q[k] = q0[k] + dq;
                 v[k] = v1;
                 a[k] = a0 + da;
             }
@@ -735,14 +738,5 @@ impl Stepper<'_> {
             [&self.sides[0].q, &self.sides[1].q],
             [&self.sides[0].v, &self.sides[1].v],
         )
-    }
-}
-
-/// `to` made a copy of `from`, a few modes long: element by element, which is cheaper there
-/// than a call to copy memory.
-fn copy_few(to: &mut Vec<f64>, from: &[f64]) {
-    to.resize(from.len(), 0.0);
-    for (t, f) in to.iter_mut().zip(from) {
-        *t = *f;
     }
 }

@@ -776,6 +776,12 @@ impl Stepper<'_> {
     }
 
     pub(super) fn advance(&mut self, len: f64) {
+        // One whole fine step from the grid (the contact steps): what the general case below
+        // gives, without its division.
+        if self.offset == 0.0 && len == self.grid.h {
+            self.n += 1;
+            return;
+        }
         let t = self.offset + len;
         // t >= 0: truncation is the floor, without a call to one.
         let whole = ((t / self.grid.h + 1e-9) as usize) as f64;
