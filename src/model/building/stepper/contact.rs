@@ -64,6 +64,39 @@ pub(super) struct Scratch {
     pseudo1: [Vec<f64>; 2],
 }
 
+impl Scratch {
+    /// The buffers for sides of `modes` modes and `points` contact points, sized once for the
+    /// whole run: a contact step resizes none of them.
+    pub(super) fn sized(modes: [usize; 2], points: usize) -> Box<Self> {
+        let per_mode = || modes.map(|n| vec![0.0; n]);
+        let per_point = || vec![0.0; points];
+        Box::new(Scratch {
+            k_hat: per_mode(),
+            step: per_mode(),
+            predicted: per_point(),
+            compliance: per_point(),
+            far: vec![false; points],
+            far_bound: per_point(),
+            near_forced: vec![false; points],
+            load_now: per_mode(),
+            asleep: vec![false; points],
+            margin: per_point(),
+            margin_next: per_point(),
+            trial: Trial {
+                dq: per_mode(),
+                forces: per_point(),
+                deltas: per_point(),
+                rates: per_point(),
+                load: per_mode(),
+                ..Trial::default()
+            },
+            modal_before: modes.map(|n| [vec![0.0; n], vec![0.0; n]]),
+            u_before: per_point(),
+            ..Scratch::default()
+        })
+    }
+}
+
 impl Stepper<'_> {
     /// One implicit step of every level in contact, to the next grid point (or a Kelvin-Voigt
     /// link's release inside it).
@@ -90,10 +123,7 @@ impl Stepper<'_> {
             self.equilibrium_accelerations(&cs.load_now);
             self.newmark = true;
             // The free stretch before moved every level: none is known to be out of reach.
-            cs.asleep.clear();
-            cs.asleep.resize(np, false);
-            cs.margin.resize(np, 0.0);
-            cs.margin_next.resize(np, 0.0);
+            cs.asleep.fill(false);
         }
         // A level out of contact follows the motion: its overlap and rate are the kinematics
         // now, not what they were when it last let go.
@@ -118,8 +148,7 @@ impl Stepper<'_> {
         cs.awake.clear();
         cs.awake.extend((0..np).filter(|&i| !cs.asleep[i]));
         cs.ground0 = self.motion.at(self.time());
-        cs.near_forced.clear();
-        cs.near_forced.resize(self.points.len(), false);
+        cs.near_forced.fill(false);
         // A sleeping level the step could have brought within reach wakes, and the step is made
         // again with it.
         loop {
@@ -344,8 +373,6 @@ impl Stepper<'_> {
         for s in 0..2 {
             let sign = if s == 0 { -1.0 } else { 1.0 };
             let n = cs.step[s].len();
-            out.dq[s].resize(n, 0.0);
-            out.load[s].resize(n, 0.0);
             let (dq, step, k_hat) = (&mut out.dq[s][..n], &cs.step[s][..n], &cs.k_hat[s][..n]);
             let load = &mut out.load[s][..n];
             for k in 0..n {
@@ -377,8 +404,6 @@ impl Stepper<'_> {
             let side = &self.sides[s];
 
             let n = side.modes();
-            cs.k_hat[s].resize(n, 0.0);
-            cs.step[s].resize(n, 0.0);
             // Every array sliced to the modes, so that the loop reads them unchecked.
             let (k_hat, step) = (&mut cs.k_hat[s][..n], &mut cs.step[s][..n]);
             let (omega, zeta, gamma) = (&side.omega[..n], &side.zeta[..n], &side.gamma[..n]);
@@ -414,11 +439,6 @@ impl Stepper<'_> {
     /// sum_q G_pq F_q.
     fn contact_compliance(&self, hh: f64, cs: &mut Scratch) {
         let np = self.points.len();
-        cs.predicted.resize(np, 0.0);
-        cs.compliance.resize(np, 0.0);
-        cs.far.resize(np, false);
-        cs.far_bound.resize(np, 0.0);
-        cs.near_forced.resize(np, false);
         let next = self.n + 1;
         for &i in &cs.awake {
             let p = &self.points[i];
@@ -499,11 +519,10 @@ impl Stepper<'_> {
     fn contact_forces(&self, hh: f64, cs: &mut Scratch) {
         let np = self.points.len();
         let out = &mut cs.trial;
-        out.forces.clear();
-        out.forces.extend(self.points.iter().map(|p| p.force));
+        for (f, p) in out.forces.iter_mut().zip(&self.points) {
+            *f = p.force;
+        }
         // Only the awake points' entries are written and read.
-        out.deltas.resize(np, 0.0);
-        out.rates.resize(np, 0.0);
         let g = if cs.use_full {
             cs.g_full.as_ref().expect("made")
         } else {
@@ -559,7 +578,6 @@ impl Stepper<'_> {
         let ground0 = cs.ground0;
         // Only the awake points' entries are read (by `account_contacts`): the others may hold
         // an earlier step's.
-        cs.u_before.resize(self.points.len(), 0.0);
         for &i in &cs.awake {
             cs.u_before[i] = self.point_closing(&self.points[i]);
         }
@@ -569,8 +587,6 @@ impl Stepper<'_> {
             // The state the step starts from is kept (the peaks' proofs read it) by trading the
             // modes' buffers for the kept ones, which the step then fills: no copy.
             let [q0, v0] = &mut cs.modal_before[s];
-            q0.resize(n, 0.0);
-            v0.resize(n, 0.0);
             std::mem::swap(q0, &mut side.q);
             std::mem::swap(v0, &mut side.v);
             let (q0, v0s) = (&q0[..n], &v0[..n]);

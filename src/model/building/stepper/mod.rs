@@ -448,6 +448,8 @@ impl<'a> Stepper<'a> {
             })
             .collect();
         let signals = Signal::all(&sides, &points, tracked);
+        let contact_scratch =
+            contact::Scratch::sized([sides[0].modes(), sides[1].modes()], points.len());
         let mut s = Stepper {
             sc,
             motion,
@@ -483,7 +485,7 @@ impl<'a> Stepper<'a> {
             newmark: false,
             single_step: false,
             scratch: Some(Box::default()),
-            contact_scratch: Some(Box::default()),
+            contact_scratch: Some(contact_scratch),
         };
         s.ledger.initial_j = s.sides[0].energy() + s.sides[1].energy();
         for p in s.points.iter_mut() {
