@@ -366,14 +366,21 @@ impl Stepper<'_> {
     /// `cs.pseudo1` (none where they are elastic).
     fn trial_once(&self, hh: f64, cs: &mut Scratch) {
         let ground = self.motion.at(self.time() + hh);
-        self.free_increment(hh, ground, cs);
-        self.contact_compliance(hh, cs);
+        // A whole grid step: each mode's effective stiffness is the side's, computed once.
+        let full = (hh - self.grid.h).abs() <= 1e-12 * hh;
+        self.free_increment(hh, full, ground, cs);
+        self.contact_compliance(full, cs);
         self.contact_forces(hh, cs);
         let out = &mut cs.trial;
         for s in 0..2 {
             let sign = if s == 0 { -1.0 } else { 1.0 };
             let n = cs.step[s].len();
-            let (dq, step, k_hat) = (&mut out.dq[s][..n], &cs.step[s][..n], &cs.k_hat[s][..n]);
+            let k_hat = if full {
+                &self.sides[s].k_hat[..n]
+            } else {
+                &cs.k_hat[s][..n]
+            };
+            let (dq, step) = (&mut out.dq[s][..n], &cs.step[s][..n]);
             let load = &mut out.load[s][..n];
             for k in 0..n {
                 let mut f = 0.0;
@@ -395,11 +402,11 @@ impl Stepper<'_> {
     }
 
     /// Newmark's step in incremental form, k_hat dq = dp + (4/h + 2c) v + 2a, so that short
-    /// steps lose nothing to cancellation: each mode's effective stiffness and its increment
-    /// over hh without a change of the contact forces (the ground at the step's end given).
-    fn free_increment(&self, hh: f64, ground: f64, cs: &mut Scratch) {
+    /// steps lose nothing to cancellation: each mode's increment over hh without a change of the
+    /// contact forces (the ground at the step's end given), and, for a step shorter than the
+    /// grid's (`full` false), its effective stiffness.
+    fn free_increment(&self, hh: f64, full: bool, ground: f64, cs: &mut Scratch) {
         let ground_change = ground - cs.ground0;
-        let full = (hh - self.grid.h).abs() <= 1e-12 * hh;
         for s in 0..2 {
             let side = &self.sides[s];
 
@@ -428,7 +435,9 @@ impl Stepper<'_> {
                     + pseudo_change
                     + (4.0 / hh + 2.0 * c) * v[k]
                     + 2.0 * a[k];
-                k_hat[k] = kh;
+                if !full {
+                    k_hat[k] = kh;
+                }
                 step[k] = load / kh;
             }
         }
@@ -437,7 +446,7 @@ impl Stepper<'_> {
     /// Each contact point's overlap at the step's end without new forces, less the gap (and
     /// the slabs' predicted elastic part), and the compliance G: delta_p = predicted_p -
     /// sum_q G_pq F_q.
-    fn contact_compliance(&self, hh: f64, cs: &mut Scratch) {
+    fn contact_compliance(&self, full: bool, cs: &mut Scratch) {
         let np = self.points.len();
         let next = self.n + 1;
         for &i in &cs.awake {
@@ -469,7 +478,6 @@ impl Stepper<'_> {
             cs.predicted[i] = closing - e0;
             cs.compliance[i] = e1;
         }
-        let full = (hh - self.grid.h).abs() <= 1e-12 * hh;
         cs.use_full = full && cs.g_full.is_some();
         if cs.use_full {
             return;
@@ -494,9 +502,14 @@ impl Stepper<'_> {
                 let o = &self.points[j];
                 let mut g = 0.0;
                 for s in 0..2 {
+                    let k_hat = if full {
+                        &self.sides[s].k_hat
+                    } else {
+                        &cs.k_hat[s]
+                    };
                     let mut part = 0.0;
-                    for k in 0..cs.k_hat[s].len() {
-                        part += p.r[s][k] * o.r[s][k] / cs.k_hat[s][k];
+                    for k in 0..k_hat.len() {
+                        part += p.r[s][k] * o.r[s][k] / k_hat[k];
                     }
                     g += part;
                 }

@@ -178,7 +178,7 @@ impl Stepper<'_> {
             );
         }
         self.scratch = Some(w);
-        self.n += len;
+        self.at_step(self.n + len);
         self.record_free();
         Ok(Free::Done)
     }
@@ -203,9 +203,9 @@ impl Stepper<'_> {
             // The sample reads the sides' states at the step's time: the stretch's own are put
             // back after it.
             self.swap_states(&mut w.inside);
-            self.n = n0 + j;
+            self.at_step(n0 + j);
             self.record_now();
-            self.n = n0;
+            self.at_step(n0);
             self.swap_states(&mut w.inside);
             j += every;
         }
@@ -779,13 +779,15 @@ impl Stepper<'_> {
         // One whole fine step from the grid (the contact steps): what the general case below
         // gives, without its division.
         if self.offset == 0.0 && len == self.grid.h {
+            // Whole numbers below 2^53 count exactly as floats.
             self.n += 1;
+            self.n_f += 1.0;
             return;
         }
         let t = self.offset + len;
         // t >= 0: truncation is the floor, without a call to one.
         let whole = ((t / self.grid.h + 1e-9) as usize) as f64;
-        self.n += whole as usize;
+        self.at_step(self.n + whole as usize);
         self.offset = t - whole * self.grid.h;
         if self.offset < 1e-9 * self.grid.h {
             self.offset = 0.0;

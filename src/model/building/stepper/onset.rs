@@ -34,7 +34,7 @@ impl Stepper<'_> {
                 [&v[0], &v[1]],
                 (j - 1) as f64 * g.h,
             );
-            self.n += j - 1;
+            self.at_step(self.n + j - 1);
             // Every signal's peak up to here (those a check cleared were not walked).
             self.track_peaks_now();
             self.record_now();

@@ -622,6 +622,9 @@ impl Stepper<'_> {
     /// Inside contacts: records the state where a contact opened or closed in the last step, or
     /// where the last sample is `contact_sample_s` old.
     pub(super) fn record_in_contact(&mut self, opened_or_closed: bool) {
+        if !self.histories {
+            return;
+        }
         let every_step = self.sc.recording == crate::model::building::Recording::Steps;
         if opened_or_closed
             || every_step
