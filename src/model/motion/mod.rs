@@ -100,18 +100,26 @@ impl GroundMotion {
         if t_s < 0.0 || self.accel_m_s2.is_empty() {
             return 0.0;
         }
+        let a = &self.accel_m_s2;
         let p = t_s / self.dt_s;
-        // p >= 0: truncation is the floor, without a call to one.
-        let i = p as usize;
-        if i + 1 >= self.accel_m_s2.len() {
-            return if i < self.accel_m_s2.len() && p == i as f64 {
-                self.accel_m_s2[i]
+        // p >= 0: truncation is the floor, without a call to one. A signed integer's conversions
+        // both ways are one instruction each on x86-64 (an unsigned one's are several), and
+        // give the same whole number below 2^63 (p saturates above it, past every record; below
+        // zero, as for a NaN, the first sample's interval is read, as `as usize` would give).
+        let i = (p as i64).max(0);
+        let last = (a.len() - 1) as i64;
+        if i >= last {
+            return if i == last && p == i as f64 {
+                a[a.len() - 1]
             } else {
                 0.0
             };
         }
         let x = p - i as f64;
-        self.accel_m_s2[i] * (1.0 - x) + self.accel_m_s2[i + 1] * x
+        let i = i as usize;
+        // SAFETY: 0 <= i < last, so i + 1 <= last is within the record.
+        let (a0, a1) = unsafe { (*a.get_unchecked(i), *a.get_unchecked(i + 1)) };
+        a0 * (1.0 - x) + a1 * x
     }
 
     /// The first `duration_s` of the record.
