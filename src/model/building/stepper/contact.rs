@@ -584,6 +584,7 @@ impl Stepper<'_> {
     }
 
     /// Takes the trial step: the modes, the slabs, the ledger and the contacts.
+    #[inline(never)]
     fn commit_contact(&mut self, cs: &mut Scratch) {
         let tr = &cs.trial;
         let hh = tr.hh;
