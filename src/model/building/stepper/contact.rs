@@ -60,6 +60,9 @@ pub(super) struct Scratch {
     modal_before: [[Vec<f64>; 2]; 2],
     /// Each awake point's closing where the step started (its work's displacement).
     u_before: Vec<f64>,
+    /// The step count at whose end each point's closing went into `u_before` (the closing
+    /// where the next step starts, if no other step came between).
+    closing_step: Vec<usize>,
     /// Yielding storeys: each side's load of their corrections at the trial's end, per mode.
     pseudo1: [Vec<f64>; 2],
 }
@@ -92,6 +95,7 @@ impl Scratch {
             },
             modal_before: modes.map(|n| [vec![0.0; n], vec![0.0; n]]),
             u_before: per_point(),
+            closing_step: vec![usize::MAX; points],
             ..Scratch::default()
         })
     }
@@ -593,7 +597,10 @@ impl Stepper<'_> {
         // Only the awake points' entries are read (by `account_contacts`): the others may hold
         // an earlier step's.
         for &i in &cs.awake {
-            cs.u_before[i] = self.point_closing(&self.points[i]);
+            // The last step's end is this one's start where it was the step just before.
+            if cs.closing_step[i] != self.steps - 1 {
+                cs.u_before[i] = self.point_closing(&self.points[i]);
+            }
         }
         for s in 0..2 {
             let side = &mut self.sides[s];
@@ -671,7 +678,7 @@ impl Stepper<'_> {
     /// Each level's contact after the step just taken from `t0`: the work of its force, its
     /// overlap, and its contact opened, carried on or closed (with where inside the step);
     /// whether any opened or closed.
-    fn account_contacts(&mut self, cs: &Scratch, t0: f64) -> bool {
+    fn account_contacts(&mut self, cs: &mut Scratch, t0: f64) -> bool {
         let tr = &cs.trial;
         let hh = tr.hh;
         let (t1, n1) = (self.time(), self.n);
@@ -689,6 +696,8 @@ impl Stepper<'_> {
             let (f0, f1) = (p.force, tr.forces[i]);
             // The contact's work on the buildings: -(F0 + F1)/2 times the closing displacement.
             self.ledger.contact_work_j -= 0.5 * (f0 + f1) * (closing - cs.u_before[i]);
+            cs.u_before[i] = closing;
+            cs.closing_step[i] = self.steps;
             let delta0 = p.delta;
             p.delta = if self.sears && cs.far[i] {
                 // Out of reach: a lower bound on the overlap (no force is read from it).
