@@ -378,15 +378,16 @@ impl Stepper<'_> {
         let out = &mut cs.trial;
         for s in 0..2 {
             let sign = if s == 0 { -1.0 } else { 1.0 };
-            let n = cs.step[s].len();
             let k_hat = if full {
-                &self.sides[s].k_hat[..n]
+                &self.sides[s].k_hat
             } else {
-                &cs.k_hat[s][..n]
+                &cs.k_hat[s]
             };
-            let (dq, step) = (&mut out.dq[s][..n], &cs.step[s][..n]);
-            let load = &mut out.load[s][..n];
-            for k in 0..n {
+            // Zipped, not indexed: a few modes' loop is mostly its set-up, and each index
+            // checked is part of it.
+            let each = out.dq[s].iter_mut().zip(out.load[s].iter_mut());
+            let each = each.zip(cs.step[s].iter().zip(k_hat)).enumerate();
+            for (k, ((dq, load), (step, k_hat))) in each {
                 let mut f = 0.0;
                 for &i in &cs.awake {
                     let force = out.forces[i];
@@ -394,10 +395,10 @@ impl Stepper<'_> {
                         f += self.points[i].r[s][k] * force;
                     }
                 }
-                dq[k] = step[k] + sign * f / k_hat[k];
+                *dq = step + sign * f / k_hat;
                 // Rounding is symmetric, so the sign taken out of the sum changes no bit of it;
                 // + 0.0 makes a zero positive, as a sum from +0 is.
-                load[k] = sign * f + 0.0;
+                *load = sign * f + 0.0;
             }
         }
         out.hh = hh;
