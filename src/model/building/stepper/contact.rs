@@ -121,32 +121,11 @@ impl Stepper<'_> {
             // are the ones it committed, already summed.
             std::mem::swap(&mut cs.load_now, &mut cs.trial.load);
         } else {
-            // A contact phase starts.
-            self.contact_loads(&mut cs.load_now);
-            self.start_contact_proofs();
-            self.equilibrium_accelerations(&cs.load_now);
-            self.newmark = true;
-            // The free stretch before moved every level: none is known to be out of reach.
-            cs.asleep.fill(false);
+            self.start_contact_phase(&mut cs);
         }
-        // A level out of contact follows the motion: its overlap and rate are the kinematics
-        // now, not what they were when it last let go.
-        let n = self.n;
         for i in 0..np {
             if self.points[i].force <= 0.0 && !cs.asleep[i] {
-                let (c, w) = self.point_now(i);
-                let p = &mut self.points[i];
-                // A level whose quiet slabs' ringing cannot close the gap needs no exact reading
-                // of it: it sleeps (its overlap unread until it wakes), and is only read again
-                // once the steps' motion could have used up its margin.
-                let bound = p.elastic_bound_from(n);
-                if c - self.sc.gap_m + bound < 0.0 {
-                    cs.asleep[i] = true;
-                    cs.margin[i] = self.sc.gap_m - c - bound;
-                } else {
-                    p.delta = c - self.sc.gap_m - p.elastic_at(n);
-                    p.rate = w;
-                }
+                self.follow_free_level(i, &mut cs);
             }
         }
         cs.awake.clear();
@@ -165,6 +144,38 @@ impl Stepper<'_> {
 
         self.contact_scratch = Some(cs);
         Ok(())
+    }
+
+    /// Where a contact phase starts: the loads of the forces now, and Newmark's accelerations
+    /// from them. Out of line (once a phase), so that the steps' code keeps its registers.
+    #[cold]
+    #[inline(never)]
+    fn start_contact_phase(&mut self, cs: &mut Scratch) {
+        self.contact_loads(&mut cs.load_now);
+        self.start_contact_proofs();
+        self.equilibrium_accelerations(&cs.load_now);
+        self.newmark = true;
+        // The free stretch before moved every level: none is known to be out of reach.
+        cs.asleep.fill(false);
+    }
+
+    /// A level out of contact follows the motion: its overlap and rate are the kinematics now,
+    /// not what they were when it last let go; or, where its quiet slabs' ringing cannot close
+    /// the gap, it sleeps (its overlap unread until it wakes), and is only read again once the
+    /// steps' motion could have used up its margin.
+    #[inline(never)]
+    fn follow_free_level(&mut self, i: usize, cs: &mut Scratch) {
+        let n = self.n;
+        let (c, w) = self.point_now(i);
+        let p = &mut self.points[i];
+        let bound = p.elastic_bound_from(n);
+        if c - self.sc.gap_m + bound < 0.0 {
+            cs.asleep[i] = true;
+            cs.margin[i] = self.sc.gap_m - c - bound;
+        } else {
+            p.delta = c - self.sc.gap_m - p.elastic_at(n);
+            p.rate = w;
+        }
     }
 
     /// The step of length hh into `cs.trial`, made again where a level turns out within reach or
