@@ -479,13 +479,21 @@ impl Stepper<'_> {
                     continue;
                 }
             }
-            if self.proof[i].deferred {
+            let (deferred, stale) = (self.proof[i].deferred, self.proof[i].stale);
+            if deferred || stale {
                 let (u0, r0) = self.signal(
                     i,
                     [&before[0][0], &before[1][0]],
                     [&before[0][1], &before[1][1]],
                 );
-                self.peaks.update(i, t - hh, u0, r0);
+                if deferred {
+                    self.peaks.update(i, t - hh, u0, r0);
+                } else {
+                    // Shown below its peak up to where this step started, not over the step:
+                    // its last instant is the step's start, and the step is read as a step.
+                    self.peaks.pass(i, t - hh, u0, r0);
+                    self.proof[i].stale = false;
+                }
             }
             self.read_signal(i, t);
         }
