@@ -614,9 +614,15 @@ impl Stepper<'_> {
                 cs.u_before[i] = self.point_closing(&self.points[i]);
             }
         }
+        // Per side, the sizes of the step's dq and of the velocities it ends with (the sum of
+        // |x| and the sum of x^2, made Euclidean below), summed as the modes are stepped: the
+        // peaks' proofs read them.
+        let mut moved = [[0.0f64; 2]; 2];
+        let mut speed_after = [[0.0f64; 2]; 2];
         for s in 0..2 {
             let side = &mut self.sides[s];
             let n = side.modes();
+            let [moved, speed] = [&mut moved[s], &mut speed_after[s]];
             // The state the step starts from is kept (the peaks' proofs read it) by trading the
             // modes' buffers for the kept ones, which the step then fills: no copy.
             let [q0, v0] = &mut cs.modal_before[s];
@@ -639,7 +645,11 @@ impl Stepper<'_> {
                 q[k] = q0[k] + dq;
                 v[k] = v1;
                 a[k] = a0 + da;
+                *moved = [moved[0] + dq.abs(), moved[1] + dq * dq];
+                *speed = [speed[0] + v1.abs(), speed[1] + v1 * v1];
             }
+            moved[1] = moved[1].sqrt();
+            speed[1] = speed[1].sqrt();
         }
         self.advance(hh);
         if self.yields() {
@@ -683,7 +693,7 @@ impl Stepper<'_> {
             }
         }
         // Accelerations stay Newmark's inside contacts; leaving one, the free steps need none.
-        self.track_peaks_in_contact(&cs.trial.dq, &cs.modal_before, hh);
+        self.track_peaks_in_contact(moved, speed_after, &cs.modal_before, hh);
         self.record_in_contact(opened_or_closed);
     }
 

@@ -405,8 +405,9 @@ impl Stepper<'_> {
     }
 
     /// Every signal's peak brought up to the end of a contact step from `before` (each side's
-    /// modal displacements and velocities where it started) that moved each side's modes by
-    /// `dq`. A signal is read only where neither of two proofs holds, each checked at the cost
+    /// modal displacements and velocities where it started) that moved each side's modes by a
+    /// dq of sizes `moved` and left its modal velocities of sizes `speed_after` (each [the sum
+    /// of |x|, the Euclidean size], as [`sizes`] takes them). A signal is read only where neither of two proofs holds, each checked at the cost
     /// of a few operations:
     /// - **below its peak**: the step's bound (its coefficients against the size of dq, and the
     ///   cubic's bulge between the step's ends) cannot bring it there; its headroom shrinks by
@@ -418,20 +419,18 @@ impl Stepper<'_> {
     ///   reading it at every step would have.
     pub(super) fn track_peaks_in_contact(
         &mut self,
-        dq: &[Vec<f64>; 2],
+        moved: [[f64; 2]; 2],
+        speed_after: [[f64; 2]; 2],
         before: &[[Vec<f64>; 2]; 2],
         hh: f64,
     ) {
         let t = self.time();
-        let moved: [[f64; 2]; 2] = std::array::from_fn(|s| sizes(dq[s].iter().copied()));
         // Straight after another contact step (the step count one on), the velocities this one
         // started from are those that one ended with, and so are their sizes.
         let speeds: [[f64; 2]; 2] = match self.speeds_after.take() {
             Some((step, sizes)) if step + 1 == self.steps => sizes,
             _ => std::array::from_fn(|s| sizes(before[s][1].iter().copied())),
         };
-        let speed_after: [[f64; 2]; 2] =
-            std::array::from_fn(|s| sizes(self.sides[s].v.iter().copied()));
         self.speeds_after = Some((self.steps, speed_after));
         // What the step changed the modal velocities by, worked out where a proof needs it.
         let mut kicked: [Option<[f64; 2]>; 2] = [None; 2];
