@@ -619,10 +619,11 @@ impl Stepper<'_> {
         // peaks' proofs read them.
         let mut moved = [[0.0f64; 2]; 2];
         let mut speed_after = [[0.0f64; 2]; 2];
+        let mut kick = [[0.0f64; 2]; 2];
         for s in 0..2 {
             let side = &mut self.sides[s];
             let n = side.modes();
-            let [moved, speed] = [&mut moved[s], &mut speed_after[s]];
+            let [moved, speed, kick] = [&mut moved[s], &mut speed_after[s], &mut kick[s]];
             // The state the step starts from is kept (the peaks' proofs read it) by trading the
             // modes' buffers for the kept ones, which the step then fills: no copy.
             let [q0, v0] = &mut cs.modal_before[s];
@@ -647,9 +648,12 @@ impl Stepper<'_> {
                 a[k] = a0 + da;
                 *moved = [moved[0] + dq.abs(), moved[1] + dq * dq];
                 *speed = [speed[0] + v1.abs(), speed[1] + v1 * v1];
+                let dv = v1 - v0;
+                *kick = [kick[0] + dv.abs(), kick[1] + dv * dv];
             }
             moved[1] = moved[1].sqrt();
             speed[1] = speed[1].sqrt();
+            kick[1] = kick[1].sqrt();
         }
         self.advance(hh);
         if self.yields() {
@@ -693,7 +697,7 @@ impl Stepper<'_> {
             }
         }
         // Accelerations stay Newmark's inside contacts; leaving one, the free steps need none.
-        self.track_peaks_in_contact(moved, speed_after, &cs.modal_before, hh);
+        self.track_peaks_in_contact([moved, speed_after, kick], &cs.modal_before, hh);
         self.record_in_contact(opened_or_closed);
     }
 

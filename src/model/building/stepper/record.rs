@@ -406,9 +406,10 @@ impl Stepper<'_> {
 
     /// Every signal's peak brought up to the end of a contact step from `before` (each side's
     /// modal displacements and velocities where it started) that moved each side's modes by a
-    /// dq of sizes `moved` and left its modal velocities of sizes `speed_after` (each [the sum
-    /// of |x|, the Euclidean size], as [`sizes`] takes them). A signal is read only where neither of two proofs holds, each checked at the cost
-    /// of a few operations:
+    /// dq of sizes `moved`, left its modal velocities of sizes `speed_after` and changed them by
+    /// sizes `kick` (each [the sum of |x|, the Euclidean size], as [`sizes`] takes them). A
+    /// signal is read only where neither of two proofs holds, each checked at the cost of a few
+    /// operations:
     /// - **below its peak**: the step's bound (its coefficients against the size of dq, and the
     ///   cubic's bulge between the step's ends) cannot bring it there; its headroom shrinks by
     ///   that bound;
@@ -419,8 +420,7 @@ impl Stepper<'_> {
     ///   reading it at every step would have.
     pub(super) fn track_peaks_in_contact(
         &mut self,
-        moved: [[f64; 2]; 2],
-        speed_after: [[f64; 2]; 2],
+        [moved, speed_after, kick]: [[[f64; 2]; 2]; 3],
         before: &[[Vec<f64>; 2]; 2],
         hh: f64,
     ) {
@@ -432,8 +432,6 @@ impl Stepper<'_> {
             _ => std::array::from_fn(|s| sizes(before[s][1].iter().copied())),
         };
         self.speeds_after = Some((self.steps, speed_after));
-        // What the step changed the modal velocities by, worked out where a proof needs it.
-        let mut kicked: [Option<[f64; 2]>; 2] = [None; 2];
         for w in 0..self.watch.len() {
             let Watch {
                 i,
@@ -457,11 +455,7 @@ impl Stepper<'_> {
                 }
             }
             if !pr.stale {
-                let kick = *kicked[s].get_or_insert_with(|| {
-                    let (v0, v1) = (&before[s][1], &self.sides[s].v);
-                    sizes(v0.iter().zip(v1).map(|(a, b)| b - a))
-                });
-                let keeps = pr.sign_room - most(kick);
+                let keeps = pr.sign_room - most(kick[s]);
                 // A tall building's bound on the kick sees the contact force at every floor:
                 // its rate alone, read exactly, shows it monotone at half a reading's cost (the
                 // step's ends' rates of one sign keep Newmark's cubic monotone between them).
