@@ -705,96 +705,106 @@ impl Stepper<'_> {
     /// overlap, and its contact opened, carried on or closed (with where inside the step);
     /// whether any opened or closed.
     fn account_contacts(&mut self, cs: &mut Scratch, t0: f64) -> bool {
+        let mut opened_or_closed = false;
+        for j in 0..cs.awake.len() {
+            opened_or_closed |= self.account_contact(cs.awake[j], cs, t0);
+        }
+        opened_or_closed
+    }
+
+    /// [`Stepper::account_contacts`] at level i; whether its contact opened or closed. Out of
+    /// line: a level's bookkeeping reads a dozen of the run's fields, which a loop over one or
+    /// two levels would keep on the stack for nothing.
+    #[inline(never)]
+    fn account_contact(&mut self, i: usize, cs: &mut Scratch, t0: f64) -> bool {
         let tr = &cs.trial;
         let hh = tr.hh;
         let (t1, n1) = (self.time(), self.n);
-        let mut opened_or_closed = false;
-        for &i in &cs.awake {
-            // The closing now; its rate is read only where a contact opens without an approach
-            // velocity.
-            let closing = self.point_closing(&self.points[i]);
-            let opening = {
-                let p = &self.points[i];
-                (p.force <= 0.0 && tr.forces[i] > 0.0 && p.v0 <= 0.0).then(|| self.point_now(i).1)
-            };
-            let p = &mut self.points[i];
-            // The point's force is still the step's first until it is set below.
-            let (f0, f1) = (p.force, tr.forces[i]);
-            // The contact's work on the buildings: -(F0 + F1)/2 times the closing displacement.
-            self.ledger.contact_work_j -= 0.5 * (f0 + f1) * (closing - cs.u_before[i]);
-            cs.u_before[i] = closing;
-            cs.closing_step[i] = self.steps;
-            let delta0 = p.delta;
-            p.delta = if self.sears && cs.far[i] {
-                // Out of reach: a lower bound on the overlap (no force is read from it).
-                closing - self.sc.gap_m - cs.far_bound[i]
-            } else if self.sears {
-                closing - self.sc.gap_m - p.elastic_at(n1)
-            } else {
-                tr.deltas[i]
-            };
-            // An undamped element's force peaks with the overlap: between the steps, at the
-            // cubic's maximum through both ends' overlaps and rates (sampling the steps alone
-            // would miss it by up to (w h)^2 / 8, at a phase that changes with the step).
-            let between = if !self.sears && p.element.undamped() && f0 > 0.0 && f1 > 0.0 {
-                let top = hermite_max(delta0, p.rate, tr.deltas[i], tr.rates[i], hh);
-                if top.is_finite() {
-                    p.element.force(top, 0.0, p.v0)
-                } else {
-                    0.0
-                }
+        let mut opened = false;
+        // The closing now; its rate is read only where a contact opens without an approach
+        // velocity.
+        let closing = self.point_closing(&self.points[i]);
+        let opening = {
+            let p = &self.points[i];
+            (p.force <= 0.0 && tr.forces[i] > 0.0 && p.v0 <= 0.0).then(|| self.point_now(i).1)
+        };
+        let p = &mut self.points[i];
+        // The point's force is still the step's first until it is set below.
+        let (f0, f1) = (p.force, tr.forces[i]);
+        // The contact's work on the buildings: -(F0 + F1)/2 times the closing displacement.
+        self.ledger.contact_work_j -= 0.5 * (f0 + f1) * (closing - cs.u_before[i]);
+        cs.u_before[i] = closing;
+        cs.closing_step[i] = self.steps;
+        let delta0 = p.delta;
+        p.delta = if self.sears && cs.far[i] {
+            // Out of reach: a lower bound on the overlap (no force is read from it).
+            closing - self.sc.gap_m - cs.far_bound[i]
+        } else if self.sears {
+            closing - self.sc.gap_m - p.elastic_at(n1)
+        } else {
+            tr.deltas[i]
+        };
+        // An undamped element's force peaks with the overlap: between the steps, at the
+        // cubic's maximum through both ends' overlaps and rates (sampling the steps alone
+        // would miss it by up to (w h)^2 / 8, at a phase that changes with the step).
+        let between = if !self.sears && p.element.undamped() && f0 > 0.0 && f1 > 0.0 {
+            let top = hermite_max(delta0, p.rate, tr.deltas[i], tr.rates[i], hh);
+            if top.is_finite() {
+                p.element.force(top, 0.0, p.v0)
             } else {
                 0.0
-            };
-            p.rate = tr.rates[i];
-            p.force = f1;
-            p.max_force = p.max_force.max(f1).max(between);
-            if f0 <= 0.0 && f1 > 0.0 {
-                opened_or_closed = true;
-                // Opened inside this step: where the overlap crossed zero.
-                let start = if delta0 < 0.0 && p.delta > delta0 {
-                    t0 + hh * (-delta0 / (p.delta - delta0)).clamp(0.0, 1.0)
-                } else {
-                    t0
-                };
-                if let Some(rate) = opening {
-                    p.v0 = rate.max(1e-12);
-                }
-                p.open = Some(self.contacts.len());
-                self.contacts.push(RawContact {
-                    level: i,
-                    start_s: start,
-                    end_s: start,
-                    peak_force_n: 0.0,
-                    impulse_ns: 0.0,
-                    approach_velocity_m_s: p.v0,
-                });
             }
-            if let Some(c) = p.open {
-                let contact = &mut self.contacts[c];
-                contact.impulse_ns += 0.5 * hh * (f0 + f1);
-                contact.peak_force_n = contact.peak_force_n.max(f1).max(between);
-                if f1 <= 0.0 {
-                    opened_or_closed = true;
-                    contact.end_s = if tr.released == Some(i) || p.delta > 0.0 {
-                        t1
-                    } else {
-                        t0 + hh
-                            * (delta0.max(0.0) / (delta0.max(0.0) - p.delta).max(f64::MIN_POSITIVE))
-                                .clamp(0.0, 1.0)
-                    };
-                    p.open = None;
-                    p.v0 = 0.0;
-                    if contact.impulse_ns <= 0.0 {
-                        // The touch carried no force (a grazing approach): not a contact.
-                        self.contacts.pop();
-                    }
+        } else {
+            0.0
+        };
+        p.rate = tr.rates[i];
+        p.force = f1;
+        p.max_force = p.max_force.max(f1).max(between);
+        if f0 <= 0.0 && f1 > 0.0 {
+            opened = true;
+            // Opened inside this step: where the overlap crossed zero.
+            let start = if delta0 < 0.0 && p.delta > delta0 {
+                t0 + hh * (-delta0 / (p.delta - delta0)).clamp(0.0, 1.0)
+            } else {
+                t0
+            };
+            if let Some(rate) = opening {
+                p.v0 = rate.max(1e-12);
+            }
+            p.open = Some(self.contacts.len());
+            self.contacts.push(RawContact {
+                level: i,
+                start_s: start,
+                end_s: start,
+                peak_force_n: 0.0,
+                impulse_ns: 0.0,
+                approach_velocity_m_s: p.v0,
+            });
+        }
+        if let Some(c) = p.open {
+            let contact = &mut self.contacts[c];
+            contact.impulse_ns += 0.5 * hh * (f0 + f1);
+            contact.peak_force_n = contact.peak_force_n.max(f1).max(between);
+            if f1 <= 0.0 {
+                opened = true;
+                contact.end_s = if tr.released == Some(i) || p.delta > 0.0 {
+                    t1
                 } else {
-                    contact.end_s = t1;
+                    t0 + hh
+                        * (delta0.max(0.0) / (delta0.max(0.0) - p.delta).max(f64::MIN_POSITIVE))
+                            .clamp(0.0, 1.0)
+                };
+                p.open = None;
+                p.v0 = 0.0;
+                if contact.impulse_ns <= 0.0 {
+                    // The touch carried no force (a grazing approach): not a contact.
+                    self.contacts.pop();
                 }
+            } else {
+                contact.end_s = t1;
             }
         }
-        opened_or_closed
+        opened
     }
 
     pub(super) fn point_now_of(&self, p: &Point) -> (f64, f64) {
