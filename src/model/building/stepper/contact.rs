@@ -524,8 +524,8 @@ impl Stepper<'_> {
                         &cs.k_hat[s]
                     };
                     let mut part = 0.0;
-                    for k in 0..k_hat.len() {
-                        part += p.r[s][k] * o.r[s][k] / k_hat[k];
+                    for (k, k_hat) in k_hat.iter().enumerate() {
+                        part += p.r[s][k] * o.r[s][k] / k_hat;
                     }
                     g += part;
                 }
