@@ -389,11 +389,7 @@ impl Stepper<'_> {
         let out = &mut cs.trial;
         for s in 0..2 {
             let sign = if s == 0 { -1.0 } else { 1.0 };
-            let k_hat = if full {
-                &self.sides[s].k_hat
-            } else {
-                &cs.k_hat[s]
-            };
+            let k_hat = self.step_k_hat(&cs.k_hat, s, full);
             // Zipped, not indexed: a few modes' loop is mostly its set-up, and each index
             // checked is part of it.
             let each = out.dq[s].iter_mut().zip(out.load[s].iter_mut());
@@ -415,6 +411,12 @@ impl Stepper<'_> {
         out.hh = hh;
         out.ground = ground;
         out.released = None;
+    }
+
+    /// Side s's effective stiffness per mode over the step being tried: the side's own over a
+    /// whole grid step (`full`), the one [`Stepper::free_increment`] `made` for a shorter one.
+    fn step_k_hat<'a>(&'a self, made: &'a [Vec<f64>; 2], s: usize, full: bool) -> &'a [f64] {
+        if full { &self.sides[s].k_hat } else { &made[s] }
     }
 
     /// Newmark's step in incremental form, k_hat dq = dp + (4/h + 2c) v + 2a, so that short
@@ -518,11 +520,7 @@ impl Stepper<'_> {
                 let o = &self.points[j];
                 let mut g = 0.0;
                 for s in 0..2 {
-                    let k_hat = if full {
-                        &self.sides[s].k_hat
-                    } else {
-                        &cs.k_hat[s]
-                    };
+                    let k_hat = self.step_k_hat(&cs.k_hat, s, full);
                     let mut part = 0.0;
                     for (k, k_hat) in k_hat.iter().enumerate() {
                         part += p.r[s][k] * o.r[s][k] / k_hat;
@@ -614,16 +612,15 @@ impl Stepper<'_> {
                 cs.u_before[i] = self.point_closing(&self.points[i]);
             }
         }
-        // Per side, the sizes of the step's dq and of the velocities it ends with (the sum of
-        // |x| and the sum of x^2, made Euclidean below), summed as the modes are stepped: the
-        // peaks' proofs read them.
+        // Per side, the sizes of the step's dq, of the velocities it ends with and of their
+        // change, summed as the modes are stepped: the peaks' proofs read them.
         let mut moved = [[0.0f64; 2]; 2];
         let mut speed_after = [[0.0f64; 2]; 2];
         let mut kick = [[0.0f64; 2]; 2];
         for s in 0..2 {
             let side = &mut self.sides[s];
             let n = side.modes();
-            let [moved, speed, kick] = [&mut moved[s], &mut speed_after[s], &mut kick[s]];
+            let (mut m, mut sp, mut ki) = (Sizes::default(), Sizes::default(), Sizes::default());
             // The state the step starts from is kept (the peaks' proofs read it) by trading the
             // modes' buffers for the kept ones, which the step then fills: no copy.
             let [q0, v0] = &mut cs.modal_before[s];
@@ -646,14 +643,9 @@ impl Stepper<'_> {
                 q[k] = q0[k] + dq;
                 v[k] = v1;
                 a[k] = a0 + da;
-                *moved = [moved[0] + dq.abs(), moved[1] + dq * dq];
-                *speed = [speed[0] + v1.abs(), speed[1] + v1 * v1];
-                let dv = v1 - v0;
-                *kick = [kick[0] + dv.abs(), kick[1] + dv * dv];
+                (m, sp, ki) = (m.add(dq), sp.add(v1), ki.add(v1 - v0));
             }
-            moved[1] = moved[1].sqrt();
-            speed[1] = speed[1].sqrt();
-            kick[1] = kick[1].sqrt();
+            (moved[s], speed_after[s], kick[s]) = (m.done(), sp.done(), ki.done());
         }
         self.advance(hh);
         if self.yields() {
@@ -720,7 +712,7 @@ impl Stepper<'_> {
         let tr = &cs.trial;
         let hh = tr.hh;
         let (t1, n1) = (self.time(), self.n);
-        let mut opened = false;
+        let mut opened_or_closed = false;
         // The closing now; its rate is read only where a contact opens without an approach
         // velocity.
         let closing = self.point_closing(&self.points[i]);
@@ -761,7 +753,7 @@ impl Stepper<'_> {
         p.force = f1;
         p.max_force = p.max_force.max(f1).max(between);
         if f0 <= 0.0 && f1 > 0.0 {
-            opened = true;
+            opened_or_closed = true;
             // Opened inside this step: where the overlap crossed zero.
             let start = if delta0 < 0.0 && p.delta > delta0 {
                 t0 + hh * (-delta0 / (p.delta - delta0)).clamp(0.0, 1.0)
@@ -786,7 +778,7 @@ impl Stepper<'_> {
             contact.impulse_ns += 0.5 * hh * (f0 + f1);
             contact.peak_force_n = contact.peak_force_n.max(f1).max(between);
             if f1 <= 0.0 {
-                opened = true;
+                opened_or_closed = true;
                 contact.end_s = if tr.released == Some(i) || p.delta > 0.0 {
                     t1
                 } else {
@@ -804,7 +796,7 @@ impl Stepper<'_> {
                 contact.end_s = t1;
             }
         }
-        opened
+        opened_or_closed
     }
 
     pub(super) fn point_now_of(&self, p: &Point) -> (f64, f64) {

@@ -30,7 +30,7 @@ mod weights;
 mod yielding;
 
 pub(super) use record::Record;
-use record::{Peaks, Signal};
+use record::{Peaks, Signal, Sizes};
 use yielding::Storeys;
 
 use super::elements::Element;
@@ -317,8 +317,9 @@ pub(super) struct Stepper<'a> {
     /// Grid index of the current time, and how far past it the time is (after an event located
     /// inside a step).
     n: usize,
-    /// n as a float (set with n by [`Stepper::at_step`]): the time is read at every stage, and
-    /// an unsigned integer's conversion takes several instructions on x86-64.
+    /// n as a float, kept equal to it (by [`Stepper::at_step`], and by a contact step's advance
+    /// of one): the time is read at every stage, and an unsigned integer's conversion takes
+    /// several instructions on x86-64.
     n_f: f64,
     offset: f64,
     pub ledger: Ledger,

@@ -217,8 +217,24 @@ impl Watch {
 
 /// The sum of |x| and the Euclidean size of x.
 fn sizes(x: impl Iterator<Item = f64>) -> [f64; 2] {
-    let [l1, l2] = x.fold([0.0, 0.0], |[l1, l2], v| [l1 + v.abs(), l2 + v * v]);
-    [l1, l2.sqrt()]
+    x.fold(Sizes::default(), Sizes::add).done()
+}
+
+/// [`sizes`] taken value by value, where the values are made one at a time (a contact step's
+/// dq and velocities, as the modes are stepped).
+#[derive(Default, Clone, Copy)]
+pub(super) struct Sizes([f64; 2]);
+
+impl Sizes {
+    pub(super) fn add(self, v: f64) -> Self {
+        let [l1, l2] = self.0;
+        Sizes([l1 + v.abs(), l2 + v * v])
+    }
+
+    /// The sum of |x| and the Euclidean size.
+    pub(super) fn done(self) -> [f64; 2] {
+        [self.0[0], self.0[1].sqrt()]
+    }
 }
 
 /// The largest |value| of signals known with their rates at a sequence of instants: between
