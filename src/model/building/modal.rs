@@ -159,6 +159,20 @@ fn scaled_stiffness(masses: &[f64], stiffnesses: &[f64]) -> (Vec<f64>, Vec<f64>)
 /// take millions, for a caller that only compares fundamental frequencies.
 pub fn fundamental_omega_squared(masses: &[f64], stiffnesses: &[f64]) -> f64 {
     let (diag, off) = scaled_stiffness(masses, stiffnesses);
+    omega_squared_at(&diag, &off, 0)
+}
+
+/// The smallest and the largest squared frequency, by the same bisection (for a caller that
+/// needs only their spread).
+pub fn omega_squared_range(masses: &[f64], stiffnesses: &[f64]) -> (f64, f64) {
+    let (diag, off) = scaled_stiffness(masses, stiffnesses);
+    let last = diag.len().saturating_sub(1);
+    (omega_squared_at(&diag, &off, 0), omega_squared_at(&diag, &off, last))
+}
+
+/// The eigenvalue of index `index` (from the smallest) of the tridiagonal matrix, by bisection
+/// on the Sturm count.
+fn omega_squared_at(diag: &[f64], off: &[f64], index: usize) -> f64 {
     // Gershgorin: every eigenvalue lies in [0, max row sum]; K is positive definite.
     let mut hi = (0..diag.len())
         .map(|j| diag[j] + off[j].abs() + if j > 0 { off[j - 1].abs() } else { 0.0 })
@@ -171,7 +185,7 @@ pub fn fundamental_omega_squared(masses: &[f64], stiffnesses: &[f64]) -> f64 {
         if mid <= lo || mid >= hi {
             break;
         }
-        if below(&diag, &off, mid) >= 1 {
+        if below(diag, off, mid) > index {
             hi = mid;
         } else {
             lo = mid;

@@ -353,10 +353,26 @@ impl BuildingScenario {
 
     /// The Sears zone length at a level: the same for both slabs that meet there.
     pub fn level_zone_length(&self, level: &Level) -> f64 {
+        self.zone_length_with(level, || self.stiffer())
+    }
+
+    /// The Sears zone length at each of `levels`, the stiffer building found once (a tall
+    /// building's fundamental frequency takes a thousand passes over its storeys).
+    pub fn zone_lengths(&self, levels: &[Level]) -> Vec<f64> {
+        let stiffer = std::cell::OnceCell::new();
+        levels
+            .iter()
+            .map(|l| self.zone_length_with(l, || *stiffer.get_or_init(|| self.stiffer())))
+            .collect()
+    }
+
+    /// The zone length at `level`, `stiffer` asked for only where no zone length is set.
+    fn zone_length_with(&self, level: &Level, stiffer: impl FnOnce() -> usize) -> f64 {
         self.zone_length_m.unwrap_or_else(|| {
             let slabs = self.level_slabs(level);
-            let slab = slabs[self.stiffer()]
-                .or(slabs[1 - self.stiffer()])
+            let stiffer = stiffer();
+            let slab = slabs[stiffer]
+                .or(slabs[1 - stiffer])
                 .expect("a level has a floor on one side at least");
             slab.0.length_m / PAPER_DIVISIONS
         })
@@ -428,9 +444,9 @@ impl BuildingScenario {
         if !(self.contact == ContactModel::Sears && self.reading == SlabReading::Paper) {
             return Ok(());
         }
-        for level in self.levels() {
-            let d = self.level_zone_length(&level);
-            for (name, slab) in SIDES.iter().zip(self.level_slabs(&level)) {
+        let levels = self.levels();
+        for (level, d) in levels.iter().zip(self.zone_lengths(&levels)) {
+            for (name, slab) in SIDES.iter().zip(self.level_slabs(level)) {
                 if let Some((s, _)) = slab
                     && d >= 2.0 * s.length_m
                 {
@@ -551,8 +567,8 @@ fn spread_of_modes(side: usize, b: &Building) -> Result<(), InputError> {
     if b.storeys < 2 {
         return Ok(());
     }
-    let w = b.modes().omega_rad_s;
-    let (lo, hi) = (w[0] * w[0], w[w.len() - 1] * w[w.len() - 1]);
+    // By bisection: the whole eigen solution takes millions of operations for 100 storeys.
+    let (lo, hi) = super::modal::omega_squared_range(&b.masses(), &b.stiffnesses());
     if lo > 0.0 && hi.is_finite() && hi / lo <= MAX_MODE_SPREAD {
         return Ok(());
     }

@@ -575,8 +575,7 @@ fn paper_reading_warnings(sc: &BuildingScenario, levels: &[Level]) -> Vec<Warnin
         return vec![];
     }
     let mut warnings = vec![];
-    for (i, level) in levels.iter().enumerate() {
-        let d = sc.level_zone_length(level);
+    for (i, (level, d)) in levels.iter().zip(sc.zone_lengths(levels)).enumerate() {
         let a_tau = sc.level_stiffness(level)
             * sc.level_slabs(level)
                 .iter()

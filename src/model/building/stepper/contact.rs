@@ -390,22 +390,45 @@ impl Stepper<'_> {
         for s in 0..2 {
             let sign = if s == 0 { -1.0 } else { 1.0 };
             let k_hat = self.step_k_hat(&cs.k_hat, s, full);
-            // Zipped, not indexed: a few modes' loop is mostly its set-up, and each index
-            // checked is part of it.
+            // Rounding is symmetric, so the sign taken out of a mode's sum changes no bit of it;
+            // + 0.0 makes a zero positive, as a sum from +0 is.
+            let end = |dq: &mut f64, load: &mut f64, step: f64, k_hat: f64, f: f64| {
+                *dq = step + sign * f / k_hat;
+                *load = sign * f + 0.0;
+            };
             let each = out.dq[s].iter_mut().zip(out.load[s].iter_mut());
-            let each = each.zip(cs.step[s].iter().zip(k_hat)).enumerate();
-            for (k, ((dq, load), (step, k_hat))) in each {
-                let mut f = 0.0;
-                for &i in &cs.awake {
-                    let force = out.forces[i];
-                    if force != 0.0 {
-                        f += self.points[i].r[s][k] * force;
+            let each = each.zip(cs.step[s].iter().zip(k_hat));
+            if k_hat.len() == 1 {
+                // One mode: its sum straight from the points, in the points' order (zipped, not
+                // indexed: a loop this short is mostly its set-up).
+                for ((dq, load), (step, k_hat)) in each {
+                    let mut f = 0.0;
+                    for &i in &cs.awake {
+                        let force = out.forces[i];
+                        if force != 0.0 {
+                            f += self.points[i].r[s][0] * force;
+                        }
+                    }
+                    end(dq, load, *step, *k_hat, f);
+                }
+                continue;
+            }
+            // Each mode's sum, in the points' order, made point by point in `load`: a pass over
+            // the modes for each point that pushes, which the compiler puts in vector lanes.
+            let sums = &mut out.load[s][..];
+            sums.fill(0.0);
+            for &i in &cs.awake {
+                let force = out.forces[i];
+                if force != 0.0 {
+                    for (f, r) in sums.iter_mut().zip(&self.points[i].r[s]) {
+                        *f += r * force;
                     }
                 }
-                *dq = step + sign * f / k_hat;
-                // Rounding is symmetric, so the sign taken out of the sum changes no bit of it;
-                // + 0.0 makes a zero positive, as a sum from +0 is.
-                *load = sign * f + 0.0;
+            }
+            let each = out.dq[s].iter_mut().zip(out.load[s].iter_mut());
+            for ((dq, load), (step, k_hat)) in each.zip(cs.step[s].iter().zip(k_hat)) {
+                let f = *load;
+                end(dq, load, *step, *k_hat, f);
             }
         }
         out.hh = hh;

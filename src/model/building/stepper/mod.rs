@@ -443,12 +443,18 @@ impl<'a> Stepper<'a> {
             }
         }
         let sears = sc.contact == ContactModel::Sears;
+        let zones = if sc.reading == SlabReading::Paper {
+            sc.zone_lengths(levels)
+        } else {
+            vec![0.0; levels.len()]
+        };
         let points: Vec<Point> = levels
             .iter()
-            .map(|level| {
+            .zip(zones)
+            .map(|(level, zone)| {
                 // A summary's slabs keep no forces: their waves are not drawn.
                 let share = if histories { grid.slab_share } else { 0 };
-                new_point(sc, &sides, level, grid.h, sears, share)
+                new_point(sc, &sides, (level, zone), grid.h, sears, share)
             })
             .collect();
         let signals = Signal::all(&sides, &points, tracked);
@@ -694,11 +700,11 @@ impl<'a> Stepper<'a> {
 }
 
 /// A contact point at `level`: its element, its projections onto both buildings' modes and, for
-/// the Sears contact, its slabs.
+/// the Sears contact, its slabs (read at `zone` from their contact ends).
 fn new_point(
     sc: &BuildingScenario,
     sides: &[Side; 2],
-    level: &Level,
+    (level, zone): (&Level, f64),
     h: f64,
     sears: bool,
     share: usize,
@@ -718,11 +724,6 @@ fn new_point(
         sc.restitution,
         1.0 / inverse_mass,
     );
-    let zone = if sc.reading == SlabReading::Paper {
-        sc.level_zone_length(level)
-    } else {
-        0.0
-    };
     let slabs = sc.level_slabs(level);
     let slab = |i: usize| {
         slabs[i].filter(|_| sears).map(|(slab, mass)| {
