@@ -29,7 +29,10 @@ fn target(size: (u32, u32)) -> Option<Offscreen> {
 }
 
 fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("pounding-animation-{}", std::process::id()));
+    // Under the build's own scratch folder (cargo clean empties it), not the system's: these
+    // files are left for a failed test's reader.
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("pounding-animation-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     dir.join(name)
 }

@@ -10,7 +10,10 @@ mod common;
 
 /// A scratch file unique to this test process.
 fn scratch(name: &str, bytes: &[u8]) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("pounding-hostile-{}", std::process::id()));
+    // Under the build's own scratch folder (cargo clean empties it), not the system's: these
+    // files are left for a failed test's reader.
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("pounding-hostile-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join(name);
     std::fs::write(&path, bytes).unwrap();
