@@ -167,7 +167,10 @@ pub fn fundamental_omega_squared(masses: &[f64], stiffnesses: &[f64]) -> f64 {
 pub fn omega_squared_range(masses: &[f64], stiffnesses: &[f64]) -> (f64, f64) {
     let (diag, off) = scaled_stiffness(masses, stiffnesses);
     let last = diag.len().saturating_sub(1);
-    (omega_squared_at(&diag, &off, 0), omega_squared_at(&diag, &off, last))
+    (
+        omega_squared_at(&diag, &off, 0),
+        omega_squared_at(&diag, &off, last),
+    )
 }
 
 /// The eigenvalue of index `index` (from the smallest) of the tridiagonal matrix, by bisection
@@ -712,6 +715,24 @@ mod tests {
         assert!((sturm - w0).abs() <= 1e-12 * w0, "{sturm} against {w0}");
         let one = fundamental_omega_squared(&[36_000.0], &[1.16e7]);
         assert!((one - 1.16e7 / 36_000.0).abs() <= 1e-13 * one);
+    }
+
+    #[test]
+    fn the_sturm_range_of_frequencies_is_the_lowest_and_the_highest_mode() {
+        // A 60-storey building whose stiffnesses fall and masses vary floor by floor, and one
+        // storey (both ends the same frequency).
+        let ms: Vec<f64> = (0..60)
+            .map(|j| 2.0e5 * (1.0 + 0.4 * (0.7 * j as f64).cos()))
+            .collect();
+        let ks: Vec<f64> = (0..60).map(|j| 5.0e8 * (1.5 - 0.02 * j as f64)).collect();
+        let w = Modes::of_shear_building(&ms, &ks, 0.05, DampingModel::Modal).omega_rad_s;
+        let (lo, hi) = omega_squared_range(&ms, &ks);
+        let (w_lo, w_hi) = (w[0] * w[0], w[59] * w[59]);
+        assert!((lo - w_lo).abs() <= 1e-11 * w_lo, "{lo} against {w_lo}");
+        assert!((hi - w_hi).abs() <= 1e-11 * w_hi, "{hi} against {w_hi}");
+        let (a, b) = omega_squared_range(&[36_000.0], &[1.16e7]);
+        assert_eq!(a, b);
+        assert!((a - 1.16e7 / 36_000.0).abs() <= 1e-13 * a);
     }
 
     #[test]

@@ -60,6 +60,20 @@ fn per(values: &[f64], j: usize) -> f64 {
     }
 }
 
+/// What a building's modes are remembered by: the bits of its masses, its stiffnesses and its
+/// damping ratio, and its damping model.
+type ModesKey = (Vec<u64>, Vec<u64>, u64, DampingModel);
+
+/// The modes of the last few tall buildings asked for ([`Building::modes`]).
+static RECENT_MODES: std::sync::Mutex<Vec<(ModesKey, Modes)>> = std::sync::Mutex::new(Vec::new());
+
+/// How many buildings' modes are remembered: both sides of the run and of the window's last
+/// change.
+const REMEMBERED_MODES: usize = 4;
+
+/// The fewest storeys whose modes are remembered.
+const REMEMBERED_FROM_STOREYS: usize = 16;
+
 /// One shear building: N storeys, floor j carrying the mass m_j at elevation h_1 + ... + h_j,
 /// storey j (between floors j-1 and j, floor 0 the ground) of shear stiffness k_j, and a slab at
 /// every floor. Per-storey lists hold one value (for every storey) or N.
@@ -193,13 +207,38 @@ impl Building {
         self.masses().iter().sum()
     }
     /// Its modes, with its damping.
+    ///
+    /// A tall building's are remembered for the last few buildings asked for: a run, its error
+    /// estimate's companion, the run without contact and the window's next change ask for the
+    /// same buildings, and 100 storeys take 3e7 instructions each time. The modes are a function
+    /// of the masses, the stiffnesses and the damping alone, so a remembered answer is the one
+    /// computing it again would give, bit for bit.
     pub fn modes(&self) -> Modes {
-        Modes::of_shear_building(
-            &self.masses(),
-            &self.stiffnesses(),
-            self.damping_ratio,
+        let (masses, stiffnesses) = (self.masses(), self.stiffnesses());
+        let compute =
+            || Modes::of_shear_building(&masses, &stiffnesses, self.damping_ratio, self.damping);
+        // A few storeys take less to solve than to look up.
+        if masses.len() < REMEMBERED_FROM_STOREYS {
+            return compute();
+        }
+        let bits = |x: &[f64]| x.iter().map(|v| v.to_bits()).collect::<Vec<u64>>();
+        let key = (
+            bits(&masses),
+            bits(&stiffnesses),
+            self.damping_ratio.to_bits(),
             self.damping,
-        )
+        );
+        let recent = || RECENT_MODES.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some((_, m)) = recent().iter().find(|(k, _)| *k == key) {
+            return m.clone();
+        }
+        let modes = compute();
+        let mut kept = recent();
+        if kept.len() >= REMEMBERED_MODES {
+            kept.remove(0);
+        }
+        kept.push((key, modes.clone()));
+        modes
     }
     /// The square of the fundamental circular frequency [rad^2/s^2], without the other modes.
     pub fn fundamental_omega_squared(&self) -> f64 {
@@ -578,4 +617,49 @@ fn spread_of_modes(side: usize, b: &Building) -> Result<(), InputError> {
             "the storeys' stiffnesses and masses differ so much that the squared frequencies span more than {MAX_MODE_SPREAD:e}, so the longest period is lost to round-off; bring the storey stiffnesses (and masses) within a factor of about 1e9 of each other"
         ),
     ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A building of `storeys` storeys of the paper's left building's values.
+    fn tall(storeys: usize) -> Building {
+        Building {
+            storeys,
+            ..BuildingScenario::paper().left
+        }
+    }
+
+    #[test]
+    fn a_tall_buildings_remembered_modes_are_its_own_and_a_changed_one_gets_its_own() {
+        let direct = |b: &Building| {
+            Modes::of_shear_building(&b.masses(), &b.stiffnesses(), b.damping_ratio, b.damping)
+        };
+        let a = tall(30);
+        // Asked twice: the second answer is the remembered one, the same bits as solving again.
+        assert_eq!(a.modes(), direct(&a));
+        assert_eq!(a.modes(), direct(&a));
+        // One storey's stiffness, the damping ratio, the damping model changed: each is another
+        // building, whose modes are its own, not the remembered ones.
+        let mut stiffer = a.clone();
+        stiffer.stiffnesses_n_m = (0..30)
+            .map(|j| a.stiffnesses()[j] * if j == 7 { 1.5 } else { 1.0 })
+            .collect();
+        let damped = Building {
+            damping_ratio: 0.02,
+            ..a.clone()
+        };
+        let rayleigh = Building {
+            damping: DampingModel::Rayleigh { modes: [1, 3] },
+            ..a.clone()
+        };
+        for other in [&stiffer, &damped, &rayleigh, &tall(31)] {
+            let (got, expected) = (other.modes(), direct(other));
+            assert_eq!(got, expected);
+            assert_ne!(got, direct(&a));
+        }
+        // Five buildings asked for since: the first is solved again, still its own.
+        assert_eq!(a.modes(), direct(&a));
+    }
 }
