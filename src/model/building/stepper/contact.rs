@@ -396,21 +396,22 @@ impl Stepper<'_> {
                 *dq = step + sign * f / k_hat;
                 *load = sign * f + 0.0;
             };
-            let each = out.dq[s].iter_mut().zip(out.load[s].iter_mut());
-            let each = each.zip(cs.step[s].iter().zip(k_hat));
-            if k_hat.len() == 1 {
-                // One mode: its sum straight from the points, in the points' order (zipped, not
-                // indexed: a loop this short is mostly its set-up).
-                for ((dq, load), (step, k_hat)) in each {
-                    let mut f = 0.0;
-                    for &i in &cs.awake {
-                        let force = out.forces[i];
-                        if force != 0.0 {
-                            f += self.points[i].r[s][0] * force;
-                        }
+            if let [k_hat] = k_hat {
+                // One mode: its sum straight from the points, in the points' order.
+                let mut f = 0.0;
+                for &i in &cs.awake {
+                    let force = out.forces[i];
+                    if force != 0.0 {
+                        f += self.points[i].r[s][0] * force;
                     }
-                    end(dq, load, *step, *k_hat, f);
                 }
+                end(
+                    &mut out.dq[s][0],
+                    &mut out.load[s][0],
+                    cs.step[s][0],
+                    *k_hat,
+                    f,
+                );
                 continue;
             }
             // Each mode's sum, in the points' order, made point by point in `load`: a pass over

@@ -103,7 +103,7 @@ impl Stepper<'_> {
     }
 
     /// Both sides' exact states j fine steps after the start of the stretch from `y0`.
-    fn states_at(
+    pub(super) fn states_at(
         &self,
         y0: &[Vec<[f64; 4]>; 2],
         j: usize,

@@ -12,22 +12,9 @@ impl Stepper<'_> {
         if j > 1 {
             // Exactly to the grid point before.
             let y0 = [self.initial(0, t0), self.initial(1, t0)];
-            let q: [Vec<f64>; 2] = std::array::from_fn(|s| {
-                self.sides[s]
-                    .maps(j - 1)
-                    .iter()
-                    .zip(&y0[s])
-                    .map(|(p, y)| p.apply(y).0)
-                    .collect()
-            });
-            let v: [Vec<f64>; 2] = std::array::from_fn(|s| {
-                self.sides[s]
-                    .maps(j - 1)
-                    .iter()
-                    .zip(&y0[s])
-                    .map(|(p, y)| p.apply(y).1)
-                    .collect()
-            });
+            let mut q = [0, 1].map(|s| vec![0.0; self.sides[s].modes()]);
+            let mut v = q.clone();
+            self.states_at(&y0, j - 1, &mut q, &mut v);
             self.commit_free(
                 [&y0[0], &y0[1]],
                 [&q[0], &q[1]],
