@@ -155,8 +155,16 @@ fn plan(
         as usize)
         .clamp(1, per_free_step);
     let slab_share = slab_share(slabs);
+    // The peaks' proofs look at the signals once a batch of contact steps: at most a third of
+    // the contact's time scale (steps per scale, not the step: the companion's batches are as
+    // many of its steps, half as long), and at most 8 steps, past which a look costs little
+    // more than the steps' sums of sizes.
+    let read_every = ((steps / 3.0).floor() as usize).clamp(1, 8);
+    #[cfg(test)]
+    let read_every = tests::READ_EVERY.with(|r| r.get()).unwrap_or(read_every);
     (
         Grid {
+            read_every,
             h,
             per_free_step,
             per_stretch,
@@ -621,6 +629,67 @@ mod tests {
     thread_local! {
         /// The slabs' memory budget a test sets on its own thread.
         pub(super) static BUDGET: Cell<Option<f64>> = const { Cell::new(None) };
+        /// The contact steps a batch of the peaks' proofs takes, as a test sets it.
+        pub(super) static READ_EVERY: Cell<Option<usize>> = const { Cell::new(None) };
+    }
+
+    /// Peaks a batch of contact steps finds against those a look at every step finds: the
+    /// cubic through a batch's ends against the steps' own cubics.
+    #[test]
+    fn peaks_looked_at_once_a_batch_of_contact_steps_are_the_steps_own_within_a_part_in_ten_million()
+     {
+        let m = crate::io::motion::built_in("elcentro-1940")
+            .unwrap()
+            .truncated(8.0);
+        let mut cases = Vec::new();
+        for contact in [
+            ContactModel::Sears,
+            ContactModel::Kelvin,
+            ContactModel::Hertz,
+        ] {
+            let setup: crate::io::building_settings::BuildingSetup =
+                crate::io::preset::load_for("mdof-3-5", "buildings").expect("preset");
+            let mut sc = setup.scenario;
+            sc.contact = contact;
+            cases.push(sc.clone());
+            sc.left.storeys = 12;
+            sc.right.storeys = 20;
+            cases.push(sc);
+        }
+        for sc in cases {
+            let grid = planned(&sc, &m, 1).expect("plan").grid;
+            assert_eq!(
+                grid.read_every, 8,
+                "{:?}: batches of 8 at the default",
+                sc.contact
+            );
+            let batched = solve(&sc, &m).expect("run");
+            READ_EVERY.with(|r| r.set(Some(1)));
+            let stepwise = solve(&sc, &m);
+            READ_EVERY.with(|r| r.set(None));
+            let stepwise = stepwise.expect("run");
+            assert!(batched.stats.contact_steps > 1000, "{:?}", sc.contact);
+            for s in 0..2 {
+                let pairs = [
+                    (
+                        &batched.peak_floor_displacement_m[s],
+                        &stepwise.peak_floor_displacement_m[s],
+                    ),
+                    (&batched.peak_drift_ratio[s], &stepwise.peak_drift_ratio[s]),
+                ];
+                for (a, b) in pairs {
+                    for (x, y) in a.iter().zip(b) {
+                        assert!(
+                            (x - y).abs() <= 1e-7 * y.abs(),
+                            "{:?}, {} storeys: {x} against {y}",
+                            sc.contact,
+                            sc.left.storeys
+                        );
+                    }
+                }
+            }
+            assert_eq!(batched.max_pounding_force_n, stepwise.max_pounding_force_n);
+        }
     }
 
     /// The paper's buildings, 100 storeys a side (200 slabs), over 8 s of El Centro.

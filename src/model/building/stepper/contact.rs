@@ -636,15 +636,14 @@ impl Stepper<'_> {
                 cs.u_before[i] = self.point_closing(&self.points[i]);
             }
         }
-        // Per side, the sizes of the step's dq, of the velocities it ends with and of their
-        // change, summed as the modes are stepped: the peaks' proofs read them.
+        // Per side, the sizes of the step's dq and of the velocities it ends with, summed as the
+        // modes are stepped: the peaks' proofs read them.
         let mut moved = [[0.0f64; 2]; 2];
         let mut speed_after = [[0.0f64; 2]; 2];
-        let mut kick = [[0.0f64; 2]; 2];
         for s in 0..2 {
             let side = &mut self.sides[s];
             let n = side.modes();
-            let (mut m, mut sp, mut ki) = (Sizes::default(), Sizes::default(), Sizes::default());
+            let (mut m, mut sp) = (Sizes::default(), Sizes::default());
             // The state the step starts from is kept (the peaks' proofs read it) by trading the
             // modes' buffers for the kept ones, which the step then fills: no copy.
             let [q0, v0] = &mut cs.modal_before[s];
@@ -667,9 +666,9 @@ impl Stepper<'_> {
                 q[k] = q0[k] + dq;
                 v[k] = v1;
                 a[k] = a0 + da;
-                (m, sp, ki) = (m.add(dq), sp.add(v1), ki.add(v1 - v0));
+                (m, sp) = (m.add(dq), sp.add(v1));
             }
-            (moved[s], speed_after[s], kick[s]) = (m.done(), sp.done(), ki.done());
+            (moved[s], speed_after[s]) = (m.done(), sp.done());
         }
         self.advance(hh);
         if self.yields() {
@@ -713,7 +712,7 @@ impl Stepper<'_> {
             }
         }
         // Accelerations stay Newmark's inside contacts; leaving one, the free steps need none.
-        self.track_peaks_in_contact([moved, speed_after, kick], &cs.modal_before, hh);
+        self.track_peaks_in_contact([moved, speed_after], &cs.modal_before, hh);
         self.record_in_contact(opened_or_closed);
     }
 

@@ -61,6 +61,9 @@ pub(super) struct Grid {
     pub total: usize,
     /// Fine steps between two checks of a free stretch at most.
     pub check: usize,
+    /// Contact steps the peaks' proofs take in one batch at most
+    /// ([`Stepper::track_peaks_in_contact`]).
+    pub read_every: usize,
     /// The spacing of the recorded samples inside contacts [s].
     pub contact_sample_s: f64,
     /// Fine steps a planned piece of free motion takes at most where storeys yield.
@@ -334,11 +337,8 @@ pub(super) struct Stepper<'a> {
     peaks: Peaks,
     /// What the proofs know of each signal.
     proof: Vec<record::Proof>,
-    /// Whether any signal is left unread as monotone.
-    any_deferred: bool,
-    /// The sizes of each side's modal velocities where the last contact step ended, and the
-    /// step count then (a contact step straight after it starts from them).
-    speeds_after: Option<(usize, [[f64; 2]; 2])>,
+    /// The contact steps since the proofs last looked at the signals.
+    batch: record::Batch,
     pub steps: usize,
     pub contact_steps: usize,
     sears: bool,
@@ -466,8 +466,7 @@ impl<'a> Stepper<'a> {
             grid,
             peaks: Peaks::new(signals.len()),
             proof: vec![record::Proof::NONE; signals.len()],
-            any_deferred: false,
-            speeds_after: None,
+            batch: record::Batch::new([sides[0].modes(), sides[1].modes()]),
             record: Record::new(
                 sc.left.storeys,
                 sc.right.storeys,
@@ -598,7 +597,7 @@ impl<'a> Stepper<'a> {
                 self.contact_step()?;
                 continue;
             }
-            self.flush_deferred();
+            self.close_batch();
             if self.offset > 0.0 {
                 // Back onto the grid after an event inside a step.
                 let mut piece = self.grid.h - self.offset;
@@ -665,7 +664,7 @@ impl<'a> Stepper<'a> {
 
     /// The contact elements' energy at the end, and the buildings'.
     pub fn finish(&mut self, end_s: f64) -> (BuildingEnergy, bool) {
-        self.flush_deferred();
+        self.close_batch();
         let energy = self.energy_so_far();
         let still = self.points.iter().any(|p| p.force > 0.0);
         for p in self.points.iter_mut() {
