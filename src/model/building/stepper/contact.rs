@@ -343,6 +343,10 @@ impl Stepper<'_> {
             let r = &p.r[s];
             let n = r.len();
             let (q, inc) = (&self.sides[s].q[..n], &inc[s][..n]);
+            if n >= lanes::LANES_FROM {
+                *out = lanes::dot_moved(r, q, inc);
+                continue;
+            }
             for k in 0..n {
                 *out += r[k] * (q[k] + inc[k]);
             }

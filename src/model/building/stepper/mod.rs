@@ -24,6 +24,7 @@
 
 mod contact;
 mod free;
+mod lanes;
 mod onset;
 mod record;
 mod weights;
@@ -287,9 +288,12 @@ impl Point {
 
 fn dotv(a: &[f64], b: &[f64]) -> f64 {
     // Indexed over the shorter: a few modes' loop without an iterator's set-up. The sum starts
-    // where `Iterator::sum` starts for floats, at -0.
+    // where `Iterator::sum` starts for floats, at -0. A tall building's is taken in lanes.
     let n = a.len().min(b.len());
     let (a, b) = (&a[..n], &b[..n]);
+    if n >= lanes::LANES_FROM {
+        return lanes::dot(a, b);
+    }
     let mut sum = -0.0;
     for k in 0..n {
         sum += a[k] * b[k];

@@ -102,8 +102,7 @@ impl Signal {
     }
 }
 
-/// Modes from which a signal's sums are taken in four lanes.
-const LANES_FROM: usize = 16;
+use super::lanes::{self, LANES_FROM};
 
 /// The sums of c q and c v over the modes, each as [`sum_of`] takes it.
 #[inline]
@@ -118,7 +117,7 @@ fn sums_of(c: &[f64], q: &[f64], v: &[f64]) -> (f64, f64) {
     }
     // Each sum in its own pass: taken together, the compiler pairs the two sums' lanes
     // instead of each sum's, and vectorises less.
-    (in_lanes(c, q), in_lanes(c, v))
+    (lanes::dot(c, q), lanes::dot(c, v))
 }
 
 /// The sum of c q over the modes. A tall building's is taken in four interleaved partial sums
@@ -134,51 +133,7 @@ fn sum_of(c: &[f64], q: &[f64]) -> f64 {
         }
         return u;
     }
-    in_lanes(c, q)
-}
-
-/// [`sum_of`] for a tall building, in four lanes: out of line, so that the few modes' loop
-/// inlined where signals are read stays small. Where the processor has AVX, the four lanes are
-/// one 256-bit register: the same multiplications and additions in the same lanes (Rust never
-/// fuses them), so the same bits, in about half the instructions of two 128-bit registers.
-#[inline(never)]
-fn in_lanes(c: &[f64], q: &[f64]) -> f64 {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx") {
-        // SAFETY: the processor has just been found to have AVX.
-        return unsafe { in_lanes_avx(c, q) };
-    }
-    lanes(c, q)
-}
-
-/// [`lanes`] compiled for AVX.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx")]
-fn in_lanes_avx(c: &[f64], q: &[f64]) -> f64 {
-    lanes(c, q)
-}
-
-/// The sum of c q, mode k in lane k mod 4, the lanes joined pairwise.
-#[inline(always)]
-fn lanes(c: &[f64], q: &[f64]) -> f64 {
-    let q = &q[..c.len()];
-    let mut u = [0.0f64; 4];
-    let (cs, qs) = (c.chunks_exact(4), q.chunks_exact(4));
-    let (ct, qt) = (cs.remainder(), qs.remainder());
-    for (c, q) in cs.zip(qs) {
-        for l in 0..4 {
-            u[l] += c[l] * q[l];
-        }
-    }
-    for l in 0..ct.len() {
-        u[l] += ct[l] * qt[l];
-    }
-    join(u)
-}
-
-/// Four lanes joined pairwise.
-fn join(l: [f64; 4]) -> f64 {
-    (l[0] + l[2]) + (l[1] + l[3])
+    lanes::dot(c, q)
 }
 
 /// What the proofs know of a signal.
@@ -686,11 +641,6 @@ mod tests {
                 (got - exact(&q)).abs() <= n as f64 * f64::EPSILON * size,
                 "{n} modes: {got} against {}",
                 exact(&q)
-            );
-            // Whatever the processor, the same bits.
-            assert_eq!(
-                super::in_lanes(&c, &q).to_bits(),
-                super::lanes(&c, &q).to_bits()
             );
             // The pair takes each sum exactly as the single one does.
             assert_eq!(sums_of(&c, &q, &v), (sum_of(&c, &q), sum_of(&c, &v)));
