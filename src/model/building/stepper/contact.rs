@@ -645,6 +645,12 @@ impl Stepper<'_> {
         let mut moved = [[0.0f64; 2]; 2];
         let mut speed_after = [[0.0f64; 2]; 2];
         for s in 0..2 {
+            if self.sides[s].modes() >= lanes::LANES_FROM {
+                let ground = ground0 + tr.ground;
+                let sums = self.commit_in_lanes(s, &mut cs.modal_before[s], &tr.dq[s], hh, ground);
+                (moved[s], speed_after[s]) = (sums.moved, sums.speed);
+                continue;
+            }
             let side = &mut self.sides[s];
             let n = side.modes();
             let (mut m, mut sp) = (Sizes::default(), Sizes::default());
@@ -660,16 +666,14 @@ impl Stepper<'_> {
             for k in 0..n {
                 let (v0, a0) = (v0s[k], a[k]);
                 let dq = dqs[k];
-                let dv = 2.0 * dq / hh - 2.0 * v0;
-                let da = 4.0 * (dq - hh * v0) / (hh * hh) - 2.0 * a0;
-                let v1 = v0 + dv;
+                let (v1, a1) = lanes::newmark_end(dq, v0, a0, hh);
                 // Newmark's discrete energy identity: the work of the ground is half the sum of
                 // its forces times the displacement; the damping takes h/4 c (v0 + v1)^2.
                 self.ledger.input_j += 0.5 * dq * (-gamma[k]) * (ground0 + tr.ground);
                 self.ledger.damping_j += 0.25 * hh * 2.0 * zeta[k] * omega[k] * (v0 + v1).powi(2);
                 q[k] = q0[k] + dq;
                 v[k] = v1;
-                a[k] = a0 + da;
+                a[k] = a1;
                 (m, sp) = (m.add(dq), sp.add(v1));
             }
             (moved[s], speed_after[s]) = (m.done(), sp.done());
@@ -718,6 +722,37 @@ impl Stepper<'_> {
         // Accelerations stay Newmark's inside contacts; leaving one, the free steps need none.
         self.track_peaks_in_contact([moved, speed_after], &cs.modal_before, hh);
         self.record_in_contact(opened_or_closed);
+    }
+
+    /// A tall side's modes through the contact step that moves them by `dq`, its energy terms
+    /// and sizes summed in lanes ([`lanes::commit`]); its state where the step starts kept in
+    /// `before`, as [`Stepper::commit_contact`] keeps a few modes'.
+    #[cold]
+    #[inline(never)]
+    fn commit_in_lanes(
+        &mut self,
+        s: usize,
+        before: &mut [Vec<f64>; 2],
+        dq: &[f64],
+        hh: f64,
+        ground: f64,
+    ) -> lanes::Committed {
+        let side = &mut self.sides[s];
+        let [q0, v0] = before;
+        std::mem::swap(q0, &mut side.q);
+        std::mem::swap(v0, &mut side.v);
+        let ends = lanes::Ends {
+            q0,
+            v0,
+            dq,
+            coefficients: [&side.omega, &side.zeta, &side.gamma],
+            hh,
+            ground,
+        };
+        let sums = lanes::commit(&ends, &mut side.q, &mut side.v, &mut side.a);
+        self.ledger.input_j += sums.input;
+        self.ledger.damping_j += sums.damping;
+        sums
     }
 
     /// Each level's contact after the step just taken from `t0`: the work of its force, its

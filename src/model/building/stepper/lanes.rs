@@ -75,6 +75,111 @@ fn portable(c: &[f64], q: &[f64], d: Option<&[f64]>) -> f64 {
     (u[0] + u[2]) + (u[1] + u[3])
 }
 
+/// A side's modes where a contact step starts, and what it moves them by.
+pub(super) struct Ends<'a> {
+    pub q0: &'a [f64],
+    pub v0: &'a [f64],
+    pub dq: &'a [f64],
+    /// Each mode's omega, zeta and participation.
+    pub coefficients: [&'a [f64]; 3],
+    pub hh: f64,
+    /// The ground's acceleration at both ends, summed.
+    pub ground: f64,
+}
+
+/// What committing a contact step to a side's modes adds up, each sum in lanes.
+pub(super) struct Committed {
+    /// The ground's work and the damping's, by Newmark's discrete energy identity [J].
+    pub input: f64,
+    pub damping: f64,
+    /// The sizes of dq and of the velocities at the end: [the sum of |x|, the Euclidean size].
+    pub moved: [f64; 2],
+    pub speed: [f64; 2],
+}
+
+/// A contact step committed to a side's modes: q, v and a (holding the accelerations where
+/// it starts) at its end, by Newmark's average acceleration from the increments `e.dq`; the
+/// energy terms and sizes summed in lanes.
+#[inline(never)]
+pub(super) fn commit(e: &Ends, q: &mut [f64], v: &mut [f64], a: &mut [f64]) -> Committed {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx") {
+        // SAFETY: the processor has just been found to have AVX.
+        return unsafe { commit_avx(e, q, v, a) };
+    }
+    commit_portable(e, q, v, a)
+}
+
+/// [`commit_portable`] compiled for AVX.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+fn commit_avx(e: &Ends, q: &mut [f64], v: &mut [f64], a: &mut [f64]) -> Committed {
+    commit_portable(e, q, v, a)
+}
+
+#[inline(always)]
+fn commit_portable(e: &Ends, q: &mut [f64], v: &mut [f64], a: &mut [f64]) -> Committed {
+    let n = e.dq.len();
+    let (q0, v0s, dqs) = (&e.q0[..n], &e.v0[..n], &e.dq[..n]);
+    let [omega, zeta, gamma] = e.coefficients.map(|c| &c[..n]);
+    let (q, v, a) = (&mut q[..n], &mut v[..n], &mut a[..n]);
+    let hh = e.hh;
+    // Per lane: the ground's work, the damping's, |dq|, dq^2, |v1|, v1^2.
+    let mut acc = [[0.0f64; 4]; 6];
+    let full = n - n % 4;
+    for c in (0..full).step_by(4) {
+        let four = |x: &[f64]| -> [f64; 4] { x[c..c + 4].try_into().expect("four") };
+        let (q0, v0, dq) = (four(q0), four(v0s), four(dqs));
+        let (omega, zeta, gamma, a0) = (four(omega), four(zeta), four(gamma), four(a));
+        let mut ends = [[0.0f64; 4]; 3];
+        for l in 0..4 {
+            let (v1, a1) = newmark_end(dq[l], v0[l], a0[l], hh);
+            acc[0][l] += 0.5 * dq[l] * (-gamma[l]) * e.ground;
+            acc[1][l] += 0.25 * hh * 2.0 * zeta[l] * omega[l] * (v0[l] + v1).powi(2);
+            acc[2][l] += dq[l].abs();
+            acc[3][l] += dq[l] * dq[l];
+            acc[4][l] += v1.abs();
+            acc[5][l] += v1 * v1;
+            ends[0][l] = q0[l] + dq[l];
+            ends[1][l] = v1;
+            ends[2][l] = a1;
+        }
+        q[c..c + 4].copy_from_slice(&ends[0]);
+        v[c..c + 4].copy_from_slice(&ends[1]);
+        a[c..c + 4].copy_from_slice(&ends[2]);
+    }
+    for k in full..n {
+        let l = k - full;
+        let (v0, dq) = (v0s[k], dqs[k]);
+        let (v1, a1) = newmark_end(dq, v0, a[k], hh);
+        acc[0][l] += 0.5 * dq * (-gamma[k]) * e.ground;
+        acc[1][l] += 0.25 * hh * 2.0 * zeta[k] * omega[k] * (v0 + v1).powi(2);
+        acc[2][l] += dq.abs();
+        acc[3][l] += dq * dq;
+        acc[4][l] += v1.abs();
+        acc[5][l] += v1 * v1;
+        q[k] = q0[k] + dq;
+        v[k] = v1;
+        a[k] = a1;
+    }
+    let join = |l: [f64; 4]| (l[0] + l[2]) + (l[1] + l[3]);
+    Committed {
+        input: join(acc[0]),
+        damping: join(acc[1]),
+        moved: [join(acc[2]), join(acc[3]).sqrt()],
+        speed: [join(acc[4]), join(acc[5]).sqrt()],
+    }
+}
+
+/// A mode's velocity and acceleration at the end of a Newmark step of length hh that moved it
+/// by dq from velocity v0 and acceleration a0, in incremental form.
+#[inline(always)]
+pub(super) fn newmark_end(dq: f64, v0: f64, a0: f64, hh: f64) -> (f64, f64) {
+    let dv = 2.0 * dq / hh - 2.0 * v0;
+    let da = 4.0 * (dq - hh * v0) / (hh * hh) - 2.0 * a0;
+    (v0 + dv, a0 + da)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
