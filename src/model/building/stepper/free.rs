@@ -713,7 +713,10 @@ impl Stepper<'_> {
         }
     }
 
-    /// A point's closing motion u_left - u_right and its rate, from modal states.
+    /// A point's closing motion u_left - u_right and its rate, from modal states. Inlined where
+    /// it is read: out of line (as the compiler left it once a tall side's sums took a branch
+    /// of their own), `pounding gaps` took 5% more instructions.
+    #[inline(always)]
     pub(super) fn point_state(&self, p: &Point, q: [&[f64]; 2], v: [&[f64]; 2]) -> (f64, f64) {
         (
             dotv(&p.r[0], q[0]) - dotv(&p.r[1], q[1]),

@@ -15,7 +15,9 @@
 //!   contact, solved by nonlinear Gauss-Seidel;
 //! - **impact bookkeeping**: contacts opened and closed per level, their impulse and peak;
 //! - **recording**: the histories at the resolution a plot needs (every free stretch, and inside
-//!   contacts a few samples per contact time scale), the peaks exactly between them.
+//!   contacts a few samples per contact time scale); the peaks on the cubics between the grid
+//!   points a free stretch reads, and between the ends of batches of up to 8 contact steps, where
+//!   proofs on the steps' summed reach do not show a signal below its peak.
 //!
 //! Every stage writes to one energy [`Ledger`]: the free steps with the exact integrals of the
 //! modal power, the contact steps with Newmark's discrete energy identity, so the ledger balances
@@ -342,7 +344,7 @@ pub(super) struct Stepper<'a> {
     pub record: Record,
     signals: Vec<Signal>,
     /// The signals the run follows, with what the contact steps' proofs read of each, side by
-    /// side in one array (the proofs run over every one of them at every contact step).
+    /// side in one array (the proofs run over every one of them once a batch of contact steps).
     watch: Vec<record::Watch>,
     /// The points' and the followed signals' |coefficients|, for a free stretch's bounds.
     bound_rows: weights::BoundRows,
