@@ -111,7 +111,6 @@ impl Stepper<'_> {
     /// A contact step of length hh (the last one of a graded start lands on the grid).
     pub(super) fn contact_step_of(&mut self, hh: f64) -> Result<(), SolveError> {
         self.count_step()?;
-        let np = self.points.len();
         let mut cs = self
             .contact_scratch
             .take()
@@ -123,13 +122,16 @@ impl Stepper<'_> {
         } else {
             self.start_contact_phase(&mut cs);
         }
-        for i in 0..np {
-            if self.points[i].force <= 0.0 && !cs.asleep[i] {
+        // The levels awake where the last step ended (every level where a phase starts): a
+        // level asleep stays so until `wake_reached` wakes it.
+        for j in 0..cs.awake.len() {
+            let i = cs.awake[j];
+            if self.points[i].force <= 0.0 {
                 self.follow_free_level(i, &mut cs);
             }
         }
-        cs.awake.clear();
-        cs.awake.extend((0..np).filter(|&i| !cs.asleep[i]));
+        let asleep = &cs.asleep;
+        cs.awake.retain(|&i| !asleep[i]);
         cs.ground0 = self.motion.at(self.time());
         cs.near_forced.fill(false);
         // A sleeping level the step could have brought within reach wakes, and the step is made
@@ -157,6 +159,8 @@ impl Stepper<'_> {
         self.newmark = true;
         // The free stretch before moved every level: none is known to be out of reach.
         cs.asleep.fill(false);
+        cs.awake.clear();
+        cs.awake.extend(0..self.points.len());
     }
 
     /// A level out of contact follows the motion: its overlap and rate are the kinematics now,
@@ -188,7 +192,7 @@ impl Stepper<'_> {
             self.trial(hh, cs);
         }
         // A quiet slab (its waves only ringing) starts stepping where its level is pushed.
-        if self.sears && self.revive_pushed(&cs.trial.forces) {
+        if self.sears && self.revive_pushed(&cs.awake, &cs.trial.forces) {
             self.trial(hh, cs);
         }
         // A Kelvin-Voigt link lets go where k delta + c delta' reaches zero, inside the step.
@@ -289,14 +293,15 @@ impl Stepper<'_> {
         any
     }
 
-    /// Revives the quiet slabs of every level the trial pushes; whether there were any (the
-    /// trial must then be made again, with their stepped waves).
-    fn revive_pushed(&mut self, forces: &[f64]) -> bool {
+    /// Revives the quiet slabs of every level the trial pushes (only the `awake` ones take part
+    /// in it); whether there were any (the trial must then be made again, with their stepped
+    /// waves).
+    fn revive_pushed(&mut self, awake: &[usize], forces: &[f64]) -> bool {
         let n = self.n;
         let mut any = false;
-        for (p, f) in self.points.iter_mut().zip(forces) {
-            if *f > 0.0 {
-                for slab in p.slabs.iter_mut().flatten() {
+        for &i in awake {
+            if forces[i] > 0.0 {
+                for slab in self.points[i].slabs.iter_mut().flatten() {
                     if !slab.is_live() {
                         slab.revive(n);
                         any = true;
@@ -685,13 +690,10 @@ impl Stepper<'_> {
         }
         // A level asleep has no live slab: it fell asleep with its slabs quiet (a live one's
         // ringing has no bound), and only a level the step pushes revives them.
-        for ((p, f1), asleep) in self.points.iter_mut().zip(&tr.forces).zip(&cs.asleep) {
-            if *asleep {
-                continue;
-            }
-            for slab in p.slabs.iter_mut().flatten() {
+        for &i in &cs.awake {
+            for slab in self.points[i].slabs.iter_mut().flatten() {
                 if slab.is_live() {
-                    slab.push(*f1);
+                    slab.push(tr.forces[i]);
                 }
             }
         }
@@ -711,8 +713,9 @@ impl Stepper<'_> {
             self.contact_loads(&mut cs.trial.load);
         }
         if self.sears {
-            for (p, asleep) in self.points.iter_mut().zip(&cs.asleep) {
-                if p.force <= 0.0 && !asleep {
+            for &i in &cs.awake {
+                let p = &mut self.points[i];
+                if p.force <= 0.0 {
                     for slab in p.slabs.iter_mut().flatten() {
                         slab.settle();
                     }
