@@ -5,6 +5,8 @@
 
 use super::yielding::MAX_PASSES;
 use super::*;
+use std::cmp::Reverse;
+use std::collections::BinaryHeap;
 
 /// A contact step computed but not taken.
 #[derive(Default)]
@@ -48,11 +50,11 @@ pub(super) struct Scratch {
     /// Each mode's load from the contact forces where the step starts, per side.
     load_now: [Vec<f64>; 2],
     /// Per point: shown out of reach since the contact phase began without reading it (its
-    /// closing is not evaluated, it takes no part in the step), and the proven lower bound on
-    /// its gap less its closing and its slabs' ringing; that bound after the trial.
+    /// closing is not evaluated, it takes no part in the step).
     asleep: Vec<bool>,
-    margin: Vec<f64>,
-    margin_next: Vec<f64>,
+    /// The sleeping levels, each under its proven lower bound on its gap less its closing and
+    /// its slabs' ringing.
+    sleep: Sleepers,
     /// The points the step reads: in contact or within reach, in ascending order.
     awake: Vec<usize>,
     trial: Trial,
@@ -65,6 +67,55 @@ pub(super) struct Scratch {
     closing_step: Vec<usize>,
     /// Yielding storeys: each side's load of their corrections at the trial's end, per mode.
     pseudo1: [Vec<f64>; 2],
+}
+
+/// The levels asleep in a contact phase, looked at only when the steps could have moved one
+/// out of its margin: a step moves a level's closing by at most its projections' sizes times
+/// the sizes of each side's dq (Cauchy-Schwarz), so the steps' sizes summed per side since a
+/// level's margin was found bound what they took of it. A heap orders the levels by the sum
+/// (of both sides', against the larger of its two sizes) at which their margin could be gone.
+#[derive(Default)]
+struct Sleepers {
+    /// Each side's dq sizes summed over the phase's steps taken.
+    moved: [f64; 2],
+    /// Per level: its margin, and `moved` where it was found.
+    base: Vec<(f64, [f64; 2])>,
+    /// The levels asleep, by the sum of both sides' `moved` at which each must be looked at
+    /// (the bits of a non-negative float order as it does).
+    due: BinaryHeap<Reverse<(u64, usize)>>,
+    /// The levels the trial looked at: each with its key in `due`, and its margin at the
+    /// trial's end (NaN for one that woke).
+    looked: Vec<(u64, usize, f64)>,
+    /// The sizes of the trial's dq per side.
+    trial: [f64; 2],
+}
+
+impl Sleepers {
+    /// The margin of a level whose projections' sizes are `norm` once the sides' dq sizes have
+    /// summed to `moved`: less a hair over the Cauchy-Schwarz bound, which covers the round-off
+    /// of the sums.
+    fn left(&self, i: usize, norm: [f64; 2], moved: [f64; 2]) -> f64 {
+        let (margin, at) = self.base[i];
+        margin - (norm[0] * (moved[0] - at[0]) + norm[1] * (moved[1] - at[1])) * (1.0 + 1e-9)
+    }
+
+    /// Level i asleep with `margin` where the sides' dq sizes sum to `moved`.
+    fn keep(&mut self, i: usize, norm: [f64; 2], margin: f64, moved: [f64; 2]) {
+        self.base[i] = (margin, moved);
+        // The sum at which the margin could be gone, a hair early: below the rounding of the
+        // sums it is compared with (a level due at once is looked at every step, as before).
+        let key = ((moved[0] + moved[1]) + margin / (norm[0].max(norm[1]) * (1.0 + 2e-9)))
+            * (1.0 - 1e-12);
+        self.due.push(Reverse((key.max(0.0).to_bits(), i)));
+    }
+
+    /// The levels the last trial looked at back in the heap as they were (the step is made
+    /// again).
+    fn put_back(&mut self) {
+        for (key, i, _) in self.looked.drain(..) {
+            self.due.push(Reverse((key, i)));
+        }
+    }
 }
 
 impl Scratch {
@@ -83,8 +134,10 @@ impl Scratch {
             near_forced: vec![false; points],
             load_now: per_mode(),
             asleep: vec![false; points],
-            margin: per_point(),
-            margin_next: per_point(),
+            sleep: Sleepers {
+                base: vec![(0.0, [0.0; 2]); points],
+                ..Sleepers::default()
+            },
             trial: Trial {
                 dq: per_mode(),
                 forces: per_point(),
@@ -161,6 +214,9 @@ impl Stepper<'_> {
         cs.asleep.fill(false);
         cs.awake.clear();
         cs.awake.extend(0..self.points.len());
+        cs.sleep.due.clear();
+        cs.sleep.looked.clear();
+        cs.sleep.moved = [0.0; 2];
     }
 
     /// A level out of contact follows the motion: its overlap and rate are the kinematics now,
@@ -175,7 +231,8 @@ impl Stepper<'_> {
         let bound = p.elastic_bound_from(n);
         if c - self.sc.gap_m + bound < 0.0 {
             cs.asleep[i] = true;
-            cs.margin[i] = self.sc.gap_m - c - bound;
+            let moved = cs.sleep.moved;
+            cs.sleep.keep(i, p.norm, self.sc.gap_m - c - bound, moved);
         } else {
             p.delta = c - self.sc.gap_m - p.elastic_at(n);
             p.rate = w;
@@ -218,37 +275,40 @@ impl Stepper<'_> {
         }
     }
 
-    /// Each sleeping level's margin after the trial: less the most the trial's modal increments
-    /// can move it, or, where that leaves none, read exactly at the trial's end. A level whose
-    /// exact reading finds it within reach wakes (read exactly where the step starts); whether
-    /// any did, and the step must be made again.
+    /// Each sleeping level's margin after the trial: less the most the steps' modal increments
+    /// can have moved it since it was found, or, where that leaves none, read exactly at the
+    /// trial's end. Only the levels whose margin the steps could have used up are looked at
+    /// ([`Sleepers`]). A level whose exact reading finds it within reach wakes (read exactly
+    /// where the step starts); whether any did, and the step must be made again.
     fn wake_reached(&mut self, cs: &mut Scratch) -> bool {
+        cs.sleep.put_back();
         if cs.awake.len() == self.points.len() {
             return false;
         }
-        let moved: [f64; 2] =
+        let size: [f64; 2] =
             std::array::from_fn(|s| cs.trial.dq[s].iter().map(|x| x * x).sum::<f64>().sqrt());
+        cs.sleep.trial = size;
+        let moved = [cs.sleep.moved[0] + size[0], cs.sleep.moved[1] + size[1]];
+        let total = moved[0] + moved[1];
         let (n, gap) = (self.n, self.sc.gap_m);
         let mut any = false;
-        for i in 0..self.points.len() {
-            if !cs.asleep[i] {
-                continue;
+        while let Some(&Reverse((key, i))) = cs.sleep.due.peek() {
+            if f64::from_bits(key) > total {
+                break;
             }
+            cs.sleep.due.pop();
             let p = &self.points[i];
-            // A hair over the Cauchy-Schwarz bound covers the round-off of both sums.
-            let reach = (p.norm[0] * moved[0] + p.norm[1] * moved[1]) * (1.0 + 1e-9);
-            let left = cs.margin[i] - reach;
+            let left = cs.sleep.left(i, p.norm, moved);
             if left > 0.0 {
-                cs.margin_next[i] = left;
+                cs.sleep.looked.push((key, i, left));
                 continue;
             }
-
             let exact = gap - self.closing_after(p, &cs.trial.dq) - p.elastic_bound_from(n + 1);
             if exact > 0.0 {
-                cs.margin_next[i] = exact;
+                cs.sleep.looked.push((key, i, exact));
                 continue;
             }
-
+            cs.sleep.looked.push((key, i, f64::NAN));
             let (c, w) = self.point_now(i);
             let p = &mut self.points[i];
             p.delta = c - gap - p.elastic_at(n);
@@ -257,6 +317,8 @@ impl Stepper<'_> {
             any = true;
         }
         if any {
+            // The woken levels go into the step, which is made again: the others go back.
+            cs.sleep.looked.retain(|l| !l.2.is_nan());
             cs.awake.clear();
             cs.awake
                 .extend((0..self.points.len()).filter(|&i| !cs.asleep[i]));
@@ -697,19 +759,23 @@ impl Stepper<'_> {
                 }
             }
         }
-        // A sleeping level keeps sleeping with what the trial left of its margin.
-        let mut asleep_without_force = true;
-        for i in 0..self.points.len() {
-            if cs.asleep[i] {
-                cs.margin[i] = cs.margin_next[i];
-                asleep_without_force &= self.points[i].force == 0.0;
+        // A sleeping level keeps sleeping with what the trial left of its margin (those the
+        // trial looked at: the others' margins are still their bases less the steps' sizes).
+        if !cs.sleep.due.is_empty() || !cs.sleep.looked.is_empty() {
+            let sl = &mut cs.sleep;
+            sl.moved = [sl.moved[0] + sl.trial[0], sl.moved[1] + sl.trial[1]];
+            let moved = sl.moved;
+            for (_, i, margin) in std::mem::take(&mut sl.looked) {
+                sl.keep(i, self.points[i].norm, margin, moved);
             }
         }
+        // A level falls asleep only without force, and nothing pushes it while it sleeps.
+        debug_assert!((0..self.points.len()).all(|i| !cs.asleep[i] || self.points[i].force == 0.0));
         let opened_or_closed = self.account_contacts(cs, t0);
         self.contact_steps += 1;
         // The trial summed the loads of the awake points' forces as it found them: a link let go
-        // inside the step, or a force held by a point out of it, makes them again.
-        if cs.trial.released.is_some() || !asleep_without_force {
+        // inside the step makes them again.
+        if cs.trial.released.is_some() {
             self.contact_loads(&mut cs.trial.load);
         }
         if self.sears {
@@ -870,5 +936,87 @@ impl Stepper<'_> {
             [&self.sides[0].q, &self.sides[1].q],
             [&self.sides[0].v, &self.sides[1].v],
         )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Fixed pseudo-random values in [0, 1).
+    fn values(seed: u64, n: usize) -> Vec<f64> {
+        let mut x = seed;
+        (0..n)
+            .map(|_| {
+                x = x
+                    .wrapping_mul(6364136223846793005)
+                    .wrapping_add(1442695040888963407);
+                (x >> 11) as f64 / (1u64 << 53) as f64
+            })
+            .collect()
+    }
+
+    /// The heap looks at a sleeping level no later than the first step after which the steps'
+    /// summed reach could have used up its margin (the test a look at every level at every
+    /// step made), over sizes spanning twelve decades; most levels have both sides' sizes
+    /// alike, where the heap's key is the margin's exact end, and the steps are short against
+    /// the margins, so that a key a part in a thousand late is caught.
+    #[test]
+    fn a_sleeping_level_is_looked_at_before_the_steps_could_have_used_up_its_margin() {
+        let levels = 300;
+        let r = values(3, 3 * levels);
+        let decade = |x: f64| 10f64.powf(12.0 * x - 9.0);
+        let norms: Vec<[f64; 2]> = (0..levels)
+            .map(|i| {
+                let n = decade(r[i]);
+                match i % 7 {
+                    0 => [n, 0.0],
+                    1 => [n, decade(r[levels + i])],
+                    _ => [n, n],
+                }
+            })
+            .collect();
+        let mut sl = Sleepers {
+            base: vec![(0.0, [0.0; 2]); levels],
+            ..Sleepers::default()
+        };
+        for i in 0..levels {
+            let margin = 12.0 * r[2 * levels + i] * norms[i][0].max(norms[i][1]);
+            sl.keep(i, norms[i], margin, [0.0; 2]);
+        }
+        let steps = values(11, 2 * 3000);
+        let mut looked = vec![false; levels];
+        let mut moved = [0.0f64; 2];
+        for k in 0..3000 {
+            moved = [
+                moved[0] + 1e-3 * (0.5 + steps[2 * k]),
+                moved[1] + 1e-3 * (0.5 + steps[2 * k + 1]),
+            ];
+            let total = moved[0] + moved[1];
+            while let Some(&Reverse((key, i))) = sl.due.peek() {
+                if f64::from_bits(key) > total {
+                    break;
+                }
+                sl.due.pop();
+                looked[i] = true;
+            }
+            for i in 0..levels {
+                if sl.left(i, norms[i], moved) <= 0.0 {
+                    assert!(
+                        looked[i],
+                        "level {i} at step {k}: margin used up, not looked at"
+                    );
+                }
+            }
+        }
+        // Not vacuous: many levels ran out of margin, and many never did (never looked at).
+        let used_up = (0..levels)
+            .filter(|&i| sl.left(i, norms[i], moved) <= 0.0)
+            .count();
+        let seen = looked.iter().filter(|&&x| x).count();
+        assert!(
+            used_up > levels / 4 && seen < levels - levels / 4,
+            "{used_up} {seen}"
+        );
     }
 }
