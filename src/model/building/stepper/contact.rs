@@ -454,7 +454,11 @@ impl Stepper<'_> {
         let ground = self.motion.at(self.time() + hh);
         // A whole grid step: each mode's effective stiffness is the side's, computed once.
         let full = (hh - self.grid.h).abs() <= 1e-12 * hh;
-        self.free_increment(hh, full, ground, cs);
+        if full && self.lanes_increment {
+            self.free_increment_in_lanes(hh, ground, cs);
+        } else {
+            self.free_increment(hh, full, ground, cs);
+        }
         self.contact_compliance(full, cs);
         self.contact_forces(hh, cs);
         let out = &mut cs.trial;
@@ -521,6 +525,21 @@ impl Stepper<'_> {
     fn free_increment(&self, hh: f64, full: bool, ground: f64, cs: &mut Scratch) {
         let ground_change = ground - cs.ground0;
         for s in 0..2 {
+            self.free_increment_of(s, hh, full, ground_change, cs);
+        }
+    }
+
+    /// [`Stepper::free_increment`] for side s, the ground's change over the step given.
+    #[inline(always)]
+    fn free_increment_of(
+        &self,
+        s: usize,
+        hh: f64,
+        full: bool,
+        ground_change: f64,
+        cs: &mut Scratch,
+    ) {
+        {
             let side = &self.sides[s];
 
             let n = side.modes();
@@ -553,6 +572,32 @@ impl Stepper<'_> {
                 }
                 step[k] = load / kh;
             }
+        }
+    }
+
+    /// [`Stepper::free_increment`] over a whole grid step where a side is tall and elastic: its
+    /// modes in vector lanes ([`lanes::increment`]; each mode's terms as the few modes' loop
+    /// takes them, so the same bits). Out of the few modes' way, whose step keeps its registers.
+    #[cold]
+    #[inline(never)]
+    fn free_increment_in_lanes(&self, hh: f64, ground: f64, cs: &mut Scratch) {
+        let ground_change = ground - cs.ground0;
+        for s in 0..2 {
+            let side = &self.sides[s];
+            if side.storeys.is_some() || side.modes() < lanes::LANES_FROM {
+                self.free_increment_of(s, hh, true, ground_change, cs);
+                continue;
+            }
+            let e = lanes::Increment {
+                coefficients: [&side.omega, &side.zeta, &side.gamma],
+                v: &side.v,
+                a: &side.a,
+                k_hat: &side.k_hat,
+                load_now: &cs.load_now[s],
+                hh,
+                ground_change,
+            };
+            lanes::increment(&e, &mut cs.step[s][..side.modes()]);
         }
     }
 

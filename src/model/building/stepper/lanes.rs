@@ -171,6 +171,60 @@ fn commit_portable(e: &Ends, q: &mut [f64], v: &mut [f64], a: &mut [f64]) -> Com
     }
 }
 
+/// What a tall elastic side's modes' increments over a whole grid step are made from.
+pub(super) struct Increment<'a> {
+    /// Each mode's omega, zeta and participation.
+    pub coefficients: [&'a [f64]; 3],
+    /// Each mode's velocity and acceleration where the step starts.
+    pub v: &'a [f64],
+    pub a: &'a [f64],
+    /// Each mode's effective stiffness over a whole grid step.
+    pub k_hat: &'a [f64],
+    /// Each mode's load from the contact forces where the step starts.
+    pub load_now: &'a [f64],
+    pub hh: f64,
+    pub ground_change: f64,
+}
+
+/// Each mode's increment over the step without a change of the contact forces, into `step`:
+/// Newmark's incremental form, term by term as [`Stepper::free_increment`] takes it for a few
+/// modes (no sums across modes: the same bits in vector lanes).
+///
+/// [`Stepper::free_increment`]: super::Stepper
+#[inline(never)]
+pub(super) fn increment(e: &Increment, step: &mut [f64]) {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx") {
+        // SAFETY: the processor has just been found to have AVX.
+        return unsafe { increment_avx(e, step) };
+    }
+    increment_portable(e, step)
+}
+
+/// [`increment_portable`] compiled for AVX.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+fn increment_avx(e: &Increment, step: &mut [f64]) {
+    increment_portable(e, step)
+}
+
+#[inline(always)]
+fn increment_portable(e: &Increment, step: &mut [f64]) {
+    let n = step.len();
+    let [omega, zeta, gamma] = e.coefficients.map(|c| &c[..n]);
+    let (v, a, k_hat, load_now) = (&e.v[..n], &e.a[..n], &e.k_hat[..n], &e.load_now[..n]);
+    let hh = e.hh;
+    for k in 0..n {
+        let c = 2.0 * zeta[k] * omega[k];
+        // + 0.0: an elastic side's corrections' change, as the few modes' loop adds it.
+        let load = -gamma[k] * e.ground_change - load_now[k]
+            + 0.0
+            + (4.0 / hh + 2.0 * c) * v[k]
+            + 2.0 * a[k];
+        step[k] = load / k_hat[k];
+    }
+}
+
 /// A mode's velocity and acceleration at the end of a Newmark step of length hh that moved it
 /// by dq from velocity v0 and acceleration a0, in incremental form.
 #[inline(always)]

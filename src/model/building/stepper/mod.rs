@@ -360,6 +360,8 @@ pub(super) struct Stepper<'a> {
     histories: bool,
     /// The modal accelerations are Newmark's (the last step was a contact step).
     newmark: bool,
+    /// A side is tall and elastic: a whole contact step's increments are taken in vector lanes.
+    lanes_increment: bool,
     /// The next free step is one fine step (yielding storeys near or past their yield point).
     single_step: bool,
     /// Buffers, boxed so that a stage can take them out of the stepper for the step's length
@@ -472,6 +474,9 @@ impl<'a> Stepper<'a> {
             })
             .collect();
         let signals = Signal::all(&sides, &points, tracked);
+        let lanes_increment = sides
+            .iter()
+            .any(|s| s.storeys.is_none() && s.modes() >= lanes::LANES_FROM);
         let contact_scratch =
             contact::Scratch::sized([sides[0].modes(), sides[1].modes()], points.len());
         let mut s = Stepper {
@@ -507,6 +512,7 @@ impl<'a> Stepper<'a> {
             sears,
             histories,
             newmark: false,
+            lanes_increment,
             single_step: false,
             scratch: Some(Box::default()),
             contact_scratch: Some(contact_scratch),
