@@ -312,9 +312,9 @@ fn dotv(a: &[f64], b: &[f64]) -> f64 {
 }
 
 /// Modes from which a side is a tall building: its free stretches' bounds come from tables
-/// and its signals and points are tested on where they are ([`weights`]), and its contact
-/// proofs read a signal's rate alone where the bound on its kick fails. Below, a few modes' sums
-/// are close to what they bound and cheaper taken one by one.
+/// and its signals and points are tested on where they are ([`weights`]). Below, a few modes'
+/// sums are close to what they bound and cheaper taken one by one. (Its sums are taken in
+/// vector lanes from [`lanes::LANES_FROM`] modes, the same count.)
 const TALL: usize = 16;
 
 /// The first fine step after an onset is split into steps of 1/2^G, 1/2^G, 1/2^(G-1), ... 1/2 of
