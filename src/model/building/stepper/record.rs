@@ -271,8 +271,10 @@ impl Peaks {
     }
 
     /// Signal i is (u, v) at t, where it has been shown to stay below its peak since its last
-    /// instant.
+    /// instant. Its size there counts all the same: a piece of motion no proof looked at (the
+    /// way back onto the grid after a contact ends inside a step) ends here too.
     pub(super) fn pass(&mut self, i: usize, t: f64, u: f64, v: f64) {
+        self.peak[i] = self.peak[i].max(u.abs());
         self.last[i] = (t, u, v);
     }
 
