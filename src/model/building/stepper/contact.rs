@@ -558,15 +558,20 @@ impl Stepper<'_> {
                 } else {
                     newmark_k_hat(omega[k], zeta[k], hh)
                 };
-                let c = 2.0 * zeta[k] * omega[k];
                 let pseudo_change = match pseudo {
                     Some((end, now)) => end[k] - now[k],
                     None => 0.0,
                 };
-                let load = -gamma[k] * ground_change - load_now[k]
-                    + pseudo_change
-                    + (4.0 / hh + 2.0 * c) * v[k]
-                    + 2.0 * a[k];
+                let mode = [omega[k], zeta[k], gamma[k]];
+                let load = lanes::increment_load(
+                    mode,
+                    ground_change,
+                    load_now[k],
+                    pseudo_change,
+                    v[k],
+                    a[k],
+                    hh,
+                );
                 if !full {
                     k_hat[k] = kh;
                 }
@@ -779,10 +784,11 @@ impl Stepper<'_> {
                 let (v0, a0) = (v0s[k], a[k]);
                 let dq = dqs[k];
                 let (v1, a1) = lanes::newmark_end(dq, v0, a0, hh);
-                // Newmark's discrete energy identity: the work of the ground is half the sum of
-                // its forces times the displacement; the damping takes h/4 c (v0 + v1)^2.
-                self.ledger.input_j += 0.5 * dq * (-gamma[k]) * (ground0 + tr.ground);
-                self.ledger.damping_j += 0.25 * hh * 2.0 * zeta[k] * omega[k] * (v0 + v1).powi(2);
+                let mode = [omega[k], zeta[k], gamma[k]];
+                let (input, damping) =
+                    lanes::energy_terms(dq, v0, v1, mode, hh, ground0 + tr.ground);
+                self.ledger.input_j += input;
+                self.ledger.damping_j += damping;
                 q[k] = q0[k] + dq;
                 v[k] = v1;
                 a[k] = a1;
@@ -986,30 +992,13 @@ impl Stepper<'_> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::fixed_values;
     use super::*;
 
-    /// Fixed pseudo-random values in [0, 1).
-    fn values(seed: u64, n: usize) -> Vec<f64> {
-        let mut x = seed;
-        (0..n)
-            .map(|_| {
-                x = x
-                    .wrapping_mul(6364136223846793005)
-                    .wrapping_add(1442695040888963407);
-                (x >> 11) as f64 / (1u64 << 53) as f64
-            })
-            .collect()
-    }
-
-    /// The heap looks at a sleeping level no later than the first step after which the steps'
-    /// summed reach could have used up its margin (the test a look at every level at every
-    /// step made), over sizes spanning twelve decades; most levels have both sides' sizes
-    /// alike, where the heap's key is the margin's exact end, and the steps are short against
-    /// the margins, so that a key a part in a thousand late is caught.
     #[test]
     fn a_sleeping_level_is_looked_at_before_the_steps_could_have_used_up_its_margin() {
         let levels = 300;
-        let r = values(3, 3 * levels);
+        let r = fixed_values(3, 3 * levels);
         let decade = |x: f64| 10f64.powf(12.0 * x - 9.0);
         let norms: Vec<[f64; 2]> = (0..levels)
             .map(|i| {
@@ -1029,7 +1018,7 @@ mod tests {
             let margin = 12.0 * r[2 * levels + i] * norms[i][0].max(norms[i][1]);
             sl.keep(i, norms[i], margin, [0.0; 2]);
         }
-        let steps = values(11, 2 * 3000);
+        let steps = fixed_values(11, 2 * 3000);
         let mut looked = vec![false; levels];
         let mut moved = [0.0f64; 2];
         for k in 0..3000 {

@@ -9,6 +9,26 @@
 /// cheapest there.
 pub(super) const LANES_FROM: usize = 16;
 
+/// `fn name(args) -> R` that calls `portable(args)` (`#[inline(always)]`, so compiled into each
+/// caller), compiled a second time for AVX and taken where the processor has it.
+macro_rules! with_avx {
+    ($(#[$m:meta])* $vis:vis fn $name:ident($($arg:ident: $ty:ty),* $(,)?) $(-> $ret:ty)? = $portable:ident) => {
+        $(#[$m])*
+        $vis fn $name($($arg: $ty),*) $(-> $ret)? {
+            #[cfg(target_arch = "x86_64")]
+            if std::arch::is_x86_feature_detected!("avx") {
+                #[target_feature(enable = "avx")]
+                fn avx($($arg: $ty),*) $(-> $ret)? {
+                    $portable($($arg),*)
+                }
+                // SAFETY: the processor has just been found to have AVX.
+                return unsafe { avx($($arg),*) };
+            }
+            $portable($($arg),*)
+        }
+    };
+}
+
 /// The sum of c q (q at least as long as c).
 #[inline(never)]
 pub(super) fn dot(c: &[f64], q: &[f64]) -> f64 {
@@ -22,21 +42,9 @@ pub(super) fn dot_moved(c: &[f64], q: &[f64], d: &[f64]) -> f64 {
     dispatch(c, q, Some(d))
 }
 
-#[inline(always)]
-fn dispatch(c: &[f64], q: &[f64], d: Option<&[f64]>) -> f64 {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx") {
-        // SAFETY: the processor has just been found to have AVX.
-        return unsafe { with_avx(c, q, d) };
-    }
-    portable(c, q, d)
-}
-
-/// [`portable`] compiled for AVX.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx")]
-fn with_avx(c: &[f64], q: &[f64], d: Option<&[f64]>) -> f64 {
-    portable(c, q, d)
+with_avx! {
+    #[inline(always)]
+    fn dispatch(c: &[f64], q: &[f64], d: Option<&[f64]>) -> f64 = portable
 }
 
 #[inline(always)]
@@ -97,24 +105,12 @@ pub(super) struct Committed {
     pub speed: [f64; 2],
 }
 
-/// A contact step committed to a side's modes: q, v and a (holding the accelerations where
-/// it starts) at its end, by Newmark's average acceleration from the increments `e.dq`; the
-/// energy terms and sizes summed in lanes.
-#[inline(never)]
-pub(super) fn commit(e: &Ends, q: &mut [f64], v: &mut [f64], a: &mut [f64]) -> Committed {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx") {
-        // SAFETY: the processor has just been found to have AVX.
-        return unsafe { commit_avx(e, q, v, a) };
-    }
-    commit_portable(e, q, v, a)
-}
-
-/// [`commit_portable`] compiled for AVX.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx")]
-fn commit_avx(e: &Ends, q: &mut [f64], v: &mut [f64], a: &mut [f64]) -> Committed {
-    commit_portable(e, q, v, a)
+with_avx! {
+    /// A contact step committed to a side's modes: q, v and a (holding the accelerations where
+    /// it starts) at its end, by Newmark's average acceleration from the increments `e.dq`; the
+    /// energy terms and sizes summed in lanes.
+    #[inline(never)]
+    pub(super) fn commit(e: &Ends, q: &mut [f64], v: &mut [f64], a: &mut [f64]) -> Committed = commit_portable
 }
 
 #[inline(always)]
@@ -134,12 +130,24 @@ fn commit_portable(e: &Ends, q: &mut [f64], v: &mut [f64], a: &mut [f64]) -> Com
         let mut ends = [[0.0f64; 4]; 3];
         for l in 0..4 {
             let (v1, a1) = newmark_end(dq[l], v0[l], a0[l], hh);
-            acc[0][l] += 0.5 * dq[l] * (-gamma[l]) * e.ground;
-            acc[1][l] += 0.25 * hh * 2.0 * zeta[l] * omega[l] * (v0[l] + v1).powi(2);
-            acc[2][l] += dq[l].abs();
-            acc[3][l] += dq[l] * dq[l];
-            acc[4][l] += v1.abs();
-            acc[5][l] += v1 * v1;
+            let (input, damping) = energy_terms(
+                dq[l],
+                v0[l],
+                v1,
+                [omega[l], zeta[l], gamma[l]],
+                hh,
+                e.ground,
+            );
+            for (sum, term) in acc.iter_mut().zip([
+                input,
+                damping,
+                dq[l].abs(),
+                dq[l] * dq[l],
+                v1.abs(),
+                v1 * v1,
+            ]) {
+                sum[l] += term;
+            }
             ends[0][l] = q0[l] + dq[l];
             ends[1][l] = v1;
             ends[2][l] = a1;
@@ -152,12 +160,14 @@ fn commit_portable(e: &Ends, q: &mut [f64], v: &mut [f64], a: &mut [f64]) -> Com
         let l = k - full;
         let (v0, dq) = (v0s[k], dqs[k]);
         let (v1, a1) = newmark_end(dq, v0, a[k], hh);
-        acc[0][l] += 0.5 * dq * (-gamma[k]) * e.ground;
-        acc[1][l] += 0.25 * hh * 2.0 * zeta[k] * omega[k] * (v0 + v1).powi(2);
-        acc[2][l] += dq.abs();
-        acc[3][l] += dq * dq;
-        acc[4][l] += v1.abs();
-        acc[5][l] += v1 * v1;
+        let (input, damping) =
+            energy_terms(dq, v0, v1, [omega[k], zeta[k], gamma[k]], hh, e.ground);
+        for (sum, term) in
+            acc.iter_mut()
+                .zip([input, damping, dq.abs(), dq * dq, v1.abs(), v1 * v1])
+        {
+            sum[l] += term;
+        }
         q[k] = q0[k] + dq;
         v[k] = v1;
         a[k] = a1;
@@ -186,26 +196,14 @@ pub(super) struct Increment<'a> {
     pub ground_change: f64,
 }
 
-/// Each mode's increment over the step without a change of the contact forces, into `step`:
-/// Newmark's incremental form, term by term as [`Stepper::free_increment`] takes it for a few
-/// modes (no sums across modes: the same bits in vector lanes).
-///
-/// [`Stepper::free_increment`]: super::Stepper
-#[inline(never)]
-pub(super) fn increment(e: &Increment, step: &mut [f64]) {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx") {
-        // SAFETY: the processor has just been found to have AVX.
-        return unsafe { increment_avx(e, step) };
-    }
-    increment_portable(e, step)
-}
-
-/// [`increment_portable`] compiled for AVX.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx")]
-fn increment_avx(e: &Increment, step: &mut [f64]) {
-    increment_portable(e, step)
+with_avx! {
+    /// Each mode's increment over the step without a change of the contact forces, into `step`:
+    /// Newmark's incremental form, term by term as [`Stepper::free_increment`] takes it for a few
+    /// modes (no sums across modes: the same bits in vector lanes).
+    ///
+    /// [`Stepper::free_increment`]: super::Stepper
+    #[inline(never)]
+    pub(super) fn increment(e: &Increment, step: &mut [f64]) = increment_portable
 }
 
 #[inline(always)]
@@ -215,14 +213,55 @@ fn increment_portable(e: &Increment, step: &mut [f64]) {
     let (v, a, k_hat, load_now) = (&e.v[..n], &e.a[..n], &e.k_hat[..n], &e.load_now[..n]);
     let hh = e.hh;
     for k in 0..n {
-        let c = 2.0 * zeta[k] * omega[k];
-        // + 0.0: an elastic side's corrections' change, as the few modes' loop adds it.
-        let load = -gamma[k] * e.ground_change - load_now[k]
-            + 0.0
-            + (4.0 / hh + 2.0 * c) * v[k]
-            + 2.0 * a[k];
+        // 0.0: an elastic side's corrections do not change.
+        let load = increment_load(
+            [omega[k], zeta[k], gamma[k]],
+            e.ground_change,
+            load_now[k],
+            0.0,
+            v[k],
+            a[k],
+            hh,
+        );
         step[k] = load / k_hat[k];
     }
+}
+
+/// A mode's load in Newmark's incremental form, k_hat dq = dp + (4/h + 2c) v + 2a, over a step
+/// of length hh: the ground's change (times the participation), the contact forces' load where
+/// the step starts taken off, the yielding storeys' corrections' change, and the terms of the
+/// velocity and acceleration where it starts. `[omega, zeta, gamma]` are the mode's.
+#[inline(always)]
+pub(super) fn increment_load(
+    [omega, zeta, gamma]: [f64; 3],
+    ground_change: f64,
+    load_now: f64,
+    pseudo_change: f64,
+    v: f64,
+    a: f64,
+    hh: f64,
+) -> f64 {
+    let c = 2.0 * zeta * omega;
+    -gamma * ground_change - load_now + pseudo_change + (4.0 / hh + 2.0 * c) * v + 2.0 * a
+}
+
+/// Newmark's discrete energy identity over a mode's step from v0 to v1 that moved it by dq
+/// (`[omega, zeta, gamma]` the mode's, `ground` the ground's acceleration at both ends summed):
+/// the ground's work, half the sum of its forces times the displacement, and the damping's,
+/// h/4 c (v0 + v1)^2.
+#[inline(always)]
+pub(super) fn energy_terms(
+    dq: f64,
+    v0: f64,
+    v1: f64,
+    [omega, zeta, gamma]: [f64; 3],
+    hh: f64,
+    ground: f64,
+) -> (f64, f64) {
+    (
+        0.5 * dq * (-gamma) * ground,
+        0.25 * hh * 2.0 * zeta * omega * (v0 + v1).powi(2),
+    )
 }
 
 /// A mode's velocity and acceleration at the end of a Newmark step of length hh that moved it
@@ -236,25 +275,17 @@ pub(super) fn newmark_end(dq: f64, v0: f64, a0: f64, hh: f64) -> (f64, f64) {
 
 #[cfg(test)]
 mod tests {
+    use super::super::fixed_signed;
     use super::*;
-
-    /// Fixed pseudo-random values in [-1, 1).
-    fn values(seed: u64, n: usize) -> Vec<f64> {
-        let mut x = seed;
-        (0..n)
-            .map(|_| {
-                x = x
-                    .wrapping_mul(6364136223846793005)
-                    .wrapping_add(1442695040888963407);
-                (x >> 11) as f64 / (1u64 << 52) as f64 - 1.0
-            })
-            .collect()
-    }
 
     #[test]
     fn a_sum_in_lanes_has_the_same_bits_on_every_processor() {
         for n in 0..=130 {
-            let (c, q, d) = (values(n as u64, n), values(7 + n as u64, n), values(99, n));
+            let (c, q, d) = (
+                fixed_signed(n as u64, n),
+                fixed_signed(7 + n as u64, n),
+                fixed_signed(99, n),
+            );
             assert_eq!(dot(&c, &q).to_bits(), portable(&c, &q, None).to_bits());
             assert_eq!(
                 dot_moved(&c, &q, &d).to_bits(),

@@ -288,6 +288,30 @@ impl Point {
     }
 }
 
+/// Fixed pseudo-random values in [0, 1) (a linear congruential generator's top 53 bits): the
+/// same on every run, for the stepper's tests.
+#[cfg(test)]
+fn fixed_values(seed: u64, n: usize) -> Vec<f64> {
+    let mut x = seed;
+    (0..n)
+        .map(|_| {
+            x = x
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (x >> 11) as f64 / (1u64 << 53) as f64
+        })
+        .collect()
+}
+
+/// [`fixed_values`] spread over [-1, 1) (exactly: a power of two's scaling and a shift by one).
+#[cfg(test)]
+fn fixed_signed(seed: u64, n: usize) -> Vec<f64> {
+    fixed_values(seed, n)
+        .into_iter()
+        .map(|u| 2.0 * u - 1.0)
+        .collect()
+}
+
 /// [`lanes::dot`] out of the few modes' way: the loops that read a few modes' points keep
 /// their registers (the paper's pair took 1% more instructions with the call inlined).
 #[cold]

@@ -609,25 +609,17 @@ impl Stepper<'_> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::fixed_signed;
     use super::{sum_of, sums_of};
-
-    /// Fixed pseudo-random values in [-1, 1).
-    fn values(seed: u64, n: usize) -> Vec<f64> {
-        let mut x = seed;
-        (0..n)
-            .map(|_| {
-                x = x
-                    .wrapping_mul(6364136223846793005)
-                    .wrapping_add(1442695040888963407);
-                (x >> 11) as f64 / (1u64 << 52) as f64 - 1.0
-            })
-            .collect()
-    }
 
     #[test]
     fn a_signal_summed_in_lanes_is_the_exact_sum_within_its_rounding() {
         for n in 1..=130 {
-            let (c, q, v) = (values(n as u64, n), values(7 + n as u64, n), values(99, n));
+            let (c, q, v) = (
+                fixed_signed(n as u64, n),
+                fixed_signed(7 + n as u64, n),
+                fixed_signed(99, n),
+            );
             // Products of values on a 2^-52 grid, summed exactly in 128 bits of integer.
             let exact = |x: &[f64]| -> f64 {
                 let scale = (1u64 << 52) as f64;
