@@ -105,57 +105,52 @@ pub(super) struct Committed {
     pub speed: [f64; 2],
 }
 
-with_avx! {
-    /// A contact step committed to a side's modes: q, v and a (holding the accelerations where
-    /// it starts) at its end, by Newmark's average acceleration from the increments `e.dq`; the
-    /// energy terms and sizes summed in lanes.
-    #[inline(never)]
-    pub(super) fn commit(e: &Ends, q: &mut [f64], v: &mut [f64], a: &mut [f64]) -> Committed = commit_portable
+/// A contact step committed to a side's modes: q, v and a (holding the accelerations where it
+/// starts) at its end, by Newmark's average acceleration from the increments `e.dq`; the energy
+/// terms and sizes summed in lanes. Where the processor has AVX, four modes are one register
+/// ([`avx::V4`]); elsewhere four scalars ([`F4`]): the same operations lane by lane.
+#[inline(never)]
+pub(super) fn commit(e: &Ends, q: &mut [f64], v: &mut [f64], a: &mut [f64]) -> Committed {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx") {
+        #[target_feature(enable = "avx")]
+        fn with_avx(e: &Ends, q: &mut [f64], v: &mut [f64], a: &mut [f64]) -> Committed {
+            commit_portable::<avx::V4>(e, q, v, a)
+        }
+        // SAFETY: the processor has just been found to have AVX.
+        return unsafe { with_avx(e, q, v, a) };
+    }
+    commit_portable::<F4>(e, q, v, a)
 }
 
 #[inline(always)]
-fn commit_portable(e: &Ends, q: &mut [f64], v: &mut [f64], a: &mut [f64]) -> Committed {
+fn commit_portable<L: Four>(e: &Ends, q: &mut [f64], v: &mut [f64], a: &mut [f64]) -> Committed {
     let n = e.dq.len();
     let (q0, v0s, dqs) = (&e.q0[..n], &e.v0[..n], &e.dq[..n]);
     let [omega, zeta, gamma] = e.coefficients.map(|c| &c[..n]);
     let (q, v, a) = (&mut q[..n], &mut v[..n], &mut a[..n]);
     let hh = e.hh;
-    // Per lane: the ground's work, the damping's, |dq|, dq^2, |v1|, v1^2.
-    let mut acc = [[0.0f64; 4]; 6];
+    // Per lane: the ground's work, the damping's, |dq|, dq^2, |v1|, v1^2. Four modes at a time
+    // as whole four-lane values, which the compiler keeps in vector registers (written lane by
+    // lane inside one loop, it spilled them).
+    let mut acc = [L::splat(0.0); 6];
     let full = n - n % 4;
     for c in (0..full).step_by(4) {
-        let four = |x: &[f64]| -> [f64; 4] { x[c..c + 4].try_into().expect("four") };
-        let (q0, v0, dq) = (four(q0), four(v0s), four(dqs));
-        let (omega, zeta, gamma, a0) = (four(omega), four(zeta), four(gamma), four(a));
-        let mut ends = [[0.0f64; 4]; 3];
-        for l in 0..4 {
-            let (v1, a1) = newmark_end(dq[l], v0[l], a0[l], hh);
-            let (input, damping) = energy_terms(
-                dq[l],
-                v0[l],
-                v1,
-                [omega[l], zeta[l], gamma[l]],
-                hh,
-                e.ground,
-            );
-            for (sum, term) in acc.iter_mut().zip([
-                input,
-                damping,
-                dq[l].abs(),
-                dq[l] * dq[l],
-                v1.abs(),
-                v1 * v1,
-            ]) {
-                sum[l] += term;
-            }
-            ends[0][l] = q0[l] + dq[l];
-            ends[1][l] = v1;
-            ends[2][l] = a1;
+        let (q0, v0, dq) = (L::at(q0, c), L::at(v0s, c), L::at(dqs, c));
+        let mode = [L::at(omega, c), L::at(zeta, c), L::at(gamma, c)];
+        let (v1, a1) = newmark_end(dq, v0, L::at(a, c), hh);
+        let (input, damping) = energy_terms(dq, v0, v1, mode, hh, e.ground);
+        for (sum, term) in
+            acc.iter_mut()
+                .zip([input, damping, dq.abs(), dq * dq, v1.abs(), v1 * v1])
+        {
+            *sum = *sum + term;
         }
-        q[c..c + 4].copy_from_slice(&ends[0]);
-        v[c..c + 4].copy_from_slice(&ends[1]);
-        a[c..c + 4].copy_from_slice(&ends[2]);
+        (q0 + dq).put(q, c);
+        v1.put(v, c);
+        a1.put(a, c);
     }
+    let mut acc = acc.map(L::array);
     for k in full..n {
         let l = k - full;
         let (v0, dq) = (v0s[k], dqs[k]);
@@ -178,6 +173,169 @@ fn commit_portable(e: &Ends, q: &mut [f64], v: &mut [f64], a: &mut [f64]) -> Com
         damping: join(acc[1]),
         moved: [join(acc[2]), join(acc[3]).sqrt()],
         speed: [join(acc[4]), join(acc[5]).sqrt()],
+    }
+}
+
+/// Four modes' values, one a lane: each operation lane by lane, so the same bits as four
+/// scalar ones, and one vector instruction where the processor has the lanes.
+#[derive(Clone, Copy)]
+pub(super) struct F4([f64; 4]);
+
+impl F4 {
+    #[inline(always)]
+    fn lanes(self, o: F4, f: impl Fn(f64, f64) -> f64) -> F4 {
+        F4(std::array::from_fn(|l| f(self.0[l], o.0[l])))
+    }
+}
+
+/// Four modes' values, read from and written to four consecutive modes.
+pub(super) trait Four: Lane {
+    fn at(x: &[f64], c: usize) -> Self;
+    fn put(self, x: &mut [f64], c: usize);
+    fn array(self) -> [f64; 4];
+}
+
+impl Four for F4 {
+    #[inline(always)]
+    fn at(x: &[f64], c: usize) -> F4 {
+        F4(x[c..c + 4].try_into().expect("four"))
+    }
+    #[inline(always)]
+    fn put(self, x: &mut [f64], c: usize) {
+        x[c..c + 4].copy_from_slice(&self.0);
+    }
+    #[inline(always)]
+    fn array(self) -> [f64; 4] {
+        self.0
+    }
+}
+
+/// Four lanes in one AVX register. Only made inside functions compiled for AVX, on a
+/// processor found to have it.
+#[cfg(target_arch = "x86_64")]
+mod avx {
+    use super::{Four, Lane};
+    use std::arch::x86_64::*;
+
+    #[derive(Clone, Copy)]
+    pub struct V4(__m256d);
+
+    impl Four for V4 {
+        #[inline(always)]
+        fn at(x: &[f64], c: usize) -> V4 {
+            let x = &x[c..c + 4];
+            // SAFETY: four f64 in bounds (just sliced); unaligned loads are allowed.
+            V4(unsafe { _mm256_loadu_pd(x.as_ptr()) })
+        }
+        #[inline(always)]
+        fn put(self, x: &mut [f64], c: usize) {
+            let x = &mut x[c..c + 4];
+            // SAFETY: as in `at`.
+            unsafe { _mm256_storeu_pd(x.as_mut_ptr(), self.0) }
+        }
+        #[inline(always)]
+        fn array(self) -> [f64; 4] {
+            let mut out = [0.0; 4];
+            self.put(&mut out, 0);
+            out
+        }
+    }
+
+    impl Lane for V4 {
+        #[inline(always)]
+        fn splat(x: f64) -> Self {
+            // SAFETY (here and below): a V4 is only made where AVX was found.
+            V4(unsafe { _mm256_set1_pd(x) })
+        }
+        #[inline(always)]
+        fn abs(self) -> Self {
+            // |x| clears the sign bit, as f64::abs does.
+            V4(unsafe { _mm256_andnot_pd(_mm256_set1_pd(-0.0), self.0) })
+        }
+    }
+
+    macro_rules! v4_op {
+        ($tr:ident, $f:ident, $intr:ident) => {
+            impl std::ops::$tr for V4 {
+                type Output = V4;
+                #[inline(always)]
+                fn $f(self, o: V4) -> V4 {
+                    V4(unsafe { $intr(self.0, o.0) })
+                }
+            }
+        };
+    }
+    v4_op!(Add, add, _mm256_add_pd);
+    v4_op!(Sub, sub, _mm256_sub_pd);
+    v4_op!(Mul, mul, _mm256_mul_pd);
+    v4_op!(Div, div, _mm256_div_pd);
+
+    impl std::ops::Neg for V4 {
+        type Output = V4;
+        #[inline(always)]
+        fn neg(self) -> V4 {
+            // -x flips the sign bit, as f64's negation does.
+            V4(unsafe { _mm256_xor_pd(_mm256_set1_pd(-0.0), self.0) })
+        }
+    }
+}
+
+/// What Newmark's formulas need of a value: a mode's f64, or four modes' [`F4`].
+pub(super) trait Lane:
+    Copy
+    + std::ops::Add<Output = Self>
+    + std::ops::Sub<Output = Self>
+    + std::ops::Mul<Output = Self>
+    + std::ops::Div<Output = Self>
+    + std::ops::Neg<Output = Self>
+{
+    fn splat(x: f64) -> Self;
+    fn abs(self) -> Self;
+}
+
+impl Lane for f64 {
+    #[inline(always)]
+    fn splat(x: f64) -> Self {
+        x
+    }
+    #[inline(always)]
+    fn abs(self) -> Self {
+        f64::abs(self)
+    }
+}
+
+impl Lane for F4 {
+    #[inline(always)]
+    fn splat(x: f64) -> Self {
+        F4([x; 4])
+    }
+    #[inline(always)]
+    fn abs(self) -> Self {
+        F4(self.0.map(f64::abs))
+    }
+}
+
+macro_rules! f4_op {
+    ($tr:ident, $f:ident, $op:tt) => {
+        impl std::ops::$tr for F4 {
+            type Output = F4;
+            #[inline(always)]
+            fn $f(self, o: F4) -> F4 {
+                self.lanes(o, |x, y| x $op y)
+            }
+        }
+    };
+}
+f4_op!(Add, add, +);
+f4_op!(Sub, sub, -);
+f4_op!(Mul, mul, *);
+f4_op!(Div, div, /);
+
+impl std::ops::Neg for F4 {
+    type Output = F4;
+    #[inline(always)]
+    fn neg(self) -> F4 {
+        F4(self.0.map(|x| -x))
     }
 }
 
@@ -250,26 +408,29 @@ pub(super) fn increment_load(
 /// the ground's work, half the sum of its forces times the displacement, and the damping's,
 /// h/4 c (v0 + v1)^2.
 #[inline(always)]
-pub(super) fn energy_terms(
-    dq: f64,
-    v0: f64,
-    v1: f64,
-    [omega, zeta, gamma]: [f64; 3],
+pub(super) fn energy_terms<T: Lane>(
+    dq: T,
+    v0: T,
+    v1: T,
+    [omega, zeta, gamma]: [T; 3],
     hh: f64,
     ground: f64,
-) -> (f64, f64) {
+) -> (T, T) {
+    let s = T::splat;
+    let speed = v0 + v1;
     (
-        0.5 * dq * (-gamma) * ground,
-        0.25 * hh * 2.0 * zeta * omega * (v0 + v1).powi(2),
+        s(0.5) * dq * (-gamma) * s(ground),
+        s(0.25 * hh * 2.0) * zeta * omega * (speed * speed),
     )
 }
 
 /// A mode's velocity and acceleration at the end of a Newmark step of length hh that moved it
 /// by dq from velocity v0 and acceleration a0, in incremental form.
 #[inline(always)]
-pub(super) fn newmark_end(dq: f64, v0: f64, a0: f64, hh: f64) -> (f64, f64) {
-    let dv = 2.0 * dq / hh - 2.0 * v0;
-    let da = 4.0 * (dq - hh * v0) / (hh * hh) - 2.0 * a0;
+pub(super) fn newmark_end<T: Lane>(dq: T, v0: T, a0: T, hh: f64) -> (T, T) {
+    let s = T::splat;
+    let dv = s(2.0) * dq / s(hh) - s(2.0) * v0;
+    let da = s(4.0) * (dq - s(hh) * v0) / s(hh * hh) - s(2.0) * a0;
     (v0 + dv, a0 + da)
 }
 
@@ -298,6 +459,64 @@ mod tests {
             }
             let by_hand = (lane[0] + lane[2]) + (lane[1] + lane[3]);
             assert_eq!(dot_moved(&c, &q, &d).to_bits(), by_hand.to_bits(), "{n}");
+        }
+    }
+
+    /// A commit of q, v and a (in that order).
+    type CommitFn<'a> = dyn Fn(&mut [f64], &mut [f64], &mut [f64]) -> Committed + 'a;
+
+    #[test]
+    fn a_commit_in_lanes_has_the_same_bits_on_every_processor() {
+        for n in [0, 1, 3, 4, 5, 16, 17, 103] {
+            let [q0, v0, dq, a0, omega, zeta, gamma] =
+                std::array::from_fn(|k| fixed_signed(11 * k as u64 + n as u64, n));
+            let e = Ends {
+                q0: &q0,
+                v0: &v0,
+                dq: &dq,
+                coefficients: [&omega, &zeta, &gamma],
+                hh: 1.3e-3,
+                ground: 0.7,
+            };
+            let run = |lanes: &CommitFn| {
+                let (mut q, mut v, mut a) = (vec![0.0; n], vec![0.0; n], a0.clone());
+                let c = lanes(&mut q, &mut v, &mut a);
+                let sums = [
+                    c.input, c.damping, c.moved[0], c.moved[1], c.speed[0], c.speed[1],
+                ];
+                [q, v, a, sums.to_vec()].map(|x| x.iter().map(|x| x.to_bits()).collect::<Vec<_>>())
+            };
+            let found = run(&|q, v, a| commit(&e, q, v, a));
+            assert_eq!(found, run(&|q, v, a| commit_portable::<F4>(&e, q, v, a)));
+            // Mode by mode, mode k's terms in lane k mod 4, the lanes joined pairwise.
+            let by_hand = run(&|q, v, a| {
+                let mut lane = [[0.0f64; 4]; 6];
+                for k in 0..n {
+                    let (v1, a1) = newmark_end(dq[k], v0[k], a[k], e.hh);
+                    let mode = [omega[k], zeta[k], gamma[k]];
+                    let (input, damping) = energy_terms(dq[k], v0[k], v1, mode, e.hh, e.ground);
+                    let terms = [
+                        input,
+                        damping,
+                        dq[k].abs(),
+                        dq[k] * dq[k],
+                        v1.abs(),
+                        v1 * v1,
+                    ];
+                    for (lane, term) in lane.iter_mut().zip(terms) {
+                        lane[k % 4] += term;
+                    }
+                    (q[k], v[k], a[k]) = (q0[k] + dq[k], v1, a1);
+                }
+                let join = |l: [f64; 4]| (l[0] + l[2]) + (l[1] + l[3]);
+                Committed {
+                    input: join(lane[0]),
+                    damping: join(lane[1]),
+                    moved: [join(lane[2]), join(lane[3]).sqrt()],
+                    speed: [join(lane[4]), join(lane[5]).sqrt()],
+                }
+            });
+            assert_eq!(found, by_hand, "{n} modes");
         }
     }
 }
