@@ -461,6 +461,21 @@ impl Stepper<'_> {
         }
         self.contact_compliance(full, cs);
         self.contact_forces(hh, cs);
+        if self.tall {
+            self.trial_loads_tall(full, cs);
+        } else {
+            self.trial_loads(full, cs, false);
+        }
+        let out = &mut cs.trial;
+        out.hh = hh;
+        out.ground = ground;
+        out.released = None;
+    }
+
+    /// The trial's modal loads from the contact forces and its increments with them, side by
+    /// side (`tall`: a tall side's in vector lanes, [`Stepper::trial_loads_in_lanes`]).
+    #[inline(always)]
+    fn trial_loads(&self, full: bool, cs: &mut Scratch, tall: bool) {
         let out = &mut cs.trial;
         for s in 0..2 {
             let sign = if s == 0 { -1.0 } else { 1.0 };
@@ -489,6 +504,10 @@ impl Stepper<'_> {
                 );
                 continue;
             }
+            if tall && k_hat.len() >= lanes::LANES_FROM {
+                self.trial_loads_in_lanes(s, k_hat, &cs.awake, &cs.step[s], out);
+                continue;
+            }
             // Each mode's sum, in the points' order, made point by point in `load`: a pass over
             // the modes for each point that pushes, which the compiler puts in vector lanes.
             let sums = &mut out.load[s][..];
@@ -507,9 +526,39 @@ impl Stepper<'_> {
                 end(dq, load, *step, *k_hat, f);
             }
         }
-        out.hh = hh;
-        out.ground = ground;
-        out.released = None;
+    }
+
+    /// [`Stepper::trial_loads`] where a side is tall: out of the few modes' way, whose step
+    /// keeps its registers.
+    #[cold]
+    #[inline(never)]
+    fn trial_loads_tall(&self, full: bool, cs: &mut Scratch) {
+        self.trial_loads(full, cs, true);
+    }
+
+    /// [`Stepper::trial_once`]'s modal loads and increments for a tall side s (its effective
+    /// stiffness `k_hat`): the same terms in the same order, four modes a register. Out of the
+    /// few modes' way, whose step keeps its registers.
+    #[cold]
+    #[inline(never)]
+    fn trial_loads_in_lanes(
+        &self,
+        s: usize,
+        k_hat: &[f64],
+        awake: &[usize],
+        step: &[f64],
+        out: &mut Trial,
+    ) {
+        let sign = if s == 0 { -1.0 } else { 1.0 };
+        let sums = &mut out.load[s][..];
+        sums.fill(0.0);
+        for &i in awake {
+            let force = out.forces[i];
+            if force != 0.0 {
+                lanes::add_scaled(sums, &self.points[i].r[s], force);
+            }
+        }
+        lanes::with_forces(&mut out.dq[s], &mut out.load[s], step, k_hat, sign);
     }
 
     /// Side s's effective stiffness per mode over the step being tried: the side's own over a

@@ -1,86 +1,169 @@
-//! Sums over a tall building's modes in four interleaved partial sums: mode k in lane k mod 4,
-//! the lanes joined pairwise. The compiler keeps the lanes in vector registers, so a sum over
-//! 100 modes costs about half of one taken mode after mode. Where the processor has AVX, the
-//! four lanes are one 256-bit register: the same multiplications and additions in the same lanes
-//! (Rust never fuses them), so the same bits on every processor, in about half the instructions
-//! again.
+//! Sums and updates over a tall building's modes four modes at a time: mode k in lane k mod 4,
+//! a sum's lanes joined pairwise. Where the processor has AVX, the four lanes are one 256-bit
+//! register ([`avx::V4`], its operations written out, since the compiler left loops written
+//! lane by lane half in scalar registers); elsewhere four scalars ([`F4`]). Either way the same
+//! multiplications, divisions and additions in the same lanes (Rust never fuses them), so the
+//! same bits on every processor (tested).
 
 /// Modes from which a side's sums are taken in lanes; a few modes' sum is taken in order, the
 /// cheapest there.
 pub(super) const LANES_FROM: usize = 16;
 
-/// `fn name(args) -> R` that calls `portable(args)` (`#[inline(always)]`, so compiled into each
-/// caller), compiled a second time for AVX and taken where the processor has it.
-macro_rules! with_avx {
-    ($(#[$m:meta])* $vis:vis fn $name:ident($($arg:ident: $ty:ty),* $(,)?) $(-> $ret:ty)? = $portable:ident) => {
+/// `fn name(args) -> R` that calls `generic::<L>(args)` (`#[inline(always)]`, so compiled into
+/// each caller) with four modes a value: one AVX register ([`avx::V4`]) where the processor has
+/// it, four scalars ([`F4`]) elsewhere; the same operations lane by lane either way.
+macro_rules! in_lanes {
+    ($(#[$m:meta])* $vis:vis fn $name:ident($($arg:ident: $ty:ty),* $(,)?) $(-> $ret:ty)? = $generic:ident) => {
         $(#[$m])*
+        #[inline(never)]
         $vis fn $name($($arg: $ty),*) $(-> $ret)? {
             #[cfg(target_arch = "x86_64")]
             if std::arch::is_x86_feature_detected!("avx") {
                 #[target_feature(enable = "avx")]
-                fn avx($($arg: $ty),*) $(-> $ret)? {
-                    $portable($($arg),*)
+                fn with_avx($($arg: $ty),*) $(-> $ret)? {
+                    $generic::<avx::V4>($($arg),*)
                 }
                 // SAFETY: the processor has just been found to have AVX.
-                return unsafe { avx($($arg),*) };
+                return unsafe { with_avx($($arg),*) };
             }
-            $portable($($arg),*)
+            $generic::<F4>($($arg),*)
         }
     };
 }
 
-/// The sum of c q (q at least as long as c).
-#[inline(never)]
-pub(super) fn dot(c: &[f64], q: &[f64]) -> f64 {
-    dispatch(c, q, None)
+/// Four lanes joined pairwise.
+#[inline(always)]
+fn join(l: [f64; 4]) -> f64 {
+    (l[0] + l[2]) + (l[1] + l[3])
 }
 
-/// The sum of c (q + d) (q and d at least as long as c): each term's sum q + d first, as a
-/// state moved by an increment is.
-#[inline(never)]
-pub(super) fn dot_moved(c: &[f64], q: &[f64], d: &[f64]) -> f64 {
-    dispatch(c, q, Some(d))
-}
-
-with_avx! {
-    #[inline(always)]
-    fn dispatch(c: &[f64], q: &[f64], d: Option<&[f64]>) -> f64 = portable
+in_lanes! {
+    /// The sum of c q (q at least as long as c).
+    pub(super) fn dot(c: &[f64], q: &[f64]) -> f64 = dot_in
 }
 
 #[inline(always)]
-fn portable(c: &[f64], q: &[f64], d: Option<&[f64]>) -> f64 {
+fn dot_in<L: Four>(c: &[f64], q: &[f64]) -> f64 {
     let n = c.len();
     let q = &q[..n];
-    let mut u = [0.0f64; 4];
     let full = n - n % 4;
-    match d {
-        None => {
-            for (c, q) in c[..full].chunks_exact(4).zip(q[..full].chunks_exact(4)) {
-                for l in 0..4 {
-                    u[l] += c[l] * q[l];
-                }
-            }
-            for k in full..n {
-                u[k - full] += c[k] * q[k];
-            }
-        }
-        Some(d) => {
-            let d = &d[..n];
-            let chunks = c[..full]
-                .chunks_exact(4)
-                .zip(q[..full].chunks_exact(4))
-                .zip(d[..full].chunks_exact(4));
-            for ((c, q), d) in chunks {
-                for l in 0..4 {
-                    u[l] += c[l] * (q[l] + d[l]);
-                }
-            }
-            for k in full..n {
-                u[k - full] += c[k] * (q[k] + d[k]);
-            }
-        }
+    let mut u = L::splat(0.0);
+    for (c, q) in c[..full].chunks_exact(4).zip(q[..full].chunks_exact(4)) {
+        u = u + L::at(c, 0) * L::at(q, 0);
     }
-    (u[0] + u[2]) + (u[1] + u[3])
+    let mut u = u.array();
+    for k in full..n {
+        u[k - full] += c[k] * q[k];
+    }
+    join(u)
+}
+
+in_lanes! {
+    /// The sum of c (q + d) (q and d at least as long as c): each term's sum q + d first, as a
+    /// state moved by an increment is.
+    pub(super) fn dot_moved(c: &[f64], q: &[f64], d: &[f64]) -> f64 = dot_moved_in
+}
+
+#[inline(always)]
+fn dot_moved_in<L: Four>(c: &[f64], q: &[f64], d: &[f64]) -> f64 {
+    let n = c.len();
+    let (q, d) = (&q[..n], &d[..n]);
+    let full = n - n % 4;
+    let mut u = L::splat(0.0);
+    let chunks = c[..full]
+        .chunks_exact(4)
+        .zip(q[..full].chunks_exact(4))
+        .zip(d[..full].chunks_exact(4));
+    for ((c, q), d) in chunks {
+        u = u + L::at(c, 0) * (L::at(q, 0) + L::at(d, 0));
+    }
+    let mut u = u.array();
+    for k in full..n {
+        u[k - full] += c[k] * (q[k] + d[k]);
+    }
+    join(u)
+}
+
+in_lanes! {
+    /// The sums of c q and of c v (q and v at least as long as c), each as [`dot`] takes it, in
+    /// one pass: c read once for both.
+    pub(super) fn dot2(c: &[f64], q: &[f64], v: &[f64]) -> (f64, f64) = dot2_in
+}
+
+#[inline(always)]
+fn dot2_in<L: Four>(c: &[f64], q: &[f64], v: &[f64]) -> (f64, f64) {
+    let n = c.len();
+    let (q, v) = (&q[..n], &v[..n]);
+    let full = n - n % 4;
+    let (mut u, mut r) = (L::splat(0.0), L::splat(0.0));
+    let chunks = c[..full]
+        .chunks_exact(4)
+        .zip(q[..full].chunks_exact(4))
+        .zip(v[..full].chunks_exact(4));
+    for ((c, q), v) in chunks {
+        let c = L::at(c, 0);
+        u = u + c * L::at(q, 0);
+        r = r + c * L::at(v, 0);
+    }
+    let (mut u, mut r) = (u.array(), r.array());
+    for k in full..n {
+        u[k - full] += c[k] * q[k];
+        r[k - full] += c[k] * v[k];
+    }
+    (join(u), join(r))
+}
+
+in_lanes! {
+    /// sums += r force, mode by mode (r at least as long as sums).
+    pub(super) fn add_scaled(sums: &mut [f64], r: &[f64], force: f64) = add_scaled_in
+}
+
+#[inline(always)]
+fn add_scaled_in<L: Four>(sums: &mut [f64], r: &[f64], force: f64) {
+    let n = sums.len();
+    let r = &r[..n];
+    let full = n - n % 4;
+    let f = L::splat(force);
+    for (s, r) in sums[..full]
+        .chunks_exact_mut(4)
+        .zip(r[..full].chunks_exact(4))
+    {
+        (L::at(s, 0) + L::at(r, 0) * f).put(s, 0);
+    }
+    for k in full..n {
+        sums[k] += r[k] * force;
+    }
+}
+
+in_lanes! {
+    /// Each mode's increment with the contact forces: `load` holds the sum f of the forces'
+    /// loads (without the side's sign); dq = step + sign f / k_hat, and the load becomes sign f
+    /// (+ 0.0 makes a zero positive, as a sum from +0 is).
+    pub(super) fn with_forces(dq: &mut [f64], load: &mut [f64], step: &[f64], k_hat: &[f64], sign: f64) = with_forces_in
+}
+
+#[inline(always)]
+fn with_forces_in<L: Four>(
+    dq: &mut [f64],
+    load: &mut [f64],
+    step: &[f64],
+    k_hat: &[f64],
+    sign: f64,
+) {
+    let n = k_hat.len();
+    let (dq, load, step) = (&mut dq[..n], &mut load[..n], &step[..n]);
+    let full = n - n % 4;
+    let (signs, zero) = (L::splat(sign), L::splat(0.0));
+    for c in (0..full).step_by(4) {
+        let f = L::at(load, c);
+        (L::at(step, c) + signs * f / L::at(k_hat, c)).put(dq, c);
+        (signs * f + zero).put(load, c);
+    }
+    for k in full..n {
+        let f = load[k];
+        dq[k] = step[k] + sign * f / k_hat[k];
+        load[k] = sign * f + 0.0;
+    }
 }
 
 /// A side's modes where a contact step starts, and what it moves them by.
@@ -105,26 +188,15 @@ pub(super) struct Committed {
     pub speed: [f64; 2],
 }
 
-/// A contact step committed to a side's modes: q, v and a (holding the accelerations where it
-/// starts) at its end, by Newmark's average acceleration from the increments `e.dq`; the energy
-/// terms and sizes summed in lanes. Where the processor has AVX, four modes are one register
-/// ([`avx::V4`]); elsewhere four scalars ([`F4`]): the same operations lane by lane.
-#[inline(never)]
-pub(super) fn commit(e: &Ends, q: &mut [f64], v: &mut [f64], a: &mut [f64]) -> Committed {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx") {
-        #[target_feature(enable = "avx")]
-        fn with_avx(e: &Ends, q: &mut [f64], v: &mut [f64], a: &mut [f64]) -> Committed {
-            commit_portable::<avx::V4>(e, q, v, a)
-        }
-        // SAFETY: the processor has just been found to have AVX.
-        return unsafe { with_avx(e, q, v, a) };
-    }
-    commit_portable::<F4>(e, q, v, a)
+in_lanes! {
+    /// A contact step committed to a side's modes: q, v and a (holding the accelerations where
+    /// it starts) at its end, by Newmark's average acceleration from the increments `e.dq`; the
+    /// energy terms and sizes summed in lanes.
+    pub(super) fn commit(e: &Ends, q: &mut [f64], v: &mut [f64], a: &mut [f64]) -> Committed = commit_in
 }
 
 #[inline(always)]
-fn commit_portable<L: Four>(e: &Ends, q: &mut [f64], v: &mut [f64], a: &mut [f64]) -> Committed {
+fn commit_in<L: Four>(e: &Ends, q: &mut [f64], v: &mut [f64], a: &mut [f64]) -> Committed {
     let n = e.dq.len();
     let (q0, v0s, dqs) = (&e.q0[..n], &e.v0[..n], &e.dq[..n]);
     let [omega, zeta, gamma] = e.coefficients.map(|c| &c[..n]);
@@ -167,7 +239,6 @@ fn commit_portable<L: Four>(e: &Ends, q: &mut [f64], v: &mut [f64], a: &mut [f64
         v[k] = v1;
         a[k] = a1;
     }
-    let join = |l: [f64; 4]| (l[0] + l[2]) + (l[1] + l[3]);
     Committed {
         input: join(acc[0]),
         damping: join(acc[1]),
@@ -354,33 +425,40 @@ pub(super) struct Increment<'a> {
     pub ground_change: f64,
 }
 
-with_avx! {
+in_lanes! {
     /// Each mode's increment over the step without a change of the contact forces, into `step`:
     /// Newmark's incremental form, term by term as [`Stepper::free_increment`] takes it for a few
     /// modes (no sums across modes: the same bits in vector lanes).
     ///
     /// [`Stepper::free_increment`]: super::Stepper
-    #[inline(never)]
-    pub(super) fn increment(e: &Increment, step: &mut [f64]) = increment_portable
+    pub(super) fn increment(e: &Increment, step: &mut [f64]) = increment_in
 }
 
 #[inline(always)]
-fn increment_portable(e: &Increment, step: &mut [f64]) {
+fn increment_in<L: Four>(e: &Increment, step: &mut [f64]) {
     let n = step.len();
     let [omega, zeta, gamma] = e.coefficients.map(|c| &c[..n]);
     let (v, a, k_hat, load_now) = (&e.v[..n], &e.a[..n], &e.k_hat[..n], &e.load_now[..n]);
     let hh = e.hh;
-    for k in 0..n {
+    let full = n - n % 4;
+    for c in (0..full).step_by(4) {
+        let mode = [L::at(omega, c), L::at(zeta, c), L::at(gamma, c)];
         // 0.0: an elastic side's corrections do not change.
+        let (now, zero) = (L::at(load_now, c), L::splat(0.0));
         let load = increment_load(
-            [omega[k], zeta[k], gamma[k]],
+            mode,
             e.ground_change,
-            load_now[k],
-            0.0,
-            v[k],
-            a[k],
+            now,
+            zero,
+            L::at(v, c),
+            L::at(a, c),
             hh,
         );
+        (load / L::at(k_hat, c)).put(step, c);
+    }
+    for k in full..n {
+        let mode = [omega[k], zeta[k], gamma[k]];
+        let load = increment_load(mode, e.ground_change, load_now[k], 0.0, v[k], a[k], hh);
         step[k] = load / k_hat[k];
     }
 }
@@ -390,17 +468,21 @@ fn increment_portable(e: &Increment, step: &mut [f64]) {
 /// the step starts taken off, the yielding storeys' corrections' change, and the terms of the
 /// velocity and acceleration where it starts. `[omega, zeta, gamma]` are the mode's.
 #[inline(always)]
-pub(super) fn increment_load(
-    [omega, zeta, gamma]: [f64; 3],
+pub(super) fn increment_load<T: Lane>(
+    [omega, zeta, gamma]: [T; 3],
     ground_change: f64,
-    load_now: f64,
-    pseudo_change: f64,
-    v: f64,
-    a: f64,
+    load_now: T,
+    pseudo_change: T,
+    v: T,
+    a: T,
     hh: f64,
-) -> f64 {
-    let c = 2.0 * zeta * omega;
-    -gamma * ground_change - load_now + pseudo_change + (4.0 / hh + 2.0 * c) * v + 2.0 * a
+) -> T {
+    let s = T::splat;
+    let c = s(2.0) * zeta * omega;
+    -gamma * s(ground_change) - load_now
+        + pseudo_change
+        + (s(4.0 / hh) + s(2.0) * c) * v
+        + s(2.0) * a
 }
 
 /// Newmark's discrete energy identity over a mode's step from v0 to v1 that moved it by dq
@@ -447,10 +529,35 @@ mod tests {
                 fixed_signed(7 + n as u64, n),
                 fixed_signed(99, n),
             );
-            assert_eq!(dot(&c, &q).to_bits(), portable(&c, &q, None).to_bits());
+            assert_eq!(dot(&c, &q).to_bits(), dot_in::<F4>(&c, &q).to_bits());
             assert_eq!(
                 dot_moved(&c, &q, &d).to_bits(),
-                portable(&c, &q, Some(&d)).to_bits()
+                dot_moved_in::<F4>(&c, &q, &d).to_bits()
+            );
+            // Mode by mode: no sums across modes, so exactly the scalar operations.
+            let bits = |x: &[f64]| x.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            let mut sums = q.clone();
+            add_scaled(&mut sums, &c, 0.37);
+            let by_hand: Vec<f64> = q.iter().zip(&c).map(|(s, r)| s + r * 0.37).collect();
+            assert_eq!(bits(&sums), bits(&by_hand));
+            let k_hat: Vec<f64> = c.iter().map(|c| 2.0 + c).collect();
+            let (mut dq, mut load) = (vec![0.0; n], d.clone());
+            with_forces(&mut dq, &mut load, &q, &k_hat, -1.0);
+            let by_hand: Vec<f64> = (0..n).map(|k| q[k] + -d[k] / k_hat[k]).collect();
+            assert_eq!(bits(&dq), bits(&by_hand));
+            assert_eq!(
+                bits(&load),
+                bits(&d.iter().map(|f| -f + 0.0).collect::<Vec<_>>())
+            );
+            let both = dot2(&c, &q, &d);
+            assert_eq!(
+                [both.0.to_bits(), both.1.to_bits()],
+                [dot(&c, &q).to_bits(), dot(&c, &d).to_bits()]
+            );
+            let both = dot2_in::<F4>(&c, &q, &d);
+            assert_eq!(
+                [both.0.to_bits(), both.1.to_bits()],
+                [dot(&c, &q).to_bits(), dot(&c, &d).to_bits()]
             );
             // Mode k in lane k mod 4, the lanes joined pairwise: written out term by term.
             let mut lane = [0.0f64; 4];
@@ -487,7 +594,7 @@ mod tests {
                 [q, v, a, sums.to_vec()].map(|x| x.iter().map(|x| x.to_bits()).collect::<Vec<_>>())
             };
             let found = run(&|q, v, a| commit(&e, q, v, a));
-            assert_eq!(found, run(&|q, v, a| commit_portable::<F4>(&e, q, v, a)));
+            assert_eq!(found, run(&|q, v, a| commit_in::<F4>(&e, q, v, a)));
             // Mode by mode, mode k's terms in lane k mod 4, the lanes joined pairwise.
             let by_hand = run(&|q, v, a| {
                 let mut lane = [[0.0f64; 4]; 6];

@@ -386,6 +386,8 @@ pub(super) struct Stepper<'a> {
     newmark: bool,
     /// A side is tall and elastic: a whole contact step's increments are taken in vector lanes.
     lanes_increment: bool,
+    /// A side is tall: a contact step's modal loads are taken in vector lanes.
+    tall: bool,
     /// The next free step is one fine step (yielding storeys near or past their yield point).
     single_step: bool,
     /// Buffers, boxed so that a stage can take them out of the stepper for the step's length
@@ -501,6 +503,7 @@ impl<'a> Stepper<'a> {
         let lanes_increment = sides
             .iter()
             .any(|s| s.storeys.is_none() && s.modes() >= lanes::LANES_FROM);
+        let tall = sides.iter().any(|s| s.modes() >= lanes::LANES_FROM);
         let contact_scratch =
             contact::Scratch::sized([sides[0].modes(), sides[1].modes()], points.len());
         let mut s = Stepper {
@@ -537,6 +540,7 @@ impl<'a> Stepper<'a> {
             histories,
             newmark: false,
             lanes_increment,
+            tall,
             single_step: false,
             scratch: Some(Box::default()),
             contact_scratch: Some(contact_scratch),

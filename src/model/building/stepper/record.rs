@@ -115,9 +115,7 @@ fn sums_of(c: &[f64], q: &[f64], v: &[f64]) -> (f64, f64) {
         }
         return (u, r);
     }
-    // Each sum in its own pass: taken together, the compiler pairs the two sums' lanes
-    // instead of each sum's, and vectorises less.
-    (lanes::dot(c, q), lanes::dot(c, v))
+    lanes::dot2(c, q, v)
 }
 
 /// The sum of c q over the modes. A tall building's is taken in four interleaved partial sums
