@@ -285,8 +285,15 @@ impl Stepper<'_> {
         if cs.awake.len() == self.points.len() {
             return false;
         }
-        let size: [f64; 2] =
-            std::array::from_fn(|s| cs.trial.dq[s].iter().map(|x| x * x).sum::<f64>().sqrt());
+        // A tall side's sum in lanes: a bound's size, which only decides when a level is read.
+        let size: [f64; 2] = std::array::from_fn(|s| {
+            let dq = &cs.trial.dq[s];
+            if dq.len() >= lanes::LANES_FROM {
+                lanes::dot(dq, dq).sqrt()
+            } else {
+                dq.iter().map(|x| x * x).sum::<f64>().sqrt()
+            }
+        });
         cs.sleep.trial = size;
         let moved = [cs.sleep.moved[0] + size[0], cs.sleep.moved[1] + size[1]];
         let total = moved[0] + moved[1];
