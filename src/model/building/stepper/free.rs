@@ -304,9 +304,7 @@ impl Stepper<'_> {
         }
         for (j, p) in self.points.iter().enumerate() {
             let (c, cv) = self.point_state(p, [&w.q[0], &w.q[1]], [&w.v[0], &w.v[1]]);
-            let ca = self
-                .point_state(p, [&w.acc[0], &w.acc[1]], [&w.acc[0], &w.acc[1]])
-                .0;
+            let ca = self.point_value(p, [&w.acc[0], &w.acc[1]]);
             w.prev.push([c, cv, ca]);
             // Per side: the bounds on the point's size, its fourth and fifth derivatives, and
             // (both sides tall) its second.
@@ -466,7 +464,7 @@ impl Stepper<'_> {
             }
             let p = &self.points[i];
             let (c, cv) = self.point_state(p, q, v);
-            let ca = self.point_state(p, acc, acc).0;
+            let ca = self.point_value(p, acc);
             let [c0, cv0, _] = w.prev[i];
             let margin = cubic_margin(w.point_m4[i], l)
                 + cubic_margin(w.point_m4[i], h)
@@ -589,7 +587,7 @@ impl Stepper<'_> {
                     continue;
                 }
                 let (c, cv) = self.point_state(&self.points[i], q, v);
-                let ca = self.point_state(&self.points[i], acc, acc).0;
+                let ca = self.point_value(&self.points[i], acc);
                 let [c0, cv0, _] = w.prev[i];
                 w.prev[i] = [c, cv, ca];
                 // Between grid points the closing motion is the cubic through their exact
@@ -724,9 +722,16 @@ impl Stepper<'_> {
         )
     }
 
+    /// A point's closing (left less right) from modal values `q` alone: [`Stepper::point_state`]'s
+    /// first part (its acceleration, from modal accelerations), without the rate's sums.
+    #[inline(always)]
+    pub(super) fn point_value(&self, p: &Point, q: [&[f64]; 2]) -> f64 {
+        dotv(&p.r[0], q[0]) - dotv(&p.r[1], q[1])
+    }
+
     /// A point's closing motion now, without its rate: [`Stepper::point_state`]'s first part.
     pub(super) fn point_closing(&self, p: &Point) -> f64 {
-        dotv(&p.r[0], &self.sides[0].q) - dotv(&p.r[1], &self.sides[1].q)
+        self.point_value(p, [&self.sides[0].q, &self.sides[1].q])
     }
 
     /// A free stretch of arbitrary length (back onto the grid after an event, or up to a
