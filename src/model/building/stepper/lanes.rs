@@ -114,6 +114,35 @@ fn dot2_in<L: Four>(c: &[f64], q: &[f64], v: &[f64]) -> (f64, f64) {
 }
 
 in_lanes! {
+    /// out[b] += abs m[b] row by row, for each of the four bounds b (every slice as long as
+    /// `abs`): one mode's terms of [`AbsRows::weigh`](super::weights::AbsRows::weigh).
+    pub(super) fn add_weighted(out: [&mut [f64]; 4], abs: &[f64], m: [f64; 4]) = add_weighted_in
+}
+
+#[inline(always)]
+fn add_weighted_in<L: Four>(out: [&mut [f64]; 4], abs: &[f64], m: [f64; 4]) {
+    let n = abs.len();
+    let [o0, o1, o2, o3] = out;
+    let (o0, o1, o2, o3) = (&mut o0[..n], &mut o1[..n], &mut o2[..n], &mut o3[..n]);
+    let full = n - n % 4;
+    let ms = m.map(L::splat);
+    for j in (0..full).step_by(4) {
+        let a = L::at(abs, j);
+        (L::at(o0, j) + a * ms[0]).put(o0, j);
+        (L::at(o1, j) + a * ms[1]).put(o1, j);
+        (L::at(o2, j) + a * ms[2]).put(o2, j);
+        (L::at(o3, j) + a * ms[3]).put(o3, j);
+    }
+    for j in full..n {
+        let a = abs[j];
+        o0[j] += a * m[0];
+        o1[j] += a * m[1];
+        o2[j] += a * m[2];
+        o3[j] += a * m[3];
+    }
+}
+
+in_lanes! {
     /// sums += r force, mode by mode (r at least as long as sums).
     pub(super) fn add_scaled(sums: &mut [f64], r: &[f64], force: f64) = add_scaled_in
 }

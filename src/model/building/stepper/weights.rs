@@ -4,10 +4,10 @@
 //! of |c_k| times the mode's bound, and so are its fourth and fifth derivatives'. Taken signal
 //! by signal, a hundred-storey pair spends a third of a free stretch in these sums. Here the
 //! |c_k| of a side are kept mode by mode over all its rows, so one pass per mode adds that
-//! mode's term to every row: the same sums in the same order (bit for bit), vectorised across
-//! the rows.
+//! mode's term to every row: the same sums in the same order (bit for bit), four rows a vector
+//! register ([`lanes::add_weighted`]).
 
-use super::{Point, Signal, TALL};
+use super::{Point, Signal, TALL, lanes};
 
 /// The tables of a run: each tall side's points and followed signals.
 pub(super) struct BoundRows {
@@ -84,15 +84,8 @@ impl AbsRows {
         let [o0, o1, o2, o3] = out;
         let (o0, o1, o2, o3) = (&mut o0[..n], &mut o1[..n], &mut o2[..n], &mut o3[..n]);
         for (k, abs) in self.abs.chunks_exact(n.max(1)).enumerate() {
-            let (m0, m1, m2, m3) = (m[0][k], m[1][k], m[2][k], m[3][k]);
-            let abs = &abs[..n];
-            for j in 0..n {
-                let a = abs[j];
-                o0[j] += a * m0;
-                o1[j] += a * m1;
-                o2[j] += a * m2;
-                o3[j] += a * m3;
-            }
+            let mk = [m[0][k], m[1][k], m[2][k], m[3][k]];
+            lanes::add_weighted([&mut *o0, &mut *o1, &mut *o2, &mut *o3], &abs[..n], mk);
         }
     }
 }
