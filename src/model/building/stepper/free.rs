@@ -291,6 +291,8 @@ impl Stepper<'_> {
         root.onset.clear();
         root.closing.clear();
         root.peak.clear();
+        root.points.clear();
+        root.signals.clear();
         w.prev.clear();
         w.point_m4.clear();
         w.point_m5.clear();
@@ -350,6 +352,9 @@ impl Stepper<'_> {
                 onset &= reach + ringing(reach) >= gap;
                 closing &= reach >= below;
             }
+            if onset || closing {
+                root.points.push(j);
+            }
             root.onset.push(onset);
             root.closing.push(closing);
         }
@@ -397,6 +402,7 @@ impl Stepper<'_> {
             w.signal_m5.push(m5);
             root.peak.push(open);
             if open {
+                root.signals.push(i);
                 // Its last instant is this one (a stretch that left it alone did not keep it).
                 let (u, r) = now;
                 self.peaks.pass(i, t0, u, r);
@@ -441,27 +447,24 @@ impl Stepper<'_> {
             w.depths.resize_with(d + 1, Depth::default);
         }
         let (parents, rest) = w.depths.split_at_mut(d);
-        let parent = Some(parents.last().unwrap_or(&w.root));
+        let parent = parents.last().unwrap_or(&w.root);
         let now = &mut rest[0];
         let (mut any, mut unbounded) = (false, false);
-        now.onset.clear();
-        now.closing.clear();
-        now.peak.clear();
-        now.values.clear();
+        let (np, ns) = (self.points.len(), self.signals.len());
+        now.onset.resize(np, false);
+        now.closing.resize(np, false);
+        now.peak.resize(ns, false);
+        now.values.resize(np + ns, [0.0; 3]);
+        now.points.clear();
+        now.signals.clear();
         let (q, v, acc) = (
             [&w.q[0][..], &w.q[1]],
             [&w.v[0][..], &w.v[1]],
             [&w.acc[0][..], &w.acc[1]],
         );
-        for i in 0..self.points.len() {
-            let (open_onset, open_closing) =
-                parent.map_or((true, true), |x| (x.onset[i], x.closing[i]));
-            if !(open_onset || open_closing) {
-                now.onset.push(false);
-                now.closing.push(false);
-                now.values.push([0.0; 3]);
-                continue;
-            }
+        let mut may_touch = false;
+        for &i in &parent.points {
+            let (open_onset, open_closing) = (parent.onset[i], parent.closing[i]);
             let p = &self.points[i];
             let (c, cv) = self.point_state(p, q, v);
             let ca = self.point_value(p, acc);
@@ -488,33 +491,34 @@ impl Stepper<'_> {
             let onset = open_onset && contact && top + margin + elastic >= gap;
             let closing = open_closing && top + margin >= below;
             any |= onset || closing;
+            may_touch |= onset;
             unbounded |= onset && elastic.is_infinite();
-            now.onset.push(onset);
-            now.closing.push(closing);
-            now.values.push([c, cv, ca]);
+            now.onset[i] = onset;
+            now.closing[i] = closing;
+            now.values[i] = [c, cv, ca];
+            if onset || closing {
+                now.points.push(i);
+            }
         }
         // A contact may start inside the part: what the free motion does after it does not
         // count, so nothing is taken from the part's end until the onset has been ruled out.
-        let may_touch = now.onset.iter().any(|&x| x);
         if !may_touch {
-            for i in 0..self.points.len() {
+            // Every open point is open for its closing motion alone.
+            for &i in &now.points {
                 let [c, cv, ca] = now.values[i];
                 let [_, cv0, ca0] = w.prev[i];
-                if now.closing[i] && monotone([cv0, ca0], [cv, ca], l, w.point_m5[i]) {
+                if monotone([cv0, ca0], [cv, ca], l, w.point_m5[i]) {
                     // Its largest value here is at an end, and the start was counted already.
                     let p = &mut self.points[i];
                     p.max_closing = p.max_closing.max(c);
                     now.closing[i] = false;
                 }
             }
-            any = now.closing.iter().any(|&x| x);
+            let closing = &now.closing;
+            now.points.retain(|&i| closing[i]);
+            any = !now.points.is_empty();
         }
-        for i in 0..self.signals.len() {
-            if !self.signals[i].watched() || !parent.is_none_or(|x| x.peak[i]) {
-                now.peak.push(false);
-                now.values.push([0.0; 3]);
-                continue;
-            }
+        for &i in &parent.signals {
             let (u, r) = self.signal(i, q, v);
             let a = self.signal_value(i, acc);
             let (u0, r0) = self.peaks.last(i);
@@ -536,8 +540,11 @@ impl Stepper<'_> {
                 peak = false;
             }
             any |= peak;
-            now.peak.push(peak);
-            now.values.push([u, r, a]);
+            now.peak[i] = peak;
+            now.values[np + i] = [u, r, a];
+            if peak {
+                now.signals.push(i);
+            }
         }
         (any, unbounded)
     }
@@ -582,10 +589,7 @@ impl Stepper<'_> {
                 [&w.acc[0][..], &w.acc[1]],
             );
             let mut onset = None;
-            for i in 0..self.points.len() {
-                if !(open.onset[i] || open.closing[i]) {
-                    continue;
-                }
+            for &i in &open.points {
                 let (c, cv) = self.point_state(&self.points[i], q, v);
                 let ca = self.point_value(&self.points[i], acc);
                 let [c0, cv0, _] = w.prev[i];
@@ -636,12 +640,10 @@ impl Stepper<'_> {
             }
             // The motion up to here is free: its peaks count.
             let t = t0 + j as f64 * g.h;
-            for i in 0..self.signals.len() {
-                if open.peak[i] {
-                    let (u, r) = self.signal(i, q, v);
-                    self.peaks.update(i, t, u, r);
-                    w.signal_acc[i] = self.signal_value(i, acc);
-                }
+            for &i in &open.signals {
+                let (u, r) = self.signal(i, q, v);
+                self.peaks.update(i, t, u, r);
+                w.signal_acc[i] = self.signal_value(i, acc);
             }
             if self.sears {
                 for p in self.points.iter_mut() {
@@ -662,16 +664,15 @@ impl Stepper<'_> {
         let np = self.points.len();
         let t = t0 + part.b as f64 * self.grid.h;
         let (parents, rest) = w.depths.split_at(d);
-        let parent = Some(parents.last().unwrap_or(&w.root));
+        let parent = parents.last().unwrap_or(&w.root);
         let now = &rest[0];
-        for i in 0..np {
-            let was = parent.is_none_or(|x| x.onset[i] || x.closing[i]);
-            if was && !(now.onset[i] || now.closing[i]) {
+        for &i in &parent.points {
+            if !(now.onset[i] || now.closing[i]) {
                 w.prev[i] = now.values[i];
             }
         }
-        for i in 0..self.signals.len() {
-            if parent.is_none_or(|x| x.peak[i]) && !now.peak[i] {
+        for &i in &parent.signals {
+            if !now.peak[i] {
                 let [u, r, a] = now.values[np + i];
                 self.peaks.pass(i, t, u, r);
                 w.signal_acc[i] = a;

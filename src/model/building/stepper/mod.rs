@@ -436,12 +436,18 @@ struct Scratch {
 /// parent left open: per point (an onset, its largest closing motion), per signal (its peak);
 /// and every point's closing motion and every signal at the part's end, with their rates and
 /// accelerations (points first).
+///
+/// The flags and values are indexed by point and signal, but only those of the parent's open
+/// ones are written and read: the lists of what is open (ascending) are what the loops visit.
 #[derive(Default)]
 struct Depth {
     onset: Vec<bool>,
     closing: Vec<bool>,
     peak: Vec<bool>,
     values: Vec<[f64; 3]>,
+    /// The points whose onset or largest closing motion is open, and the signals whose peak is.
+    points: Vec<usize>,
+    signals: Vec<usize>,
 }
 
 /// What a free stretch ended with.
