@@ -286,14 +286,7 @@ impl Stepper<'_> {
             return false;
         }
         // A tall side's sum in lanes: a bound's size, which only decides when a level is read.
-        let size: [f64; 2] = std::array::from_fn(|s| {
-            let dq = &cs.trial.dq[s];
-            if dq.len() >= lanes::LANES_FROM {
-                lanes::dot(dq, dq).sqrt()
-            } else {
-                dq.iter().map(|x| x * x).sum::<f64>().sqrt()
-            }
-        });
+        let size: [f64; 2] = std::array::from_fn(|s| dotv(&cs.trial.dq[s], &cs.trial.dq[s]).sqrt());
         cs.sleep.trial = size;
         let moved = [cs.sleep.moved[0] + size[0], cs.sleep.moved[1] + size[1]];
         let total = moved[0] + moved[1];
@@ -480,18 +473,16 @@ impl Stepper<'_> {
     }
 
     /// The trial's modal loads from the contact forces and its increments with them, side by
-    /// side (`tall`: a tall side's in vector lanes, [`Stepper::trial_loads_in_lanes`]).
+    /// side (`tall`: a tall side's in vector lanes).
     #[inline(always)]
     fn trial_loads(&self, full: bool, cs: &mut Scratch, tall: bool) {
         let out = &mut cs.trial;
         for s in 0..2 {
             let sign = if s == 0 { -1.0 } else { 1.0 };
             let k_hat = self.step_k_hat(&cs.k_hat, s, full);
-            // Rounding is symmetric, so the sign taken out of a mode's sum changes no bit of it;
-            // + 0.0 makes a zero positive, as a sum from +0 is.
+            // Rounding is symmetric, so the sign taken out of a mode's sum changes no bit of it.
             let end = |dq: &mut f64, load: &mut f64, step: f64, k_hat: f64, f: f64| {
-                *dq = step + sign * f / k_hat;
-                *load = sign * f + 0.0;
+                (*dq, *load) = lanes::with_force(step, f, k_hat, sign);
             };
             if let [k_hat] = k_hat {
                 // One mode: its sum straight from the points, in the points' order.
@@ -511,21 +502,29 @@ impl Stepper<'_> {
                 );
                 continue;
             }
-            if tall && k_hat.len() >= lanes::LANES_FROM {
-                self.trial_loads_in_lanes(s, k_hat, &cs.awake, &cs.step[s], out);
-                continue;
-            }
+            // A tall side's sums four modes a register (the same terms in the same order).
+            let in_lanes = tall && k_hat.len() >= lanes::LANES_FROM;
             // Each mode's sum, in the points' order, made point by point in `load`: a pass over
             // the modes for each point that pushes, which the compiler puts in vector lanes.
             let sums = &mut out.load[s][..];
             sums.fill(0.0);
             for &i in &cs.awake {
                 let force = out.forces[i];
-                if force != 0.0 {
-                    for (f, r) in sums.iter_mut().zip(&self.points[i].r[s]) {
+                if force == 0.0 {
+                    continue;
+                }
+                let r = &self.points[i].r[s];
+                if in_lanes {
+                    lanes::add_scaled(sums, r, force);
+                } else {
+                    for (f, r) in sums.iter_mut().zip(r) {
                         *f += r * force;
                     }
                 }
+            }
+            if in_lanes {
+                lanes::with_forces(&mut out.dq[s], &mut out.load[s], &cs.step[s], k_hat, sign);
+                continue;
             }
             let each = out.dq[s].iter_mut().zip(out.load[s].iter_mut());
             for ((dq, load), (step, k_hat)) in each.zip(cs.step[s].iter().zip(k_hat)) {
@@ -541,31 +540,6 @@ impl Stepper<'_> {
     #[inline(never)]
     fn trial_loads_tall(&self, full: bool, cs: &mut Scratch) {
         self.trial_loads(full, cs, true);
-    }
-
-    /// [`Stepper::trial_once`]'s modal loads and increments for a tall side s (its effective
-    /// stiffness `k_hat`): the same terms in the same order, four modes a register. Out of the
-    /// few modes' way, whose step keeps its registers.
-    #[cold]
-    #[inline(never)]
-    fn trial_loads_in_lanes(
-        &self,
-        s: usize,
-        k_hat: &[f64],
-        awake: &[usize],
-        step: &[f64],
-        out: &mut Trial,
-    ) {
-        let sign = if s == 0 { -1.0 } else { 1.0 };
-        let sums = &mut out.load[s][..];
-        sums.fill(0.0);
-        for &i in awake {
-            let force = out.forces[i];
-            if force != 0.0 {
-                lanes::add_scaled(sums, &self.points[i].r[s], force);
-            }
-        }
-        lanes::with_forces(&mut out.dq[s], &mut out.load[s], step, k_hat, sign);
     }
 
     /// Side s's effective stiffness per mode over the step being tried: the side's own over a

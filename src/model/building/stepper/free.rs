@@ -718,7 +718,7 @@ impl Stepper<'_> {
     #[inline(always)]
     pub(super) fn point_state(&self, p: &Point, q: [&[f64]; 2], v: [&[f64]; 2]) -> (f64, f64) {
         (
-            dotv(&p.r[0], q[0]) - dotv(&p.r[1], q[1]),
+            self.point_value(p, q),
             dotv(&p.r[0], v[0]) - dotv(&p.r[1], v[1]),
         )
     }

@@ -1,5 +1,5 @@
-//! Sums and updates over a tall building's modes four modes at a time: mode k in lane k mod 4,
-//! a sum's lanes joined pairwise. Where the processor has AVX, the four lanes are one 256-bit
+//! Sums and updates over a tall building's modes four modes at a time (mode k in lane k mod 4, a
+//! sum's lanes joined pairwise), or over the rows of a table four rows at a time. Where the processor has AVX, the four lanes are one 256-bit
 //! register ([`avx::V4`], its operations written out, since the compiler left loops written
 //! lane by lane half in scalar registers); elsewhere four scalars ([`F4`]). Either way the same
 //! multiplications, divisions and additions in the same lanes (Rust never fuses them), so the
@@ -182,17 +182,23 @@ fn with_forces_in<L: Four>(
     let n = k_hat.len();
     let (dq, load, step) = (&mut dq[..n], &mut load[..n], &step[..n]);
     let full = n - n % 4;
-    let (signs, zero) = (L::splat(sign), L::splat(0.0));
     for c in (0..full).step_by(4) {
-        let f = L::at(load, c);
-        (L::at(step, c) + signs * f / L::at(k_hat, c)).put(dq, c);
-        (signs * f + zero).put(load, c);
+        let (d, l) = with_force(L::at(step, c), L::at(load, c), L::at(k_hat, c), sign);
+        d.put(dq, c);
+        l.put(load, c);
     }
     for k in full..n {
-        let f = load[k];
-        dq[k] = step[k] + sign * f / k_hat[k];
-        load[k] = sign * f + 0.0;
+        (dq[k], load[k]) = with_force(step[k], load[k], k_hat[k], sign);
     }
+}
+
+/// A mode's increment with the contact forces' load f (summed without the side's sign) and
+/// that load: step + sign f / k_hat, and sign f (+ 0.0 makes a zero positive, as a sum from +0
+/// is).
+#[inline(always)]
+pub(super) fn with_force<T: Lane>(step: T, f: T, k_hat: T, sign: f64) -> (T, T) {
+    let sign = T::splat(sign);
+    (step + sign * f / k_hat, sign * f + T::splat(0.0))
 }
 
 /// A side's modes where a contact step starts, and what it moves them by.
@@ -276,8 +282,8 @@ fn commit_in<L: Four>(e: &Ends, q: &mut [f64], v: &mut [f64], a: &mut [f64]) -> 
     }
 }
 
-/// Four modes' values, one a lane: each operation lane by lane, so the same bits as four
-/// scalar ones, and one vector instruction where the processor has the lanes.
+/// Four modes' values, one a lane, in four scalars: each operation lane by lane, so the same
+/// bits as four scalar ones. Where the processor has AVX, [`avx::V4`] takes its place.
 #[derive(Clone, Copy)]
 pub(super) struct F4([f64; 4]);
 
@@ -323,6 +329,7 @@ mod avx {
     impl Four for V4 {
         #[inline(always)]
         fn at(x: &[f64], c: usize) -> V4 {
+            debug_assert!(std::arch::is_x86_feature_detected!("avx"));
             let x = &x[c..c + 4];
             // SAFETY: four f64 in bounds (just sliced); unaligned loads are allowed.
             V4(unsafe { _mm256_loadu_pd(x.as_ptr()) })
@@ -344,7 +351,10 @@ mod avx {
     impl Lane for V4 {
         #[inline(always)]
         fn splat(x: f64) -> Self {
-            // SAFETY (here and below): a V4 is only made where AVX was found.
+            debug_assert!(std::arch::is_x86_feature_detected!("avx"));
+            // SAFETY (here and below): a V4 is only made (`at`, `splat`) inside the functions
+            // `in_lanes!` compiles for AVX, taken only where the processor was found to have it:
+            // nothing else in this file may name `avx::V4`.
             V4(unsafe { _mm256_set1_pd(x) })
         }
         #[inline(always)]
@@ -380,7 +390,7 @@ mod avx {
     }
 }
 
-/// What Newmark's formulas need of a value: a mode's f64, or four modes' [`F4`].
+/// What Newmark's formulas need of a value: a mode's f64, or four modes' ([`F4`], [`avx::V4`]).
 pub(super) trait Lane:
     Copy
     + std::ops::Add<Output = Self>
@@ -578,6 +588,24 @@ mod tests {
                 bits(&load),
                 bits(&d.iter().map(|f| -f + 0.0).collect::<Vec<_>>())
             );
+            let (mut dq2, mut load2) = (vec![0.0; n], c.clone());
+            with_forces(&mut dq2, &mut load2, &q, &k_hat, 1.0);
+            let by_hand: Vec<f64> = (0..n).map(|k| q[k] + c[k] / k_hat[k]).collect();
+            assert_eq!(bits(&dq2), bits(&by_hand));
+            assert_eq!(
+                bits(&load2),
+                bits(&c.iter().map(|f| f + 0.0).collect::<Vec<_>>())
+            );
+            let rows: [Vec<f64>; 4] = std::array::from_fn(|b| fixed_signed(40 + b as u64, n));
+            let (mut lanes, mut by_hand) = (rows.clone(), rows.clone());
+            let [l0, l1, l2, l3] = &mut lanes;
+            add_weighted([l0, l1, l2, l3], &k_hat, [0.5, -1.5, 3.0, 1e-3]);
+            for (b, m) in [0.5, -1.5, 3.0, 1e-3].into_iter().enumerate() {
+                for j in 0..n {
+                    by_hand[b][j] += k_hat[j] * m;
+                }
+                assert_eq!(bits(&lanes[b]), bits(&by_hand[b]));
+            }
             let both = dot2(&c, &q, &d);
             assert_eq!(
                 [both.0.to_bits(), both.1.to_bits()],
@@ -650,6 +678,32 @@ mod tests {
                     damping: join(lane[1]),
                     moved: [join(lane[2]), join(lane[3]).sqrt()],
                     speed: [join(lane[4]), join(lane[5]).sqrt()],
+                }
+            });
+            assert_eq!(found, by_hand, "{n} modes");
+            // Newmark's increments: no sums across modes, so each mode's scalar formula.
+            let k_hat: Vec<f64> = omega.iter().map(|w| 2.0 + w).collect();
+            let inc = Increment {
+                coefficients: [&omega, &zeta, &gamma],
+                v: &v0,
+                a: &a0,
+                k_hat: &k_hat,
+                load_now: &q0,
+                hh: 1.3e-3,
+                ground_change: -0.2,
+            };
+            let steps = |f: &dyn Fn(&mut [f64])| {
+                let mut out = vec![0.0; n];
+                f(&mut out);
+                out.iter().map(|x| x.to_bits()).collect::<Vec<_>>()
+            };
+            let found = steps(&|out| increment(&inc, out));
+            assert_eq!(found, steps(&|out| increment_in::<F4>(&inc, out)));
+            let by_hand = steps(&|out| {
+                for k in 0..n {
+                    let mode = [omega[k], zeta[k], gamma[k]];
+                    let load = increment_load(mode, -0.2, q0[k], 0.0, v0[k], a0[k], 1.3e-3);
+                    out[k] = load / k_hat[k];
                 }
             });
             assert_eq!(found, by_hand, "{n} modes");

@@ -119,9 +119,8 @@ fn sums_of(c: &[f64], q: &[f64], v: &[f64]) -> (f64, f64) {
 }
 
 /// The sum of c q over the modes. A tall building's is taken in four interleaved partial sums
-/// (mode k in lane k mod 4, the lanes joined pairwise), which the compiler vectorises: at 100
-/// modes a signal's reading (two such sums) costs about half of one taken mode after mode. A
-/// few modes' sum is taken in order, the cheapest there.
+/// (mode k in lane k mod 4, the lanes joined pairwise; [`lanes::dot`], one AVX register where
+/// the processor has it). A few modes' sum is taken in order, the cheapest there.
 #[inline]
 fn sum_of(c: &[f64], q: &[f64]) -> f64 {
     if c.len() < LANES_FROM {
