@@ -102,6 +102,23 @@ impl Stepper<'_> {
         }
     }
 
+    /// Both sides' exact states and modal accelerations j fine steps into the stretch (into
+    /// `w.q`, `w.v`, `w.acc`): [`Stepper::states_at`] and [`Stepper::accelerations`] in one
+    /// pass ([`lanes::exact_states`]).
+    fn states_and_accelerations(&self, w: &mut Scratch, j: usize) {
+        for s in 0..2 {
+            let side = &self.sides[s];
+            let e = lanes::Exact {
+                maps: side.maps(j),
+                y0: &w.y0[s],
+                damping: &side.damping,
+                stiffness: &side.stiffness,
+                s: j as f64 * self.grid.h,
+            };
+            lanes::exact_states(&e, &mut w.q[s], &mut w.v[s], &mut w.acc[s]);
+        }
+    }
+
     /// Both sides' exact states j fine steps after the start of the stretch from `y0`.
     pub(super) fn states_at(
         &self,
@@ -230,7 +247,7 @@ impl Stepper<'_> {
         t0: f64,
     ) -> Result<Option<Free>, SolveError> {
         self.steps += 1;
-        self.states_at(&w.y0, part.b, &mut w.q, &mut w.v);
+        self.states_and_accelerations(w, part.b);
         let (any, unbounded) = self.flag(w, d, part, t0);
         if any {
             let len = part.b - part.a;
@@ -416,16 +433,16 @@ impl Stepper<'_> {
         }
     }
 
-    /// The modal accelerations j fine steps into the stretch, from the states in `w.q`, `w.v`.
+    /// The modal accelerations j fine steps into the stretch, from the states in `w.q`, `w.v`
+    /// (as [`lanes::exact_states`] takes them).
     fn accelerations(&self, w: &mut Scratch, j: usize) {
         let s = j as f64 * self.grid.h;
         for side in 0..2 {
             let sd = &self.sides[side];
             for k in 0..sd.modes() {
                 let y = &w.y0[side][k];
-                w.acc[side][k] = y[2] + y[3] * s
-                    - 2.0 * sd.zeta[k] * sd.omega[k] * w.v[side][k]
-                    - sd.omega[k] * sd.omega[k] * w.q[side][k];
+                w.acc[side][k] =
+                    y[2] + y[3] * s - sd.damping[k] * w.v[side][k] - sd.stiffness[k] * w.q[side][k];
             }
         }
     }
@@ -442,7 +459,6 @@ impl Stepper<'_> {
         let t = t0 + part.b as f64 * h;
         let gap = self.sc.gap_m;
         let contact = self.sc.contact != ContactModel::None;
-        self.accelerations(w, part.b);
         if w.depths.len() <= d {
             w.depths.resize_with(d + 1, Depth::default);
         }
@@ -569,8 +585,7 @@ impl Stepper<'_> {
         let mut found = None;
         for j in part.a + 1..=part.b {
             self.steps += 1;
-            self.states_at(&w.y0, j, &mut w.q, &mut w.v);
-            self.accelerations(w, j);
+            self.states_and_accelerations(w, j);
             if self.sears {
                 marks.clear();
                 for p in self.points.iter_mut() {

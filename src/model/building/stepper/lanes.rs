@@ -5,6 +5,8 @@
 //! multiplications, divisions and additions in the same lanes (Rust never fuses them), so the
 //! same bits on every processor (tested).
 
+use super::super::modal::Propagator;
+
 /// Modes from which a side's sums are taken in lanes; a few modes' sum is taken in order, the
 /// cheapest there.
 pub(super) const LANES_FROM: usize = 16;
@@ -201,6 +203,56 @@ pub(super) fn with_force<T: Lane>(step: T, f: T, k_hat: T, sign: f64) -> (T, T) 
     (step + sign * f / k_hat, sign * f + T::splat(0.0))
 }
 
+/// Each mode's exact state j fine steps into a free stretch from `y0` (per mode [q(0), q'(0),
+/// g(0), g']) by its map (`maps`, the weights giving q and q'), and its acceleration there,
+/// y2 + y3 s - c v - w2 q (`damping` c = 2 zeta omega, `stiffness` w2 = omega^2, s = j h). A
+/// map's four products are summed in pairs, (a0 b0 + a1 b1) + (a2 b2 + a3 b3), as
+/// [`Propagator::apply`] sums them; where the processor has AVX, a mode's four products are one
+/// register, added by the same pairs.
+pub(super) struct Exact<'a> {
+    pub maps: &'a [Propagator],
+    pub y0: &'a [[f64; 4]],
+    pub damping: &'a [f64],
+    pub stiffness: &'a [f64],
+    pub s: f64,
+}
+
+#[inline(never)]
+pub(super) fn exact_states(e: &Exact, q: &mut [f64], v: &mut [f64], acc: &mut [f64]) {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx") {
+        #[target_feature(enable = "avx")]
+        #[inline(never)]
+        fn with_avx(e: &Exact, q: &mut [f64], v: &mut [f64], acc: &mut [f64]) {
+            exact_states_with(e, q, v, acc, avx::apply)
+        }
+        // SAFETY: the processor has just been found to have AVX.
+        return unsafe { with_avx(e, q, v, acc) };
+    }
+    exact_states_with(e, q, v, acc, |p, y| p.apply(y))
+}
+
+#[inline(always)]
+fn exact_states_with(
+    e: &Exact,
+    q: &mut [f64],
+    v: &mut [f64],
+    acc: &mut [f64],
+    apply: impl Fn(&Propagator, &[f64; 4]) -> (f64, f64),
+) {
+    let n = q.len();
+    let (v, acc) = (&mut v[..n], &mut acc[..n]);
+    let (maps, y0) = (&e.maps[..n], &e.y0[..n]);
+    let (damping, stiffness) = (&e.damping[..n], &e.stiffness[..n]);
+    for k in 0..n {
+        let y = &y0[k];
+        let (qk, vk) = apply(&maps[k], y);
+        q[k] = qk;
+        v[k] = vk;
+        acc[k] = y[2] + y[3] * e.s - damping[k] * vk - stiffness[k] * qk;
+    }
+}
+
 /// A side's modes where a contact step starts, and what it moves them by.
 pub(super) struct Ends<'a> {
     pub q0: &'a [f64],
@@ -345,6 +397,30 @@ mod avx {
             let mut out = [0.0; 4];
             self.put(&mut out, 0);
             out
+        }
+    }
+
+    /// [`Propagator::apply`](super::Propagator::apply) with the four products in one register:
+    /// the pairs added by one horizontal addition, then the two pairs' sums.
+    #[inline(always)]
+    pub fn apply(p: &super::Propagator, y: &[f64; 4]) -> (f64, f64) {
+        debug_assert!(std::arch::is_x86_feature_detected!("avx"));
+        // SAFETY: only called from a function compiled for AVX, taken where the processor was
+        // found to have it; four f64 in bounds each, unaligned loads allowed.
+        unsafe {
+            let y = _mm256_loadu_pd(y.as_ptr());
+            let q = _mm256_mul_pd(_mm256_loadu_pd(p.q.as_ptr()), y);
+            let v = _mm256_mul_pd(_mm256_loadu_pd(p.v.as_ptr()), y);
+            // [q0 + q1, v0 + v1, q2 + q3, v2 + v3]
+            let pairs = _mm256_hadd_pd(q, v);
+            let sums = _mm_add_pd(
+                _mm256_castpd256_pd128(pairs),
+                _mm256_extractf128_pd(pairs, 1),
+            );
+            (
+                _mm_cvtsd_f64(sums),
+                _mm_cvtsd_f64(_mm_unpackhi_pd(sums, sums)),
+            )
         }
     }
 
@@ -628,6 +704,8 @@ mod tests {
 
     /// A commit of q, v and a (in that order).
     type CommitFn<'a> = dyn Fn(&mut [f64], &mut [f64], &mut [f64]) -> Committed + 'a;
+    /// Exact states q, v and accelerations (in that order).
+    type StatesFn<'a> = dyn Fn(&mut [f64], &mut [f64], &mut [f64]) + 'a;
 
     #[test]
     fn a_commit_in_lanes_has_the_same_bits_on_every_processor() {
@@ -704,6 +782,49 @@ mod tests {
                     let mode = [omega[k], zeta[k], gamma[k]];
                     let load = increment_load(mode, -0.2, q0[k], 0.0, v0[k], a0[k], 1.3e-3);
                     out[k] = load / k_hat[k];
+                }
+            });
+            assert_eq!(found, by_hand, "{n} modes");
+        }
+    }
+
+    #[test]
+    fn a_free_stretchs_exact_states_have_the_same_bits_on_every_processor() {
+        for n in [0, 1, 5, 100] {
+            let w = fixed_signed(3 + n as u64, 14 * n);
+            let maps: Vec<Propagator> = w
+                .chunks_exact(14)
+                .map(|c| Propagator {
+                    q: [c[0], c[1], c[2], c[3]],
+                    v: [c[4], c[5], c[6], c[7]],
+                })
+                .collect();
+            let y0: Vec<[f64; 4]> = w
+                .chunks_exact(14)
+                .map(|c| [c[8], c[9], c[10], c[11]])
+                .collect();
+            let (damping, stiffness): (Vec<f64>, Vec<f64>) =
+                w.chunks_exact(14).map(|c| (c[12], 1e4 * c[13])).unzip();
+            let e = Exact {
+                maps: &maps,
+                y0: &y0,
+                damping: &damping,
+                stiffness: &stiffness,
+                s: 0.37,
+            };
+            let states = |f: &StatesFn| {
+                let (mut q, mut v, mut a) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+                f(&mut q, &mut v, &mut a);
+                [q, v, a].map(|x| x.iter().map(|x| x.to_bits()).collect::<Vec<_>>())
+            };
+            let found = states(&|q, v, a| exact_states(&e, q, v, a));
+            // Mode by mode: the map's pairs, then the acceleration's terms left to right.
+            let by_hand = states(&|q, v, a| {
+                for k in 0..n {
+                    let (p, y) = (&maps[k], &y0[k]);
+                    q[k] = (p.q[0] * y[0] + p.q[1] * y[1]) + (p.q[2] * y[2] + p.q[3] * y[3]);
+                    v[k] = (p.v[0] * y[0] + p.v[1] * y[1]) + (p.v[2] * y[2] + p.v[3] * y[3]);
+                    a[k] = y[2] + y[3] * 0.37 - damping[k] * v[k] - stiffness[k] * q[k];
                 }
             });
             assert_eq!(found, by_hand, "{n} modes");

@@ -117,6 +117,9 @@ struct Side {
     doublings: Vec<Vec<(StepIntegrals, [[f64; 4]; 4])>>,
     /// Newmark's effective stiffness over h, per mode.
     k_hat: Vec<f64>,
+    /// Per mode, 2 zeta omega and omega^2 (as the equations of motion multiply them out).
+    damping: Vec<f64>,
+    stiffness: Vec<f64>,
     /// The storeys' springs where they may yield (None: all elastic, nothing to correct).
     storeys: Option<Storeys>,
 }
@@ -146,6 +149,10 @@ impl Side {
             doublings: (0..n)
                 .map(|k| doublings(modes.omega_rad_s[k], modes.damping[k], h, grid.per_stretch))
                 .collect(),
+            damping: (0..n)
+                .map(|k| 2.0 * modes.damping[k] * modes.omega_rad_s[k])
+                .collect(),
+            stiffness: modes.omega_rad_s.iter().map(|w| w * w).collect(),
             omega: modes.omega_rad_s.clone(),
             zeta: modes.damping.clone(),
             gamma: modes.participation.clone(),
