@@ -32,6 +32,7 @@
 //! over each stretch of contact and repeated, attenuated, between them).
 
 use super::Slab;
+use super::stepper::lanes;
 use crate::model::field::{BarBody, BarWaves};
 use crate::model::history::Tap;
 use crate::model::ring::{Look, Ring};
@@ -325,10 +326,10 @@ impl SlabWaves {
     /// point of two round trips.
     ///
     /// In stages, each the same arithmetic as stepping would do, in the same order (so bit for
-    /// bit the values stepping finds), laid out so that the compiler can put the stages in
-    /// vector lanes: A and B (a scalar recursion of their own), then Q block by block (the
-    /// recursion reads a round trip back, so a block shorter than that reads only blocks done),
-    /// then e at every point from the finished Q, then its largest |value|.
+    /// bit the values stepping finds): A and B (a scalar recursion of their own), then Q block by
+    /// block (the recursion reads a round trip back, so a block shorter than that reads only
+    /// blocks done) and e at every point from the finished Q, four points a vector register
+    /// ([`lanes::ringing_block`], [`lanes::elastic_rows`]), then its largest |value|.
     fn tabulate_envelope(&self, q: &Quiet) -> [f64; 2] {
         let steps = self.ringing.tabulated_steps();
         let len = q.w.q.len();
@@ -405,9 +406,7 @@ impl SlabWaves {
             let todo = &mut todo[..end - at];
             let src = &done[at - back..at - back + todo.len() + 3];
             let a = &a[at - len..end - len];
-            for k in 0..todo.len() {
-                todo[k] = (a[k] + round * stencil(&w, &src[k..k + 4])) * gain;
-            }
+            lanes::ringing_block(todo, a, src, &w, round, gain);
             at = end;
         }
     }
@@ -422,16 +421,21 @@ impl SlabWaves {
         [near, far]: [(usize, [f64; 4]); 2],
         out: &mut [f64],
     ) {
-        let (top, n) = (self.top, out.len());
-        let near_src = &buf[len - near.0..len - near.0 + n + 3];
-        let far_src = &buf[len - far.0..len - far.0 + n + 3];
-        let newest = &buf[len..len + n];
-        let b = &b[..n];
-        for k in 0..n {
-            let near_far = self.near_weight * stencil(&near.1, &near_src[k..k + 4])
-                + self.far_weight * stencil(&far.1, &far_src[k..k + 4]);
-            out[k] = self.inv_z * (near_far + top * newest[k]) - self.inv_m * b[k];
-        }
+        let n = out.len();
+        let e = lanes::Elastic {
+            near: (&buf[len - near.0..len - near.0 + n + 3], &near.1),
+            far: (&buf[len - far.0..len - far.0 + n + 3], &far.1),
+            newest: &buf[len..len + n],
+            b: &b[..n],
+            constants: [
+                self.near_weight,
+                self.far_weight,
+                self.inv_z,
+                self.top,
+                self.inv_m,
+            ],
+        };
+        lanes::elastic_rows(&e, out);
     }
 
     /// Falls quiet once the force has stopped: from then on its ringing is read in closed form.

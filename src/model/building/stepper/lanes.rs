@@ -253,6 +253,87 @@ fn exact_states_with(
     }
 }
 
+/// [`stencil`](crate::model::ringing::stencil) on four values a lane: each lane's four samples
+/// `s`, summed in the same pairs.
+#[inline(always)]
+fn stencil_in<T: Lane>(w: &[f64; 4], s: [T; 4]) -> T {
+    (T::splat(w[0]) * s[0] + T::splat(w[1]) * s[1])
+        + (T::splat(w[2]) * s[2] + T::splat(w[3]) * s[3])
+}
+
+/// The four samples each of four consecutive points' stencils reads, from `src[k..k + 7]`.
+#[inline(always)]
+fn shifted<L: Four>(src: &[f64], k: usize) -> [L; 4] {
+    std::array::from_fn(|j| L::at(src, k + j))
+}
+
+in_lanes! {
+    /// A slab's ringing Q over a block of points that reads only points before it:
+    /// todo[k] = (a[k] + round stencil(w, src[k..k + 4])) gain (src at least todo's length + 3).
+    pub(in crate::model::building) fn ringing_block(todo: &mut [f64], a: &[f64], src: &[f64], w: &[f64; 4], round: f64, gain: f64) = ringing_block_in
+}
+
+#[inline(always)]
+fn ringing_block_in<L: Four>(
+    todo: &mut [f64],
+    a: &[f64],
+    src: &[f64],
+    w: &[f64; 4],
+    round: f64,
+    gain: f64,
+) {
+    let n = todo.len();
+    let (a, src) = (&a[..n], &src[..n + 3]);
+    let full = n - n % 4;
+    let (round_l, gain_l) = (L::splat(round), L::splat(gain));
+    for k in (0..full).step_by(4) {
+        let read = stencil_in(w, shifted::<L>(src, k));
+        ((L::at(a, k) + round_l * read) * gain_l).put(todo, k);
+    }
+    for k in full..n {
+        let s = &src[k..k + 4];
+        todo[k] = (a[k] + round * stencil_in(w, [s[0], s[1], s[2], s[3]])) * gain;
+    }
+}
+
+/// What a slab's elastic displacement is made of at each tabulated point: its two look-ups'
+/// samples and weights, the newest Q, B, and the slab's constants [near weight, far weight,
+/// 1 / Z, the newest Q's share, 1 / m].
+pub(in crate::model::building) struct Elastic<'a> {
+    pub near: (&'a [f64], &'a [f64; 4]),
+    pub far: (&'a [f64], &'a [f64; 4]),
+    pub newest: &'a [f64],
+    pub b: &'a [f64],
+    pub constants: [f64; 5],
+}
+
+in_lanes! {
+    /// e at each point: 1/Z (near weight stencil(near) + far weight stencil(far) + top newest)
+    /// - B / m, each look-up's samples from its slice at the point (as long as `out` + 3).
+    pub(in crate::model::building) fn elastic_rows(e: &Elastic, out: &mut [f64]) = elastic_rows_in
+}
+
+#[inline(always)]
+fn elastic_rows_in<L: Four>(e: &Elastic, out: &mut [f64]) {
+    let n = out.len();
+    let (near, far) = (&e.near.0[..n + 3], &e.far.0[..n + 3]);
+    let (newest, b) = (&e.newest[..n], &e.b[..n]);
+    let [near_weight, far_weight, inv_z, top, inv_m] = e.constants;
+    let full = n - n % 4;
+    let [nw, fw, iz, tp, im] = e.constants.map(L::splat);
+    for k in (0..full).step_by(4) {
+        let near_far = nw * stencil_in(e.near.1, shifted::<L>(near, k))
+            + fw * stencil_in(e.far.1, shifted::<L>(far, k));
+        (iz * (near_far + tp * L::at(newest, k)) - im * L::at(b, k)).put(out, k);
+    }
+    for k in full..n {
+        let (s, f) = (&near[k..k + 4], &far[k..k + 4]);
+        let near_far = near_weight * stencil_in(e.near.1, [s[0], s[1], s[2], s[3]])
+            + far_weight * stencil_in(e.far.1, [f[0], f[1], f[2], f[3]]);
+        out[k] = inv_z * (near_far + top * newest[k]) - inv_m * b[k];
+    }
+}
+
 /// A side's modes where a contact step starts, and what it moves them by.
 pub(super) struct Ends<'a> {
     pub q0: &'a [f64],
@@ -828,6 +909,42 @@ mod tests {
                 }
             });
             assert_eq!(found, by_hand, "{n} modes");
+        }
+    }
+
+    #[test]
+    fn a_slabs_tabulated_ringing_in_lanes_has_the_same_bits_as_point_by_point() {
+        use crate::model::ringing::stencil;
+        let w = [0.1, -0.35, 0.8, 0.45];
+        let far_w = [0.3, 0.2, -0.1, 0.6];
+        for n in [0, 1, 3, 4, 9, 130] {
+            let src = fixed_signed(5 + n as u64, n + 3);
+            let other = fixed_signed(6 + n as u64, n + 3);
+            let a = fixed_signed(7, n);
+            let bits = |x: &[f64]| x.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            let mut todo = vec![0.0; n];
+            ringing_block(&mut todo, &a, &src, &w, 0.93, 1.07);
+            let by_hand: Vec<f64> = (0..n)
+                .map(|k| (a[k] + 0.93 * stencil(&w, &src[k..k + 4])) * 1.07)
+                .collect();
+            assert_eq!(bits(&todo), bits(&by_hand), "{n} points");
+            let e = Elastic {
+                near: (&src, &w),
+                far: (&other, &far_w),
+                newest: &a,
+                b: &src,
+                constants: [0.9, 0.4, 2.5, 0.7, 1e-3],
+            };
+            let mut out = vec![0.0; n];
+            elastic_rows(&e, &mut out);
+            let by_hand: Vec<f64> = (0..n)
+                .map(|k| {
+                    let near_far =
+                        0.9 * stencil(&w, &src[k..k + 4]) + 0.4 * stencil(&far_w, &other[k..k + 4]);
+                    2.5 * (near_far + 0.7 * a[k]) - 1e-3 * src[k]
+                })
+                .collect();
+            assert_eq!(bits(&out), bits(&by_hand), "{n} points");
         }
     }
 }

@@ -26,7 +26,7 @@
 
 mod contact;
 mod free;
-mod lanes;
+pub(super) mod lanes;
 mod onset;
 mod record;
 mod weights;
