@@ -163,6 +163,7 @@ impl Element {
 
     /// Solves delta + beta F(delta, rate(delta)) = rhs for the step's overlap, with the rate
     /// from [`Element::rate`]. beta >= 0 and F >= 0 increasing in delta: one root, in [0, rhs].
+    #[inline]
     pub fn solve_step(
         &self,
         beta: f64,

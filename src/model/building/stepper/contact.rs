@@ -112,6 +112,9 @@ impl Sleepers {
     /// The levels the last trial looked at back in the heap as they were (the step is made
     /// again).
     fn put_back(&mut self) {
+        if self.looked.is_empty() {
+            return;
+        }
         for (key, i, _) in self.looked.drain(..) {
             self.due.push(Reverse((key, i)));
         }
@@ -404,6 +407,7 @@ impl Stepper<'_> {
     }
 
     /// A point's closing (left less right) with each side's modes at q plus `inc`.
+    #[inline(always)]
     fn closing_after(&self, p: &Point, inc: &[Vec<f64>; 2]) -> f64 {
         let mut moved = [0.0; 2];
         for (s, out) in moved.iter_mut().enumerate() {
