@@ -45,6 +45,8 @@ pub(super) struct Scratch {
     far: Vec<bool>,
     far_bound: Vec<f64>,
     near_forced: Vec<bool>,
+    /// Whether any entry of `near_forced` is set (a step clears them only then).
+    any_near_forced: bool,
     /// The ground acceleration where the step starts.
     ground0: f64,
     /// Each mode's load from the contact forces where the step starts, per side.
@@ -180,16 +182,23 @@ impl Stepper<'_> {
         }
         // The levels awake where the last step ended (every level where a phase starts): a
         // level asleep stays so until `wake_reached` wakes it.
+        let mut fell_asleep = false;
         for j in 0..cs.awake.len() {
             let i = cs.awake[j];
             if self.points[i].force <= 0.0 {
                 self.follow_free_level(i, &mut cs);
+                fell_asleep |= cs.asleep[i];
             }
         }
-        let asleep = &cs.asleep;
-        cs.awake.retain(|&i| !asleep[i]);
+        if fell_asleep {
+            let asleep = &cs.asleep;
+            cs.awake.retain(|&i| !asleep[i]);
+        }
         cs.ground0 = self.motion.at(self.time());
-        cs.near_forced.fill(false);
+        if cs.any_near_forced {
+            cs.near_forced.fill(false);
+            cs.any_near_forced = false;
+        }
         // A sleeping level the step could have brought within reach wakes, and the step is made
         // again with it.
         loop {
@@ -352,6 +361,7 @@ impl Stepper<'_> {
             if cs.predicted[i] + cs.far_bound[i] - others >= 0.0 {
                 cs.far[i] = false;
                 cs.near_forced[i] = true;
+                cs.any_near_forced = true;
                 any = true;
             }
         }
