@@ -494,10 +494,8 @@ impl Stepper<'_> {
         for s in 0..2 {
             let sign = if s == 0 { -1.0 } else { 1.0 };
             let k_hat = self.step_k_hat(&cs.k_hat, s, full);
-            // Rounding is symmetric, so the sign taken out of a mode's sum changes no bit of it.
-            let end = |dq: &mut f64, load: &mut f64, step: f64, k_hat: f64, f: f64| {
-                (*dq, *load) = lanes::with_force(step, f, k_hat, sign);
-            };
+            // Rounding is symmetric, so the sign taken out of a mode's sum changes no bit of it:
+            // each mode's end is `lanes::with_force` of its sum without the sign.
             if let [k_hat] = k_hat {
                 // One mode: its sum straight from the points, in the points' order.
                 let mut f = 0.0;
@@ -507,13 +505,7 @@ impl Stepper<'_> {
                         f += self.points[i].r[s][0] * force;
                     }
                 }
-                end(
-                    &mut out.dq[s][0],
-                    &mut out.load[s][0],
-                    cs.step[s][0],
-                    *k_hat,
-                    f,
-                );
+                (out.dq[s][0], out.load[s][0]) = lanes::with_force(cs.step[s][0], f, *k_hat, sign);
                 continue;
             }
             // A tall side's sums four modes a register (the same terms in the same order).
@@ -542,8 +534,7 @@ impl Stepper<'_> {
             }
             let each = out.dq[s].iter_mut().zip(out.load[s].iter_mut());
             for ((dq, load), (step, k_hat)) in each.zip(cs.step[s].iter().zip(k_hat)) {
-                let f = *load;
-                end(dq, load, *step, *k_hat, f);
+                (*dq, *load) = lanes::with_force(*step, *load, *k_hat, sign);
             }
         }
     }

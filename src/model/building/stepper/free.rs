@@ -441,8 +441,8 @@ impl Stepper<'_> {
             let sd = &self.sides[side];
             for k in 0..sd.modes() {
                 let y = &w.y0[side][k];
-                w.acc[side][k] =
-                    y[2] + y[3] * s - sd.damping[k] * w.v[side][k] - sd.stiffness[k] * w.q[side][k];
+                let (q, v) = (w.q[side][k], w.v[side][k]);
+                w.acc[side][k] = lanes::acceleration(y, s, sd.damping[k], sd.stiffness[k], q, v);
             }
         }
     }

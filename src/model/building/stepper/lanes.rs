@@ -1,9 +1,10 @@
-//! Sums and updates over a tall building's modes four modes at a time (mode k in lane k mod 4, a
-//! sum's lanes joined pairwise), or over the rows of a table four rows at a time. Where the processor has AVX, the four lanes are one 256-bit
-//! register ([`avx::V4`], its operations written out, since the compiler left loops written
-//! lane by lane half in scalar registers); elsewhere four scalars ([`F4`]). Either way the same
-//! multiplications, divisions and additions in the same lanes (Rust never fuses them), so the
-//! same bits on every processor (tested).
+//! Sums and updates four values at a time: over a tall building's modes (mode k in lane k mod 4,
+//! a sum's lanes joined pairwise), over the rows of a table, over a slab's tabulated points, or
+//! over the four products of a mode's exact map. Where the processor has AVX, the four lanes are
+//! one 256-bit register ([`avx::V4`], its operations written out, since the compiler left loops
+//! written lane by lane half in scalar registers); elsewhere four scalars ([`F4`]). Either way
+//! the same multiplications, divisions and additions in the same lanes (Rust never fuses them),
+//! so the same bits on every processor (tested against the formulas written out).
 
 use super::super::modal::Propagator;
 
@@ -217,40 +218,38 @@ pub(super) struct Exact<'a> {
     pub s: f64,
 }
 
-#[inline(never)]
-pub(super) fn exact_states(e: &Exact, q: &mut [f64], v: &mut [f64], acc: &mut [f64]) {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx") {
-        #[target_feature(enable = "avx")]
-        #[inline(never)]
-        fn with_avx(e: &Exact, q: &mut [f64], v: &mut [f64], acc: &mut [f64]) {
-            exact_states_with(e, q, v, acc, avx::apply)
-        }
-        // SAFETY: the processor has just been found to have AVX.
-        return unsafe { with_avx(e, q, v, acc) };
-    }
-    exact_states_with(e, q, v, acc, |p, y| p.apply(y))
+in_lanes! {
+    /// [`Exact`]'s states and accelerations, mode by mode.
+    pub(super) fn exact_states(e: &Exact, q: &mut [f64], v: &mut [f64], acc: &mut [f64]) = exact_states_in
 }
 
 #[inline(always)]
-fn exact_states_with(
-    e: &Exact,
-    q: &mut [f64],
-    v: &mut [f64],
-    acc: &mut [f64],
-    apply: impl Fn(&Propagator, &[f64; 4]) -> (f64, f64),
-) {
+fn exact_states_in<L: Four>(e: &Exact, q: &mut [f64], v: &mut [f64], acc: &mut [f64]) {
     let n = q.len();
     let (v, acc) = (&mut v[..n], &mut acc[..n]);
     let (maps, y0) = (&e.maps[..n], &e.y0[..n]);
     let (damping, stiffness) = (&e.damping[..n], &e.stiffness[..n]);
     for k in 0..n {
-        let y = &y0[k];
-        let (qk, vk) = apply(&maps[k], y);
+        let (qk, vk) = L::apply(&maps[k], &y0[k]);
         q[k] = qk;
         v[k] = vk;
-        acc[k] = y[2] + y[3] * e.s - damping[k] * vk - stiffness[k] * qk;
+        acc[k] = acceleration(&y0[k], e.s, damping[k], stiffness[k], qk, vk);
     }
+}
+
+/// A mode's acceleration from the equation of motion at s into a free stretch from y0 (its
+/// forcing g + g' s), with its displacement q and velocity v there (`damping` 2 zeta omega,
+/// `stiffness` omega^2).
+#[inline(always)]
+pub(super) fn acceleration(
+    y0: &[f64; 4],
+    s: f64,
+    damping: f64,
+    stiffness: f64,
+    q: f64,
+    v: f64,
+) -> f64 {
+    y0[2] + y0[3] * s - damping * v - stiffness * q
 }
 
 /// [`stencil`](crate::model::ringing::stencil) on four values a lane: each lane's four samples
@@ -432,6 +431,9 @@ pub(super) trait Four: Lane {
     fn at(x: &[f64], c: usize) -> Self;
     fn put(self, x: &mut [f64], c: usize);
     fn array(self) -> [f64; 4];
+    /// [`Propagator::apply`], a mode's map on its state (a map's four products are what this
+    /// type can hold at once).
+    fn apply(p: &Propagator, y: &[f64; 4]) -> (f64, f64);
 }
 
 impl Four for F4 {
@@ -446,6 +448,10 @@ impl Four for F4 {
     #[inline(always)]
     fn array(self) -> [f64; 4] {
         self.0
+    }
+    #[inline(always)]
+    fn apply(p: &Propagator, y: &[f64; 4]) -> (f64, f64) {
+        p.apply(y)
     }
 }
 
@@ -479,29 +485,28 @@ mod avx {
             self.put(&mut out, 0);
             out
         }
-    }
-
-    /// [`Propagator::apply`](super::Propagator::apply) with the four products in one register:
-    /// the pairs added by one horizontal addition, then the two pairs' sums.
-    #[inline(always)]
-    pub fn apply(p: &super::Propagator, y: &[f64; 4]) -> (f64, f64) {
-        debug_assert!(std::arch::is_x86_feature_detected!("avx"));
-        // SAFETY: only called from a function compiled for AVX, taken where the processor was
-        // found to have it; four f64 in bounds each, unaligned loads allowed.
-        unsafe {
-            let y = _mm256_loadu_pd(y.as_ptr());
-            let q = _mm256_mul_pd(_mm256_loadu_pd(p.q.as_ptr()), y);
-            let v = _mm256_mul_pd(_mm256_loadu_pd(p.v.as_ptr()), y);
-            // [q0 + q1, v0 + v1, q2 + q3, v2 + v3]
-            let pairs = _mm256_hadd_pd(q, v);
-            let sums = _mm_add_pd(
-                _mm256_castpd256_pd128(pairs),
-                _mm256_extractf128_pd(pairs, 1),
-            );
-            (
-                _mm_cvtsd_f64(sums),
-                _mm_cvtsd_f64(_mm_unpackhi_pd(sums, sums)),
-            )
+        /// The four products in one register: the pairs added by one horizontal addition,
+        /// then the two pairs' sums.
+        #[inline(always)]
+        fn apply(p: &super::Propagator, y: &[f64; 4]) -> (f64, f64) {
+            debug_assert!(std::arch::is_x86_feature_detected!("avx"));
+            // SAFETY: only called from a function compiled for AVX, taken where the processor was
+            // found to have it; four f64 in bounds each, unaligned loads allowed.
+            unsafe {
+                let y = _mm256_loadu_pd(y.as_ptr());
+                let q = _mm256_mul_pd(_mm256_loadu_pd(p.q.as_ptr()), y);
+                let v = _mm256_mul_pd(_mm256_loadu_pd(p.v.as_ptr()), y);
+                // [q0 + q1, v0 + v1, q2 + q3, v2 + v3]
+                let pairs = _mm256_hadd_pd(q, v);
+                let sums = _mm_add_pd(
+                    _mm256_castpd256_pd128(pairs),
+                    _mm256_extractf128_pd(pairs, 1),
+                );
+                (
+                    _mm_cvtsd_f64(sums),
+                    _mm_cvtsd_f64(_mm_unpackhi_pd(sums, sums)),
+                )
+            }
         }
     }
 
@@ -814,10 +819,14 @@ mod tests {
             // Mode by mode, mode k's terms in lane k mod 4, the lanes joined pairwise.
             let by_hand = run(&|q, v, a| {
                 let mut lane = [[0.0f64; 4]; 6];
+                // Newmark's ends and energy terms written out as the scalar step wrote them
+                // before the lanes (not through the functions under test).
+                let hh = e.hh;
                 for k in 0..n {
-                    let (v1, a1) = newmark_end(dq[k], v0[k], a[k], e.hh);
-                    let mode = [omega[k], zeta[k], gamma[k]];
-                    let (input, damping) = energy_terms(dq[k], v0[k], v1, mode, e.hh, e.ground);
+                    let v1 = v0[k] + (2.0 * dq[k] / hh - 2.0 * v0[k]);
+                    let a1 = a[k] + (4.0 * (dq[k] - hh * v0[k]) / (hh * hh) - 2.0 * a[k]);
+                    let input = 0.5 * dq[k] * (-gamma[k]) * e.ground;
+                    let damping = 0.25 * hh * 2.0 * zeta[k] * omega[k] * (v0[k] + v1).powi(2);
                     let terms = [
                         input,
                         damping,
@@ -859,9 +868,12 @@ mod tests {
             let found = steps(&|out| increment(&inc, out));
             assert_eq!(found, steps(&|out| increment_in::<F4>(&inc, out)));
             let by_hand = steps(&|out| {
+                // Newmark's incremental load written out, not through `increment_load`.
+                let hh = 1.3e-3;
                 for k in 0..n {
-                    let mode = [omega[k], zeta[k], gamma[k]];
-                    let load = increment_load(mode, -0.2, q0[k], 0.0, v0[k], a0[k], 1.3e-3);
+                    let c = 2.0 * zeta[k] * omega[k];
+                    let load =
+                        -gamma[k] * -0.2 - q0[k] + 0.0 + (4.0 / hh + 2.0 * c) * v0[k] + 2.0 * a0[k];
                     out[k] = load / k_hat[k];
                 }
             });
