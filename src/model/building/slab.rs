@@ -103,6 +103,10 @@ struct Tabulation {
     e: Vec<f64>,
 }
 
+/// A step's prediction: (e0, e1), the plane's elastic displacement at the step's end as
+/// e0 + e1 F, and the recursion's look-up.
+pub type Prediction = ((f64, f64), f64);
+
 /// A saved state to return to after one trial step.
 #[derive(Debug, Clone, Copy)]
 pub struct SlabMark {
@@ -214,12 +218,23 @@ impl SlabWaves {
 
     /// (e0, e1) and the recursion's look-up for the next step, made once per step.
     #[inline]
-    fn prediction(&self) -> ((f64, f64), f64) {
+    fn prediction(&self) -> Prediction {
         if let Some((next, e0, e1, recur)) = self.predicted.get()
             && next == self.q.next
         {
             return ((e0, e1), recur);
         }
+        let made = self.fresh_prediction();
+        let ((e0, e1), recur) = made;
+        self.predicted.set(Some((self.q.next, e0, e1, recur)));
+        made
+    }
+
+    /// (e0, e1) and the recursion's look-up for the next step, made afresh and not kept: for a
+    /// caller that keeps it and hands it to [`SlabWaves::push_predicted`] (while live).
+    #[inline]
+    pub fn fresh_prediction(&self) -> Prediction {
+        debug_assert!(self.is_live());
         let (e, h) = (self.ringing.step_decay, self.ringing.h);
         let a0 = e * self.a + 0.5 * h * e * self.f_prev;
         let b0 = e * self.b + 0.5 * h * (e * self.a + a0);
@@ -228,7 +243,6 @@ impl SlabWaves {
         let known =
             self.near_weight * self.q.known(&self.near) + self.far_weight * self.q.known(&self.far);
         let e0 = self.inv_z * (known + self.top * q0) - self.inv_m * b0;
-        self.predicted.set(Some((self.q.next, e0, self.e1, recur)));
         ((e0, self.e1), recur)
     }
 
@@ -252,7 +266,14 @@ impl SlabWaves {
 
     /// Advances one step with the force F_{n+1} (while live).
     pub fn push(&mut self, force: f64) {
-        let ((e0, e1), recur) = self.prediction();
+        let made = self.prediction();
+        self.push_predicted(force, made);
+    }
+
+    /// [`SlabWaves::push`] with the step's prediction given (made by
+    /// [`SlabWaves::fresh_prediction`] for this step).
+    #[inline(always)]
+    pub fn push_predicted(&mut self, force: f64, ((e0, e1), recur): Prediction) {
         let (e, h) = (self.ringing.step_decay, self.ringing.h);
         let a1 = e * self.a + 0.5 * h * (e * self.f_prev + force);
         self.b = e * self.b + 0.5 * h * (e * self.a + a1);

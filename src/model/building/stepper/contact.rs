@@ -5,6 +5,8 @@
 
 use super::yielding::MAX_PASSES;
 use super::*;
+
+mod single;
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 
@@ -69,6 +71,8 @@ pub(super) struct Scratch {
     closing_step: Vec<usize>,
     /// Yielding storeys: each side's load of their corrections at the trial's end, per mode.
     pseudo1: [Vec<f64>; 2],
+    /// The single level's step: its slabs' predictions, made by the trial, read by the commit.
+    slab_predictions: [crate::model::building::slab::Prediction; 2],
 }
 
 /// The levels asleep in a contact phase, looked at only when the steps could have moved one
@@ -160,12 +164,6 @@ impl Scratch {
 }
 
 impl Stepper<'_> {
-    /// One implicit step of every level in contact, to the next grid point (or a Kelvin-Voigt
-    /// link's release inside it).
-    pub(super) fn contact_step(&mut self) -> Result<(), SolveError> {
-        self.contact_step_of(self.grid.h - self.offset)
-    }
-
     /// A contact step of length hh (the last one of a graded start lands on the grid).
     pub(super) fn contact_step_of(&mut self, hh: f64) -> Result<(), SolveError> {
         self.count_step()?;
@@ -419,10 +417,17 @@ impl Stepper<'_> {
     /// A point's closing (left less right) with each side's modes at q plus `inc`.
     #[inline(always)]
     fn closing_after(&self, p: &Point, inc: &[Vec<f64>; 2]) -> f64 {
+        self.closing_after_of(p, inc, [p.r[0].len(), p.r[1].len()])
+    }
+
+    /// [`Stepper::closing_after`] with each side's modes counted (`n`: a caller that knows them
+    /// lets the compiler unroll the sums).
+    #[inline(always)]
+    fn closing_after_of(&self, p: &Point, inc: &[Vec<f64>; 2], n: [usize; 2]) -> f64 {
         let mut moved = [0.0; 2];
         for (s, out) in moved.iter_mut().enumerate() {
-            let r = &p.r[s];
-            let n = r.len();
+            let n = n[s];
+            let r = &p.r[s][..n];
             let (q, inc) = (&self.sides[s].q[..n], &inc[s][..n]);
             if n >= lanes::LANES_FROM {
                 *out = lanes::dot_moved(r, q, inc);
@@ -560,15 +565,18 @@ impl Stepper<'_> {
     fn free_increment(&self, hh: f64, full: bool, ground: f64, cs: &mut Scratch) {
         let ground_change = ground - cs.ground0;
         for s in 0..2 {
-            self.free_increment_of(s, hh, full, ground_change, cs);
+            let n = self.sides[s].modes();
+            self.free_increment_of(s, n, hh, full, ground_change, cs);
         }
     }
 
-    /// [`Stepper::free_increment`] for side s, the ground's change over the step given.
+    /// [`Stepper::free_increment`] for side s of n modes, the ground's change over the step
+    /// given.
     #[inline(always)]
     fn free_increment_of(
         &self,
         s: usize,
+        n: usize,
         hh: f64,
         full: bool,
         ground_change: f64,
@@ -576,8 +584,6 @@ impl Stepper<'_> {
     ) {
         {
             let side = &self.sides[s];
-
-            let n = side.modes();
             // Every array sliced to the modes, so that the loop reads them unchecked.
             let (k_hat, step) = (&mut cs.k_hat[s][..n], &mut cs.step[s][..n]);
             let (omega, zeta, gamma) = (&side.omega[..n], &side.zeta[..n], &side.gamma[..n]);
@@ -625,7 +631,7 @@ impl Stepper<'_> {
         for s in 0..2 {
             let side = &self.sides[s];
             if side.storeys.is_some() || side.modes() < lanes::LANES_FROM {
-                self.free_increment_of(s, hh, true, ground_change, cs);
+                self.free_increment_of(s, side.modes(), hh, true, ground_change, cs);
                 continue;
             }
             let e = lanes::Increment {
@@ -780,10 +786,8 @@ impl Stepper<'_> {
     /// Takes the trial step: the modes, the slabs, the ledger and the contacts.
     #[inline(never)]
     fn commit_contact(&mut self, cs: &mut Scratch) {
-        let tr = &cs.trial;
-        let hh = tr.hh;
+        let hh = cs.trial.hh;
         let t0 = self.time();
-        let ground0 = cs.ground0;
         // Only the awake points' entries are read (by `account_contacts`): the others may hold
         // an earlier step's.
         for &i in &cs.awake {
@@ -792,45 +796,8 @@ impl Stepper<'_> {
                 cs.u_before[i] = self.point_closing(&self.points[i]);
             }
         }
-        // Per side, the sizes of the step's dq and of the velocities it ends with, summed as the
-        // modes are stepped: the peaks' proofs read them.
-        let mut moved = [[0.0f64; 2]; 2];
-        let mut speed_after = [[0.0f64; 2]; 2];
-        for s in 0..2 {
-            if self.sides[s].modes() >= lanes::LANES_FROM {
-                let ground = ground0 + tr.ground;
-                let sums = self.commit_in_lanes(s, &mut cs.modal_before[s], &tr.dq[s], hh, ground);
-                (moved[s], speed_after[s]) = (sums.moved, sums.speed);
-                continue;
-            }
-            let side = &mut self.sides[s];
-            let n = side.modes();
-            let (mut m, mut sp) = (Sizes::default(), Sizes::default());
-            // The state the step starts from is kept (the peaks' proofs read it) by trading the
-            // modes' buffers for the kept ones, which the step then fills: no copy.
-            let [q0, v0] = &mut cs.modal_before[s];
-            std::mem::swap(q0, &mut side.q);
-            std::mem::swap(v0, &mut side.v);
-            let (q0, v0s) = (&q0[..n], &v0[..n]);
-            let (q, v, a) = (&mut side.q[..n], &mut side.v[..n], &mut side.a[..n]);
-            let (omega, zeta, gamma) = (&side.omega[..n], &side.zeta[..n], &side.gamma[..n]);
-            let dqs = &tr.dq[s][..n];
-            for k in 0..n {
-                let (v0, a0) = (v0s[k], a[k]);
-                let dq = dqs[k];
-                let (v1, a1) = lanes::newmark_end(dq, v0, a0, hh);
-                let mode = [omega[k], zeta[k], gamma[k]];
-                let (input, damping) =
-                    lanes::energy_terms(dq, v0, v1, mode, hh, ground0 + tr.ground);
-                self.ledger.input_j += input;
-                self.ledger.damping_j += damping;
-                q[k] = q0[k] + dq;
-                v[k] = v1;
-                a[k] = a1;
-                (m, sp) = (m.add(dq), sp.add(v1));
-            }
-            (moved[s], speed_after[s]) = (m.done(), sp.done());
-        }
+        let sizes = self.commit_modes(cs, self.mode_counts());
+        let tr = &cs.trial;
         self.advance(hh);
         if self.yields() {
             let t1 = self.time();
@@ -875,8 +842,54 @@ impl Stepper<'_> {
             }
         }
         // Accelerations stay Newmark's inside contacts; leaving one, the free steps need none.
-        self.track_peaks_in_contact([moved, speed_after], &cs.modal_before, hh);
+        self.track_peaks_in_contact(sizes, &cs.modal_before, hh);
         self.record_in_contact(opened_or_closed);
+    }
+
+    /// The modes through the trial step, its energy terms in the ledger; the state where it
+    /// started kept in `cs.modal_before`. Per side, the sizes of the step's dq and of the
+    /// velocities it ends with, summed as the modes are stepped: the peaks' proofs read them.
+    #[inline(always)]
+    fn commit_modes(&mut self, cs: &mut Scratch, n: [usize; 2]) -> [[[f64; 2]; 2]; 2] {
+        let tr = &cs.trial;
+        let (hh, ground0) = (tr.hh, cs.ground0);
+        let mut moved = [[0.0f64; 2]; 2];
+        let mut speed_after = [[0.0f64; 2]; 2];
+        for s in 0..2 {
+            let n = n[s];
+            if n >= lanes::LANES_FROM {
+                let ground = ground0 + tr.ground;
+                let sums = self.commit_in_lanes(s, &mut cs.modal_before[s], &tr.dq[s], hh, ground);
+                (moved[s], speed_after[s]) = (sums.moved, sums.speed);
+                continue;
+            }
+            let side = &mut self.sides[s];
+            let (mut m, mut sp) = (Sizes::default(), Sizes::default());
+            // The state the step starts from is kept (the peaks' proofs read it), mode by mode
+            // as the step reads it.
+            let [q0s, v0s] = &mut cs.modal_before[s];
+            let (q0s, v0s) = (&mut q0s[..n], &mut v0s[..n]);
+            let (q, v, a) = (&mut side.q[..n], &mut side.v[..n], &mut side.a[..n]);
+            let (omega, zeta, gamma) = (&side.omega[..n], &side.zeta[..n], &side.gamma[..n]);
+            let dqs = &tr.dq[s][..n];
+            for k in 0..n {
+                let (q0, v0, a0) = (q[k], v[k], a[k]);
+                (q0s[k], v0s[k]) = (q0, v0);
+                let dq = dqs[k];
+                let (v1, a1) = lanes::newmark_end(dq, v0, a0, hh);
+                let mode = [omega[k], zeta[k], gamma[k]];
+                let (input, damping) =
+                    lanes::energy_terms(dq, v0, v1, mode, hh, ground0 + tr.ground);
+                self.ledger.input_j += input;
+                self.ledger.damping_j += damping;
+                q[k] = q0 + dq;
+                v[k] = v1;
+                a[k] = a1;
+                (m, sp) = (m.add(dq), sp.add(v1));
+            }
+            (moved[s], speed_after[s]) = (m.done(), sp.done());
+        }
+        [moved, speed_after]
     }
 
     /// A tall side's modes through the contact step that moves them by `dq`, its energy terms
@@ -926,13 +939,19 @@ impl Stepper<'_> {
     /// two levels would keep on the stack for nothing.
     #[inline(never)]
     fn account_contact(&mut self, i: usize, cs: &mut Scratch, t0: f64) -> bool {
+        self.account_contact_of(i, cs, t0, self.mode_counts())
+    }
+
+    /// [`Stepper::account_contact`] with each side's modes counted (`n`).
+    #[inline(always)]
+    fn account_contact_of(&mut self, i: usize, cs: &mut Scratch, t0: f64, n: [usize; 2]) -> bool {
         let tr = &cs.trial;
         let hh = tr.hh;
         let (t1, n1) = (self.time(), self.n);
         let mut opened_or_closed = false;
         // The closing now; its rate is read only where a contact opens without an approach
         // velocity.
-        let closing = self.point_closing(&self.points[i]);
+        let closing = self.point_closing_of(&self.points[i], n);
         let opening = {
             let p = &self.points[i];
             (p.force <= 0.0 && tr.forces[i] > 0.0 && p.v0 <= 0.0).then(|| self.point_now(i).1)

@@ -328,9 +328,14 @@ fn dot_tall(a: &[f64], b: &[f64]) -> f64 {
 }
 
 fn dotv(a: &[f64], b: &[f64]) -> f64 {
+    dotv_of(a, b, a.len().min(b.len()))
+}
+
+/// [`dotv`] over the first n entries (a caller that knows n lets the compiler unroll the sum).
+#[inline(always)]
+fn dotv_of(a: &[f64], b: &[f64], n: usize) -> f64 {
     // Indexed over the shorter: a few modes' loop without an iterator's set-up. The sum starts
     // where `Iterator::sum` starts for floats, at -0. A tall building's is taken in lanes.
-    let n = a.len().min(b.len());
     let (a, b) = (&a[..n], &b[..n]);
     if n >= lanes::LANES_FROM {
         return dot_tall(a, b);
@@ -395,12 +400,24 @@ pub(super) struct Stepper<'a> {
     lanes_increment: bool,
     /// A side is tall: a contact step's modal loads are taken in vector lanes.
     tall: bool,
+    /// One contact level, elastic sides of few modes, an element that does not let go inside
+    /// a step: the level's contact steps are the single level's (`contact/single.rs`).
+    single_level: bool,
     /// The next free step is one fine step (yielding storeys near or past their yield point).
     single_step: bool,
     /// Buffers, boxed so that a stage can take them out of the stepper for the step's length
     /// without copying them.
     scratch: Option<Box<Scratch>>,
     contact_scratch: Option<Box<contact::Scratch>>,
+}
+
+#[cfg(test)]
+thread_local! {
+    /// Set by a test on its own thread: the runs it starts take the general contact step only
+    /// (to compare the single level's with it).
+    static GENERAL_STEPS_ONLY: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+    /// The single level's contact steps taken on this thread.
+    static SINGLE_STEPS: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
 }
 
 /// Buffers the free stretch reuses, so its checks allocate nothing.
@@ -517,6 +534,12 @@ impl<'a> Stepper<'a> {
             .iter()
             .any(|s| s.storeys.is_none() && s.modes() >= lanes::LANES_FROM);
         let tall = sides.iter().any(|s| s.modes() >= lanes::LANES_FROM);
+        let single_level = points.len() == 1
+            && !tall
+            && sides.iter().all(|s| s.storeys.is_none())
+            && sc.contact != ContactModel::Kelvin;
+        #[cfg(test)]
+        let single_level = single_level && !GENERAL_STEPS_ONLY.with(|g| g.get());
         let contact_scratch =
             contact::Scratch::sized([sides[0].modes(), sides[1].modes()], points.len());
         let mut s = Stepper {
@@ -554,6 +577,7 @@ impl<'a> Stepper<'a> {
             newmark: false,
             lanes_increment,
             tall,
+            single_level,
             single_step: false,
             scratch: Some(Box::default()),
             contact_scratch: Some(contact_scratch),
@@ -565,6 +589,11 @@ impl<'a> Stepper<'a> {
         s.track_peaks_now();
         s.record_now();
         s
+    }
+
+    /// Each side's number of modes.
+    fn mode_counts(&self) -> [usize; 2] {
+        [self.sides[0].modes(), self.sides[1].modes()]
     }
 
     fn time(&self) -> f64 {

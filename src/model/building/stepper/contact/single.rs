@@ -1,0 +1,212 @@
+//! The contact step of a pair with one contact level, while that level is in contact: the
+//! general step ([`Stepper::contact_step_of`]) with what one level makes of it written out. No
+//! level sleeps or is out of reach, the compliance is one number, the forces' sweep is one
+//! scalar equation, and the step is a whole grid step: the same operations on the same numbers
+//! in the same order, without the loops, look-ups and checks that serve several levels.
+
+use super::*;
+
+impl Stepper<'_> {
+    /// Whether the next contact step is one the single level's step takes: one level, in
+    /// contact (so awake, read exactly, its slabs live), on the grid, after a contact step (so
+    /// Newmark's loads are the last trial's and the whole step's compliance is made), on
+    /// elastic sides of few modes, with an element that does not let go inside a step.
+    fn single_level_step(&self, cs: &Scratch) -> bool {
+        self.single_level
+            && self.newmark
+            && self.offset == 0.0
+            && cs.g_full.is_some()
+            && cs.awake.len() == 1
+            && cs.sleep.due.is_empty()
+            && cs.sleep.looked.is_empty()
+            && self.points[0].force > 0.0
+            && self.points[0].slabs.iter().flatten().all(|s| s.is_live())
+    }
+
+    /// [`Stepper::contact_step`]: the single level's step where it applies
+    /// ([`Stepper::single_level_step`]), the general one elsewhere.
+    pub(in crate::model::building::stepper) fn contact_step(&mut self) -> Result<(), SolveError> {
+        let cs = self.contact_scratch.as_deref().expect("home between steps");
+        if !self.single_level_step(cs) {
+            return self.contact_step_of(self.grid.h - self.offset);
+        }
+        self.count_step()?;
+        #[cfg(test)]
+        super::super::SINGLE_STEPS.with(|c| c.set(c.get() + 1));
+        let mut cs = self
+            .contact_scratch
+            .take()
+            .expect("the scratch is home between stages");
+        std::mem::swap(&mut cs.load_now, &mut cs.trial.load);
+        cs.ground0 = self.motion.at(self.time());
+        if cs.any_near_forced {
+            cs.near_forced.fill(false);
+            cs.any_near_forced = false;
+        }
+        // A side of one mode (the paper's buildings) has its sums unrolled.
+        let n = self.mode_counts();
+        if n == [1, 1] {
+            self.trial_single(self.grid.h, [1, 1], &mut cs);
+            self.commit_single([1, 1], &mut cs);
+        } else {
+            self.trial_single(self.grid.h, n, &mut cs);
+            self.commit_single(n, &mut cs);
+        }
+        self.contact_scratch = Some(cs);
+        Ok(())
+    }
+
+    /// [`Stepper::trial_once`] over a whole grid step for the one level, in contact.
+    #[inline(always)]
+    fn trial_single(&self, hh: f64, n: [usize; 2], cs: &mut Scratch) {
+        let ground = self.motion.at(self.time() + hh);
+        let ground_change = ground - cs.ground0;
+        for (s, n) in n.into_iter().enumerate() {
+            self.free_increment_of(s, n, hh, true, ground_change, cs);
+        }
+        // The overlap without new forces and the compliance (contact_compliance): a level
+        // with force is within reach, its slabs' predictions read.
+        let p = &self.points[0];
+        let closing = self.closing_after_of(p, &cs.step, n) - self.sc.gap_m;
+        let (mut e0, mut e1) = (0.0, 0.0);
+        if self.sears {
+            for (slab, kept) in p.slabs.iter().zip(&mut cs.slab_predictions) {
+                if let Some(slab) = slab {
+                    *kept = slab.fresh_prediction();
+                    let (a, b) = kept.0;
+                    e0 += a;
+                    e1 += b;
+                }
+            }
+        }
+        cs.far[0] = false;
+        cs.predicted[0] = closing - e0;
+        cs.compliance[0] = e1;
+        cs.use_full = true;
+        // The force (contact_forces): one level's equation, no other level's force on it.
+        let g = cs.g_full.as_ref().expect("made")[0];
+        let others: f64 = std::iter::empty::<f64>().sum();
+        let rhs = cs.predicted[0] - others;
+        let d = p.element.solve_step(g, rhs, hh, p.delta, p.rate, p.v0);
+        let rate = p.element.rate(hh, d, p.delta, p.rate);
+        let f = if self.sears {
+            p.element.stiffness() * d.max(0.0)
+        } else {
+            p.element.force(d, rate, p.v0)
+        };
+        let out = &mut cs.trial;
+        out.forces[0] = f;
+        out.deltas[0] = d;
+        out.rates[0] = rate;
+        self.trial_loads(true, cs, false);
+        let out = &mut cs.trial;
+        out.hh = hh;
+        out.ground = ground;
+        out.released = None;
+    }
+
+    /// [`Stepper::commit_contact`] for the one level: no level asleep, no link let go, no
+    /// storey yielding.
+    #[inline(always)]
+    fn commit_single(&mut self, n: [usize; 2], cs: &mut Scratch) {
+        let hh = cs.trial.hh;
+        let t0 = self.time();
+        if cs.closing_step[0] != self.steps - 1 {
+            cs.u_before[0] = self.point_closing(&self.points[0]);
+        }
+        let sizes = self.commit_modes(cs, n);
+        self.advance(hh);
+        let force = cs.trial.forces[0];
+        let slabs = self.points[0].slabs.iter_mut().zip(cs.slab_predictions);
+        for (slab, made) in slabs {
+            if let Some(slab) = slab {
+                debug_assert!(slab.is_live());
+                slab.push_predicted(force, made);
+            }
+        }
+        let opened_or_closed = self.account_contact_of(0, cs, t0, n);
+        self.contact_steps += 1;
+        let p = &mut self.points[0];
+        if self.sears && p.force <= 0.0 {
+            for slab in p.slabs.iter_mut().flatten() {
+                slab.settle();
+            }
+        }
+        self.track_peaks_in_contact(sizes, &cs.modal_before, hh);
+        self.record_in_contact(opened_or_closed);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::super::{GENERAL_STEPS_ONLY, SINGLE_STEPS};
+    use crate::model::building::{BuildingScenario, ContactModel, SlabReading, solve};
+
+    /// A run's every number (its wall time aside), bit for bit: the debug form of a float is
+    /// the shortest that reads back as the same bits. The slabs' cache of their last
+    /// prediction is left out: the single level's step hands its predictions over without it.
+    fn every_number(sc: &BuildingScenario, m: &crate::model::motion::GroundMotion) -> String {
+        let mut r = solve::solve(sc, m).expect("run");
+        r.stats.wall_time_s = 0.0;
+        let all = format!("{r:?}");
+        let cache = "predicted: Cell { value: ";
+        let mut kept = String::with_capacity(all.len());
+        let mut rest = all.as_str();
+        while let Some(at) = rest.find(cache) {
+            kept.push_str(&rest[..at]);
+            let after = &rest[at..];
+            rest = &after[after.find(" }").expect("the cell's end") + 2..];
+        }
+        kept.push_str(rest);
+        kept
+    }
+
+    #[test]
+    fn one_levels_contact_step_is_the_general_step_bit_for_bit() {
+        let m = crate::io::motion::built_in("elcentro-1940")
+            .unwrap()
+            .truncated(8.0);
+        let mut cases = Vec::new();
+        for contact in [
+            ContactModel::Sears,
+            ContactModel::Linear,
+            ContactModel::Hertz,
+            ContactModel::HertzDamp,
+            ContactModel::Jankowski,
+        ] {
+            let mut sc = BuildingScenario::paper();
+            sc.contact = contact;
+            cases.push(sc.clone());
+            // One storey against three: one level, a side of three modes.
+            sc.right.storeys = 3;
+            cases.push(sc);
+        }
+        let mut sc = BuildingScenario::paper();
+        sc.reading = SlabReading::End;
+        sc.gap_m *= 0.5;
+        cases.push(sc);
+        for sc in cases {
+            SINGLE_STEPS.with(|c| c.set(0));
+            let single = every_number(&sc, &m);
+            let taken = SINGLE_STEPS.with(|c| c.get());
+            GENERAL_STEPS_ONLY.with(|g| g.set(true));
+            let general = every_number(&sc, &m);
+            GENERAL_STEPS_ONLY.with(|g| g.set(false));
+            assert_eq!(
+                SINGLE_STEPS.with(|c| c.get()),
+                taken,
+                "the general run took none"
+            );
+            let r = solve::solve(&sc, &m).expect("run");
+            assert_eq!(r.levels.len(), 1, "{:?}", sc.contact);
+            // Not vacuous: most of the contact steps were the single level's.
+            assert!(
+                taken > 1000 && 10 * taken > 9 * r.stats.contact_steps,
+                "{:?}: {taken} of {}",
+                sc.contact,
+                r.stats.contact_steps
+            );
+            assert!(single == general, "{:?} {:?}", sc.contact, sc.reading);
+        }
+    }
+}
