@@ -185,6 +185,11 @@ mod tests {
         sc.reading = SlabReading::End;
         sc.gap_m *= 0.5;
         cases.push(sc);
+        // The left roof (4 m) against the right's column below its floor at 5 m: one slab at
+        // the level.
+        let mut sc = BuildingScenario::paper();
+        sc.right.heights_m = vec![5.0];
+        cases.push(sc);
         for sc in cases {
             SINGLE_STEPS.with(|c| c.set(0));
             let single = every_number(&sc, &m);
@@ -198,7 +203,7 @@ mod tests {
                 "the general run took none"
             );
             let r = solve::solve(&sc, &m).expect("run");
-            assert_eq!(r.levels.len(), 1, "{:?}", sc.contact);
+            assert_eq!(r.levels.len(), 1, "{:?} {:?}", sc.contact, r.levels);
             // Not vacuous: most of the contact steps were the single level's.
             assert!(
                 taken > 1000 && 10 * taken > 9 * r.stats.contact_steps,
