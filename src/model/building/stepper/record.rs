@@ -417,6 +417,7 @@ impl Stepper<'_> {
     /// moves a signal by at most its coefficients against the size of dq, and the cubic between
     /// the step's ends bulges by at most 4/27 of the step times the rates' bounds at its ends;
     /// the batch adds these up per side.
+    #[inline(always)]
     pub(super) fn track_peaks_in_contact(
         &mut self,
         [moved, speed_after]: [[[f64; 2]; 2]; 2],
