@@ -79,8 +79,11 @@ pub struct SlabWaves {
     elastic: f64,
     /// Pushes since the last nonzero force.
     zero_run: usize,
-    /// The last prediction, for the index it was made for (a contact step predicts, then
-    /// pushes): e0, e1 and the recursion's look-up.
+    /// The last prediction made through it, for the index it was made for (a general contact
+    /// step predicts, then pushes; the single level's hands its predictions over instead and
+    /// leaves this as it was): e0, e1 and the recursion's look-up. An entry for an older index
+    /// is never read again: the index only grows while live, and goes back only through
+    /// `revive` (which clears this) or a reset to a mark taken after it.
     predicted: std::cell::Cell<Option<(usize, f64, f64, f64)>>,
     /// `Some` while quiet.
     quiet: Option<Quiet>,

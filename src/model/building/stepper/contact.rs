@@ -164,6 +164,16 @@ impl Scratch {
 }
 
 impl Stepper<'_> {
+    /// One implicit step of every level in contact, to the next grid point (or a Kelvin-Voigt
+    /// link's release inside it): the single level's step where it applies
+    /// ([`Stepper::single_level_step`]), the general one elsewhere.
+    pub(super) fn contact_step(&mut self) -> Result<(), SolveError> {
+        if self.single_level_step() {
+            return self.contact_step_single();
+        }
+        self.contact_step_of(self.grid.h - self.offset)
+    }
+
     /// A contact step of length hh (the last one of a graded start lands on the grid).
     pub(super) fn contact_step_of(&mut self, hh: f64) -> Result<(), SolveError> {
         self.count_step()?;
@@ -764,13 +774,7 @@ impl Stepper<'_> {
                     rhs
                 };
                 let rate = p.element.rate(hh, d, p.delta, p.rate);
-                let f = if self.sears {
-                    p.element.stiffness() * d.max(0.0)
-                } else if held {
-                    p.element.force(d, rate, p.v0)
-                } else {
-                    0.0
-                };
+                let f = self.trial_force(p, d, rate, held);
                 change = change.max((f - out.forces[i]).abs());
                 scale = scale.max(f.abs());
                 out.forces[i] = f;
@@ -783,6 +787,40 @@ impl Stepper<'_> {
         }
     }
 
+    /// A level's force at the trial's end from its overlap d and rate: the Sears law on the
+    /// overlap, another element's own law where the link holds, none where it does not.
+    #[inline(always)]
+    fn trial_force(&self, p: &Point, d: f64, rate: f64, held: bool) -> f64 {
+        if self.sears {
+            p.element.stiffness() * d.max(0.0)
+        } else if held {
+            p.element.force(d, rate, p.v0)
+        } else {
+            0.0
+        }
+    }
+
+    /// Level i's closing where the step starts, for its work, kept unless the last step's end
+    /// (this one's start) already put it there.
+    #[inline(always)]
+    fn keep_closing_before(&self, i: usize, cs: &mut Scratch, n: [usize; 2]) {
+        if cs.closing_step[i] != self.steps - 1 {
+            cs.u_before[i] = self.point_closing_of(&self.points[i], n);
+        }
+    }
+
+    /// A Sears level left without force: its slabs fall quiet (their ringing read in closed
+    /// form from then on).
+    #[inline(always)]
+    fn settle_if_free(&mut self, i: usize) {
+        let p = &mut self.points[i];
+        if self.sears && p.force <= 0.0 {
+            for slab in p.slabs.iter_mut().flatten() {
+                slab.settle();
+            }
+        }
+    }
+
     /// Takes the trial step: the modes, the slabs, the ledger and the contacts.
     #[inline(never)]
     fn commit_contact(&mut self, cs: &mut Scratch) {
@@ -790,13 +828,11 @@ impl Stepper<'_> {
         let t0 = self.time();
         // Only the awake points' entries are read (by `account_contacts`): the others may hold
         // an earlier step's.
-        for &i in &cs.awake {
-            // The last step's end is this one's start where it was the step just before.
-            if cs.closing_step[i] != self.steps - 1 {
-                cs.u_before[i] = self.point_closing(&self.points[i]);
-            }
+        let n = self.mode_counts();
+        for j in 0..cs.awake.len() {
+            self.keep_closing_before(cs.awake[j], cs, n);
         }
-        let sizes = self.commit_modes(cs, self.mode_counts());
+        let sizes = self.commit_modes(cs, n);
         let tr = &cs.trial;
         self.advance(hh);
         if self.yields() {
@@ -831,15 +867,8 @@ impl Stepper<'_> {
         if cs.trial.released.is_some() {
             self.contact_loads(&mut cs.trial.load);
         }
-        if self.sears {
-            for &i in &cs.awake {
-                let p = &mut self.points[i];
-                if p.force <= 0.0 {
-                    for slab in p.slabs.iter_mut().flatten() {
-                        slab.settle();
-                    }
-                }
-            }
+        for j in 0..cs.awake.len() {
+            self.settle_if_free(cs.awake[j]);
         }
         // Accelerations stay Newmark's inside contacts; leaving one, the free steps need none.
         self.track_peaks_in_contact(sizes, &cs.modal_before, hh);
@@ -894,7 +923,7 @@ impl Stepper<'_> {
 
     /// A tall side's modes through the contact step that moves them by `dq`, its energy terms
     /// and sizes summed in lanes ([`lanes::commit`]); its state where the step starts kept in
-    /// `before`, as [`Stepper::commit_contact`] keeps a few modes'.
+    /// `before` (by trading buffers: a few modes' are copied, [`Stepper::commit_modes`]).
     #[cold]
     #[inline(never)]
     fn commit_in_lanes(

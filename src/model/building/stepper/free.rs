@@ -745,17 +745,13 @@ impl Stepper<'_> {
         dotv(&p.r[0], q[0]) - dotv(&p.r[1], q[1])
     }
 
-    /// A point's closing motion now, each side's modes counted (`n`: a caller that knows them
-    /// lets the compiler unroll the sums): [`Stepper::point_closing`].
+    /// A point's closing motion now, without its rate ([`Stepper::point_state`]'s first part),
+    /// each side's modes counted (`n`: a caller that knows them lets the compiler unroll the
+    /// sums).
     #[inline(always)]
     pub(super) fn point_closing_of(&self, p: &Point, n: [usize; 2]) -> f64 {
         let q = [&self.sides[0].q, &self.sides[1].q];
         dotv_of(&p.r[0], q[0], n[0]) - dotv_of(&p.r[1], q[1], n[1])
-    }
-
-    /// A point's closing motion now, without its rate: [`Stepper::point_state`]'s first part.
-    pub(super) fn point_closing(&self, p: &Point) -> f64 {
-        self.point_value(p, [&self.sides[0].q, &self.sides[1].q])
     }
 
     /// A free stretch of arbitrary length (back onto the grid after an event, or up to a

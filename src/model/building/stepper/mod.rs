@@ -334,8 +334,8 @@ fn dotv(a: &[f64], b: &[f64]) -> f64 {
 /// [`dotv`] over the first n entries (a caller that knows n lets the compiler unroll the sum).
 #[inline(always)]
 fn dotv_of(a: &[f64], b: &[f64], n: usize) -> f64 {
-    // Indexed over the shorter: a few modes' loop without an iterator's set-up. The sum starts
-    // where `Iterator::sum` starts for floats, at -0. A tall building's is taken in lanes.
+    // Indexed: a few modes' loop without an iterator's set-up. The sum starts where
+    // `Iterator::sum` starts for floats, at -0. A tall building's is taken in lanes.
     let (a, b) = (&a[..n], &b[..n]);
     if n >= lanes::LANES_FROM {
         return dot_tall(a, b);
@@ -401,7 +401,8 @@ pub(super) struct Stepper<'a> {
     /// A side is tall: a contact step's modal loads are taken in vector lanes.
     tall: bool,
     /// One contact level, elastic sides of few modes, an element that does not let go inside
-    /// a step: the level's contact steps are the single level's (`contact/single.rs`).
+    /// a step: the level's contact steps on the grid after a contact step, with the level in
+    /// contact, are the single level's (`contact/single.rs`).
     single_level: bool,
     /// The next free step is one fine step (yielding storeys near or past their yield point).
     single_step: bool,
