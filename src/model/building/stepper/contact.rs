@@ -803,9 +803,10 @@ impl Stepper<'_> {
     /// Level i's closing where the step starts, for its work, kept unless the last step's end
     /// (this one's start) already put it there.
     #[inline(always)]
-    fn keep_closing_before(&self, i: usize, cs: &mut Scratch, n: [usize; 2]) {
-        if cs.closing_step[i] != self.steps - 1 {
-            cs.u_before[i] = self.point_closing_of(&self.points[i], n);
+    fn keep_closing_before(&self, i: usize, at: (&mut [f64], &[usize]), n: [usize; 2]) {
+        let (u_before, closing_step) = at;
+        if closing_step[i] != self.steps - 1 {
+            u_before[i] = self.point_closing_of(&self.points[i], n);
         }
     }
 
@@ -829,8 +830,8 @@ impl Stepper<'_> {
         // Only the awake points' entries are read (by `account_contacts`): the others may hold
         // an earlier step's.
         let n = self.mode_counts();
-        for j in 0..cs.awake.len() {
-            self.keep_closing_before(cs.awake[j], cs, n);
+        for &i in &cs.awake {
+            self.keep_closing_before(i, (&mut cs.u_before, &cs.closing_step), n);
         }
         let sizes = self.commit_modes(cs, n);
         let tr = &cs.trial;
@@ -867,8 +868,8 @@ impl Stepper<'_> {
         if cs.trial.released.is_some() {
             self.contact_loads(&mut cs.trial.load);
         }
-        for j in 0..cs.awake.len() {
-            self.settle_if_free(cs.awake[j]);
+        for &i in &cs.awake {
+            self.settle_if_free(i);
         }
         // Accelerations stay Newmark's inside contacts; leaving one, the free steps need none.
         self.track_peaks_in_contact(sizes, &cs.modal_before, hh);

@@ -115,7 +115,7 @@ impl Stepper<'_> {
     fn commit_single(&mut self, n: [usize; 2], cs: &mut Scratch) {
         let hh = cs.trial.hh;
         let t0 = self.time();
-        self.keep_closing_before(0, cs, n);
+        self.keep_closing_before(0, (&mut cs.u_before, &cs.closing_step), n);
         let sizes = self.commit_modes(cs, n);
         self.advance(hh);
         let force = cs.trial.forces[0];
