@@ -1,7 +1,8 @@
 //! The contact step: Newmark's average acceleration with the contact forces implicit, the
 //! levels in contact solved together. Its buffers live in a [`Scratch`] kept for the whole run,
 //! and the compliance of the points over a whole grid step (the same at every such step) is
-//! computed once.
+//! computed once. A pair with one contact level takes, inside its contacts, the same step
+//! written out for that level (`contact/single.rs`), bit for bit this one's.
 
 use super::yielding::MAX_PASSES;
 use super::*;
