@@ -79,12 +79,6 @@ pub struct SlabWaves {
     elastic: f64,
     /// Pushes since the last nonzero force.
     zero_run: usize,
-    /// The last prediction made through it, for the index it was made for (a general contact
-    /// step predicts, then pushes; the single level's hands its predictions over instead and
-    /// leaves this as it was): e0, e1 and the recursion's look-up. An entry for an older index
-    /// is never read again: the index only grows while live, and goes back only through
-    /// `revive` (which clears this) or a reset to a mark taken after it.
-    predicted: std::cell::Cell<Option<(usize, f64, f64, f64)>>,
     /// `Some` while quiet.
     quiet: Option<Quiet>,
     /// The buffers of the last quiet window, kept for the next.
@@ -183,7 +177,6 @@ impl SlabWaves {
             q: Ring::new(reach),
             elastic: 0.0,
             zero_run: 0,
-            predicted: std::cell::Cell::new(None),
             quiet: Some(Quiet {
                 w: Frozen {
                     q: vec![0.0; window],
@@ -212,31 +205,11 @@ impl SlabWaves {
         self.quiet.is_none()
     }
 
-    /// The elastic displacement at the plane after one more step, as e0 + e1 F_{n+1} (while
-    /// live).
-    pub fn predict(&self) -> (f64, f64) {
-        debug_assert!(self.is_live());
-        self.prediction().0
-    }
-
-    /// (e0, e1) and the recursion's look-up for the next step, made once per step.
+    /// The next step's prediction (while live): the elastic displacement at the plane after it
+    /// as e0 + e1 F_{n+1}, and the recursion's look-up, which the step's
+    /// [`SlabWaves::push_predicted`] reads.
     #[inline]
-    fn prediction(&self) -> Prediction {
-        if let Some((next, e0, e1, recur)) = self.predicted.get()
-            && next == self.q.next
-        {
-            return ((e0, e1), recur);
-        }
-        let made = self.fresh_prediction();
-        let ((e0, e1), recur) = made;
-        self.predicted.set(Some((self.q.next, e0, e1, recur)));
-        made
-    }
-
-    /// (e0, e1) and the recursion's look-up for the next step, made afresh and not kept: for a
-    /// caller that keeps it and hands it to [`SlabWaves::push_predicted`] (while live).
-    #[inline]
-    pub fn fresh_prediction(&self) -> Prediction {
+    pub fn prediction(&self) -> Prediction {
         debug_assert!(self.is_live());
         let (e, h) = (self.ringing.step_decay, self.ringing.h);
         let a0 = e * self.a + 0.5 * h * e * self.f_prev;
@@ -251,14 +224,16 @@ impl SlabWaves {
 
     /// The elastic displacement at grid index `next` (the next step) as e0 + e1 F_next: the
     /// stepped prediction while live; while quiet, the ringing there and the compliance the
-    /// slab would have if it were pushed.
-    pub fn predict_at(&self, next: usize) -> (f64, f64) {
+    /// slab would have if it were pushed, with no look-up (NaN: a quiet slab is revived, and
+    /// predicted again, before it is pushed).
+    #[inline]
+    pub fn predict_at(&self, next: usize) -> Prediction {
         match &self.quiet {
             None => {
                 debug_assert_eq!(self.q.next, next);
-                self.predict()
+                self.prediction()
             }
-            Some(_) => (self.elastic_at(next), self.instant_compliance()),
+            Some(_) => ((self.elastic_at(next), self.instant_compliance()), f64::NAN),
         }
     }
 
@@ -267,16 +242,17 @@ impl SlabWaves {
         self.e1
     }
 
-    /// Advances one step with the force F_{n+1} (while live).
+    /// Advances one step with the force F_{n+1} (while live), its prediction made here.
     pub fn push(&mut self, force: f64) {
         let made = self.prediction();
         self.push_predicted(force, made);
     }
 
-    /// [`SlabWaves::push`] with the step's prediction given (made by
-    /// [`SlabWaves::fresh_prediction`] for this step).
+    /// Advances one step with the force F_{n+1} (while live) and the step's prediction (made by
+    /// [`SlabWaves::prediction`] since the last push).
     #[inline(always)]
     pub fn push_predicted(&mut self, force: f64, ((e0, e1), recur): Prediction) {
+        debug_assert!(self.is_live());
         let (e, h) = (self.ringing.step_decay, self.ringing.h);
         let a1 = e * self.a + 0.5 * h * (e * self.f_prev + force);
         self.b = e * self.b + 0.5 * h * (e * self.a + a1);
@@ -483,7 +459,6 @@ impl SlabWaves {
         let Some(q) = self.quiet.take() else {
             return;
         };
-        self.predicted.set(None);
         let from = (n as isize - self.window as isize + 1).max(0) as usize;
         self.q.next = from;
         self.ringing.rebuild(&q.w, &mut self.q, from, n);

@@ -622,9 +622,16 @@ pub(crate) fn step_budget(max_steps: usize, dt_s: f64, reached_s: f64) -> SolveE
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use std::cell::Cell;
+
+    /// The first 8 s of the built-in El Centro record: the paper's run.
+    pub(in crate::model::building) fn el_centro_8s() -> GroundMotion {
+        crate::io::motion::built_in("elcentro-1940")
+            .unwrap()
+            .truncated(8.0)
+    }
 
     thread_local! {
         /// The slabs' memory budget a test sets on its own thread.
@@ -638,9 +645,7 @@ mod tests {
     #[test]
     fn peaks_looked_at_once_a_batch_of_contact_steps_are_the_steps_own_within_a_part_in_ten_million()
      {
-        let m = crate::io::motion::built_in("elcentro-1940")
-            .unwrap()
-            .truncated(8.0);
+        let m = el_centro_8s();
         let mut cases = Vec::new();
         for contact in [
             ContactModel::Sears,
@@ -711,9 +716,7 @@ mod tests {
         // 1.22e-6 s, while the warning said 8e-7 s).
         let mut sc = BuildingScenario::paper();
         sc.left.masses_kg = vec![1.0];
-        let m = crate::io::motion::built_in("elcentro-1940")
-            .unwrap()
-            .truncated(8.0);
+        let m = el_centro_8s();
         let run = planned(&sc, &m, 1).unwrap();
         let floor = m.duration_s() / (0.5 * sc.max_steps as f64);
         assert!(run.grid.h <= floor, "{} s against {floor} s", run.grid.h);

@@ -6,10 +6,11 @@
 
 use super::yielding::MAX_PASSES;
 use super::*;
-
-mod single;
+use crate::model::building::slab::Prediction;
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
+
+mod single;
 
 /// A contact step computed but not taken.
 #[derive(Default)]
@@ -72,8 +73,10 @@ pub(super) struct Scratch {
     closing_step: Vec<usize>,
     /// Yielding storeys: each side's load of their corrections at the trial's end, per mode.
     pseudo1: [Vec<f64>; 2],
-    /// The single level's step: its slabs' predictions, made by the trial, read by the commit.
-    slab_predictions: [crate::model::building::slab::Prediction; 2],
+    /// Per point, its slabs' predictions for the step, made by the trial, read by the commit
+    /// (a live slab's, of every point the step reads: a point far out of reach has no live
+    /// slab).
+    slab_predictions: Vec<[Prediction; 2]>,
 }
 
 /// The levels asleep in a contact phase, looked at only when the steps could have moved one
@@ -159,8 +162,17 @@ impl Scratch {
             modal_before: modes.map(|n| [vec![0.0; n], vec![0.0; n]]),
             u_before: per_point(),
             closing_step: vec![usize::MAX; points],
+            slab_predictions: vec![Default::default(); points],
             ..Scratch::default()
         })
+    }
+
+    /// No point is held within reach by the last step's forces any more.
+    fn clear_near_forced(&mut self) {
+        if self.any_near_forced {
+            self.near_forced.fill(false);
+            self.any_near_forced = false;
+        }
     }
 }
 
@@ -204,10 +216,7 @@ impl Stepper<'_> {
             cs.awake.retain(|&i| !asleep[i]);
         }
         cs.ground0 = self.motion.at(self.time());
-        if cs.any_near_forced {
-            cs.near_forced.fill(false);
-            cs.any_near_forced = false;
-        }
+        cs.clear_near_forced();
         // A sleeping level the step could have brought within reach wakes, and the step is made
         // again with it.
         loop {
@@ -491,6 +500,13 @@ impl Stepper<'_> {
         }
         self.contact_compliance(full, cs);
         self.contact_forces(hh, cs);
+        self.end_trial(full, hh, ground, cs);
+    }
+
+    /// The trial's end, once its forces are found: the modal loads and increments with them,
+    /// and the step it is (of length hh, the ground at its end given, no link let go).
+    #[inline(always)]
+    fn end_trial(&self, full: bool, hh: f64, ground: f64, cs: &mut Scratch) {
         if self.tall {
             self.trial_loads_tall(full, cs);
         } else {
@@ -683,11 +699,7 @@ impl Stepper<'_> {
                     cs.far_bound[i] = bound;
                     e1 = p.instant_compliance();
                 } else {
-                    for slab in p.slabs.iter().flatten() {
-                        let (a, b) = slab.predict_at(next);
-                        e0 += a;
-                        e1 += b;
-                    }
+                    (e0, e1) = predict_slabs(p, next, &mut cs.slab_predictions[i], false);
                 }
             }
             cs.predicted[i] = closing - e0;
@@ -801,13 +813,31 @@ impl Stepper<'_> {
         }
     }
 
-    /// Level i's closing where the step starts, for its work, kept unless the last step's end
-    /// (this one's start) already put it there.
+    /// Level i's closing where the step starts, for its work (into `u_before`), kept unless
+    /// the last step's end (this one's start) already put it there (`closing_step`).
     #[inline(always)]
-    fn keep_closing_before(&self, i: usize, at: (&mut [f64], &[usize]), n: [usize; 2]) {
-        let (u_before, closing_step) = at;
+    fn keep_closing_before(
+        &self,
+        i: usize,
+        u_before: &mut [f64],
+        closing_step: &[usize],
+        n: [usize; 2],
+    ) {
         if closing_step[i] != self.steps - 1 {
             u_before[i] = self.point_closing_of(&self.points[i], n);
+        }
+    }
+
+    /// Level i's live slabs through the step with its force, each with the trial's prediction
+    /// for it.
+    #[inline(always)]
+    fn push_slabs(&mut self, i: usize, force: f64, made: [Prediction; 2]) {
+        for (slab, made) in self.points[i].slabs.iter_mut().zip(made) {
+            if let Some(slab) = slab
+                && slab.is_live()
+            {
+                slab.push_predicted(force, made);
+            }
         }
     }
 
@@ -832,7 +862,7 @@ impl Stepper<'_> {
         // an earlier step's.
         let n = self.mode_counts();
         for &i in &cs.awake {
-            self.keep_closing_before(i, (&mut cs.u_before, &cs.closing_step), n);
+            self.keep_closing_before(i, &mut cs.u_before, &cs.closing_step, n);
         }
         let sizes = self.commit_modes(cs, n);
         let tr = &cs.trial;
@@ -844,11 +874,7 @@ impl Stepper<'_> {
         // A level asleep has no live slab: it fell asleep with its slabs quiet (a live one's
         // ringing has no bound), and only a level the step pushes revives them.
         for &i in &cs.awake {
-            for slab in self.points[i].slabs.iter_mut().flatten() {
-                if slab.is_live() {
-                    slab.push(tr.forces[i]);
-                }
-            }
+            self.push_slabs(i, tr.forces[i], cs.slab_predictions[i]);
         }
         // A sleeping level keeps sleeping with what the trial left of its margin (those the
         // trial looked at: the others' margins are still their bases less the steps' sizes).
@@ -1073,6 +1099,28 @@ impl Stepper<'_> {
             [&self.sides[0].v, &self.sides[1].v],
         )
     }
+}
+
+/// A point's slabs' predictions for the step to grid index `next`, kept per slab in `kept`,
+/// and their sums (e0, e1) in the slabs' order: the point's elastic displacement at the step's
+/// end is e0 + e1 F. `live`: the caller knows every slab is live (the single level's step),
+/// and the quiet ones' closed form is not looked for.
+#[inline(always)]
+fn predict_slabs(p: &Point, next: usize, kept: &mut [Prediction; 2], live: bool) -> (f64, f64) {
+    let (mut e0, mut e1) = (0.0, 0.0);
+    for (slab, kept) in p.slabs.iter().zip(kept) {
+        if let Some(slab) = slab {
+            *kept = if live {
+                slab.prediction()
+            } else {
+                slab.predict_at(next)
+            };
+            let (a, b) = kept.0;
+            e0 += a;
+            e1 += b;
+        }
+    }
+    (e0, e1)
 }
 
 #[cfg(test)]

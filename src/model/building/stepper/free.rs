@@ -742,16 +742,22 @@ impl Stepper<'_> {
     /// first part (its acceleration, from modal accelerations), without the rate's sums.
     #[inline(always)]
     pub(super) fn point_value(&self, p: &Point, q: [&[f64]; 2]) -> f64 {
-        dotv(&p.r[0], q[0]) - dotv(&p.r[1], q[1])
+        let n = [p.r[0].len().min(q[0].len()), p.r[1].len().min(q[1].len())];
+        self.point_value_of(p, q, n)
+    }
+
+    /// [`Stepper::point_value`] over each side's first n modes (a caller that knows them lets
+    /// the compiler unroll the sums).
+    #[inline(always)]
+    fn point_value_of(&self, p: &Point, q: [&[f64]; 2], n: [usize; 2]) -> f64 {
+        dotv_of(&p.r[0], q[0], n[0]) - dotv_of(&p.r[1], q[1], n[1])
     }
 
     /// A point's closing motion now, without its rate ([`Stepper::point_state`]'s first part),
-    /// each side's modes counted (`n`: a caller that knows them lets the compiler unroll the
-    /// sums).
+    /// each side's modes counted (`n`).
     #[inline(always)]
     pub(super) fn point_closing_of(&self, p: &Point, n: [usize; 2]) -> f64 {
-        let q = [&self.sides[0].q, &self.sides[1].q];
-        dotv_of(&p.r[0], q[0], n[0]) - dotv_of(&p.r[1], q[1], n[1])
+        self.point_value_of(p, [&self.sides[0].q, &self.sides[1].q], n)
     }
 
     /// A free stretch of arbitrary length (back onto the grid after an event, or up to a

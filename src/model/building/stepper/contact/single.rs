@@ -15,12 +15,14 @@ impl Stepper<'_> {
     /// the general step's assumptions kept in sight, not cases met.)
     #[inline(always)]
     pub(in crate::model::building::stepper) fn single_level_step(&self) -> bool {
+        if !self.single_level {
+            return false;
+        }
         let cs = self
             .contact_scratch
             .as_deref()
             .expect("the scratch is home between stages");
-        self.single_level
-            && self.newmark
+        self.newmark
             && self.offset == 0.0
             && cs.g_full.is_some()
             && cs.awake.len() == 1
@@ -45,10 +47,7 @@ impl Stepper<'_> {
             .expect("the scratch is home between stages");
         std::mem::swap(&mut cs.load_now, &mut cs.trial.load);
         cs.ground0 = self.motion.at(self.time());
-        if cs.any_near_forced {
-            cs.near_forced.fill(false);
-            cs.any_near_forced = false;
-        }
+        cs.clear_near_forced();
         // A side of one mode (the paper's buildings) has its sums unrolled.
         let n = self.mode_counts();
         if n == [1, 1] {
@@ -74,17 +73,11 @@ impl Stepper<'_> {
         // with force is within reach, its slabs' predictions read.
         let p = &self.points[0];
         let closing = self.closing_after_of(p, &cs.step, n) - self.sc.gap_m;
-        let (mut e0, mut e1) = (0.0, 0.0);
-        if self.sears {
-            for (slab, kept) in p.slabs.iter().zip(&mut cs.slab_predictions) {
-                if let Some(slab) = slab {
-                    *kept = slab.fresh_prediction();
-                    let (a, b) = kept.0;
-                    e0 += a;
-                    e1 += b;
-                }
-            }
-        }
+        let (e0, e1) = if self.sears {
+            predict_slabs(p, self.n + 1, &mut cs.slab_predictions[0], true)
+        } else {
+            (0.0, 0.0)
+        };
         cs.far[0] = false;
         cs.predicted[0] = closing - e0;
         cs.compliance[0] = e1;
@@ -102,11 +95,7 @@ impl Stepper<'_> {
         out.forces[0] = f;
         out.deltas[0] = d;
         out.rates[0] = rate;
-        self.trial_loads(true, cs, false);
-        let out = &mut cs.trial;
-        out.hh = hh;
-        out.ground = ground;
-        out.released = None;
+        self.end_trial(true, hh, ground, cs);
     }
 
     /// [`Stepper::commit_contact`] for the one level: no level asleep, no link let go, no
@@ -115,17 +104,10 @@ impl Stepper<'_> {
     fn commit_single(&mut self, n: [usize; 2], cs: &mut Scratch) {
         let hh = cs.trial.hh;
         let t0 = self.time();
-        self.keep_closing_before(0, (&mut cs.u_before, &cs.closing_step), n);
+        self.keep_closing_before(0, &mut cs.u_before, &cs.closing_step, n);
         let sizes = self.commit_modes(cs, n);
         self.advance(hh);
-        let force = cs.trial.forces[0];
-        let slabs = self.points[0].slabs.iter_mut().zip(cs.slab_predictions);
-        for (slab, made) in slabs {
-            if let Some(slab) = slab {
-                debug_assert!(slab.is_live());
-                slab.push_predicted(force, made);
-            }
-        }
+        self.push_slabs(0, cs.trial.forces[0], cs.slab_predictions[0]);
         let opened_or_closed = self.account_contact_of(0, cs, t0, n);
         self.contact_steps += 1;
         self.settle_if_free(0);
@@ -144,22 +126,11 @@ mod tests {
     use crate::model::motion::GroundMotion;
 
     /// A run's every number (its wall time aside), bit for bit: the debug form of a float is
-    /// the shortest that reads back as the same bits. The slabs' cache of their last
-    /// prediction is left out: the single level's step hands its predictions over without it.
+    /// the shortest that reads back as the same bits.
     fn every_number(r: &BuildingResult) -> String {
         let mut r = r.clone();
         r.stats.wall_time_s = 0.0;
-        let all = format!("{r:?}");
-        let cache = "predicted: Cell { value: ";
-        let mut kept = String::with_capacity(all.len());
-        let mut rest = all.as_str();
-        while let Some(at) = rest.find(cache) {
-            kept.push_str(&rest[..at]);
-            let after = &rest[at..];
-            rest = &after[after.find(" }").expect("the cell's end") + 2..];
-        }
-        kept.push_str(rest);
-        kept
+        format!("{r:?}")
     }
 
     /// The run with its histories, and the error estimate's companion (a summary of the
@@ -181,9 +152,7 @@ mod tests {
 
     #[test]
     fn one_levels_contact_step_is_the_general_step_bit_for_bit() {
-        let m = crate::io::motion::built_in("elcentro-1940")
-            .unwrap()
-            .truncated(8.0);
+        let m = solve::tests::el_centro_8s();
         let mut cases = Vec::new();
         for contact in [
             ContactModel::Sears,
