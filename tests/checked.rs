@@ -72,6 +72,13 @@ fn the_run_and_its_checks_made_side_by_side_are_bit_for_bit_those_made_one_after
             checked.baseline.peak_floor_displacement_m,
             baseline.peak_floor_displacement_m
         );
+        assert_eq!(
+            format!("{:?}", checked.baseline.peak_drift_ratio),
+            format!("{:?}", baseline.peak_drift_ratio)
+        );
+        // The report reads no gaps: its run without contact does not search for them.
+        assert!(checked.baseline.max_closing_m.is_empty());
+        assert_eq!(baseline.max_closing_m.len(), sc.levels().len());
     }
 }
 

@@ -111,6 +111,11 @@ fn a_building_run_keeping_some_peaks_finds_them_as_a_run_keeping_all() {
             "{what}"
         );
         assert_eq!(levels.max_closing_m, all.max_closing_m, "{what}");
+        // Only a run without contact follows the levels' largest closing (the gaps it
+        // reads); a run with contact leaves it out rather than keep a number nobody reads.
+        let followed = contact == ContactModel::None;
+        assert_eq!(!all.max_closing_m.is_empty(), followed, "{what}");
+        assert_eq!(!floors.max_closing_m.is_empty(), followed, "{what}");
         assert_eq!(
             levels.peak_level_displacement_m, all.peak_level_displacement_m,
             "{what}"

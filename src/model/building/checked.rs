@@ -84,7 +84,8 @@ fn checked_keeping(
             let fine = companion_run(sc, motion, fine_step_s, checks);
             let wall = start.elapsed().as_secs_f64();
             checks.stage(1, 2);
-            let baseline = run(without_contact, checks);
+            let baseline =
+                super::solve::solve_comparison(without_contact, motion, checks, histories);
             (fine, wall, baseline)
         });
         // Whatever ends the run without a result (an error, a cancel, a panic) stops the

@@ -202,7 +202,9 @@ pub struct BuildingResult {
     /// point's between two floors.
     pub peak_level_displacement_m: Vec<[f64; 2]>,
     /// The largest closing motion at each level, u_left - u_right at the point, over the run
-    /// [m]: the smallest gap that avoids contact there (for a run without contact).
+    /// [m]: the smallest gap that avoids contact there. Only a run without contact follows it
+    /// (empty for a run with contact, and for the run without contact a report sets beside a
+    /// run with contact).
     pub max_closing_m: Vec<f64>,
     /// The Sears slabs at each level (empty for the other elements), whose waves
     /// [`BuildingResult::slab_waves`] gives.

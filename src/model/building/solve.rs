@@ -337,6 +337,28 @@ pub(super) fn solve_summary_refined(
     run_publishing(sc, motion, control, RunKind::summary(tracked, refine), None)
 }
 
+/// A run without contact as a report sets it beside a run with contact (`histories` where the
+/// report draws them): every peak and history of [`solve_with`] or [`solve_summary_with`], bit
+/// for bit, without each level's largest closing motion (the gaps a gap assessment reads; its
+/// `max_closing_m` is left empty), whose search on the exact motion a tall pair's run pays for.
+pub(super) fn solve_comparison(
+    sc: &BuildingScenario,
+    motion: &GroundMotion,
+    control: &Control,
+    histories: bool,
+) -> Result<BuildingResult, SolveError> {
+    let kind = if histories {
+        RunKind::FULL
+    } else {
+        RunKind::summary(Tracked::All, 1)
+    };
+    let kind = RunKind {
+        closings: false,
+        ..kind
+    };
+    run_publishing(sc, motion, control, kind, None)
+}
+
 /// [`solve_with`], handing `publish` what the run has solved so far, at most once per `every`
 /// of wall time (its histories to the instant solved, marked by
 /// [`BuildingResult::solved_to_s`]), so a window can draw a long run while it solves. It is
@@ -363,6 +385,8 @@ struct RunKind {
     tracked: Tracked,
     /// Every step the tolerance sets divided by this, the budget multiplied by it.
     refine: u32,
+    /// Each level's largest closing motion is followed (in a run without contact).
+    closings: bool,
 }
 
 impl RunKind {
@@ -371,6 +395,7 @@ impl RunKind {
         histories: true,
         tracked: Tracked::All,
         refine: 1,
+        closings: true,
     };
 
     /// A summary keeping the peaks `tracked` names, refined `refine` times.
@@ -379,6 +404,7 @@ impl RunKind {
             histories: false,
             tracked,
             refine,
+            closings: true,
         }
     }
 }
@@ -403,6 +429,7 @@ fn run_publishing(
         histories,
         tracked,
         refine,
+        closings,
     } = kind;
     let start = Instant::now();
     let Planned {
@@ -431,7 +458,8 @@ fn run_publishing(
         setup.modes.clone(),
         histories,
         tracked,
-    );
+    )
+    .following_closings(closings);
     match publish {
         None => stepper.run(control)?,
         Some((every, publish)) => {

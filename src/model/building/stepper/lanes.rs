@@ -29,7 +29,13 @@ macro_rules! in_lanes {
                 // SAFETY: the processor has just been found to have AVX.
                 return unsafe { with_avx($($arg),*) };
             }
-            $generic::<F4>($($arg),*)
+            // Out of line, so that this function stays a test and a jump: the four scalars'
+            // loop, inlined here, made it save and restore six registers on every call.
+            #[inline(never)]
+            fn in_scalars($($arg: $ty),*) $(-> $ret)? {
+                $generic::<F4>($($arg),*)
+            }
+            in_scalars($($arg),*)
         }
     };
 }
@@ -40,6 +46,15 @@ fn join(l: [f64; 4]) -> f64 {
     (l[0] + l[2]) + (l[1] + l[3])
 }
 
+/// Where a sum's main loop stops: its sixteen-mode blocks (four chunks a turn, so that the
+/// loop's count and test are paid once per sixteen modes), then four-mode chunks up to `full`.
+/// The chunks of each block are read in order, so each lane's terms are added in the modes'
+/// order either way.
+const BLOCK: usize = 16;
+
+/// The first mode of each of a block's four-mode chunks.
+const IN_BLOCK: [usize; 4] = [0, 4, 8, 12];
+
 in_lanes! {
     /// The sum of c q (q at least as long as c).
     pub(super) fn dot(c: &[f64], q: &[f64]) -> f64 = dot_in
@@ -49,9 +64,20 @@ in_lanes! {
 fn dot_in<L: Four>(c: &[f64], q: &[f64]) -> f64 {
     let n = c.len();
     let q = &q[..n];
-    let full = n - n % 4;
+    let (full, big) = (n - n % 4, n - n % BLOCK);
     let mut u = L::splat(0.0);
-    for (c, q) in c[..full].chunks_exact(4).zip(q[..full].chunks_exact(4)) {
+    for (c, q) in c[..big]
+        .chunks_exact(BLOCK)
+        .zip(q[..big].chunks_exact(BLOCK))
+    {
+        for j in IN_BLOCK {
+            u = u + L::at(c, j) * L::at(q, j);
+        }
+    }
+    for (c, q) in c[big..full]
+        .chunks_exact(4)
+        .zip(q[big..full].chunks_exact(4))
+    {
         u = u + L::at(c, 0) * L::at(q, 0);
     }
     let mut u = u.array();
@@ -71,12 +97,21 @@ in_lanes! {
 fn dot_moved_in<L: Four>(c: &[f64], q: &[f64], d: &[f64]) -> f64 {
     let n = c.len();
     let (q, d) = (&q[..n], &d[..n]);
-    let full = n - n % 4;
+    let (full, big) = (n - n % 4, n - n % BLOCK);
     let mut u = L::splat(0.0);
-    let chunks = c[..full]
+    let blocks = c[..big]
+        .chunks_exact(BLOCK)
+        .zip(q[..big].chunks_exact(BLOCK))
+        .zip(d[..big].chunks_exact(BLOCK));
+    for ((c, q), d) in blocks {
+        for j in IN_BLOCK {
+            u = u + L::at(c, j) * (L::at(q, j) + L::at(d, j));
+        }
+    }
+    let chunks = c[big..full]
         .chunks_exact(4)
-        .zip(q[..full].chunks_exact(4))
-        .zip(d[..full].chunks_exact(4));
+        .zip(q[big..full].chunks_exact(4))
+        .zip(d[big..full].chunks_exact(4));
     for ((c, q), d) in chunks {
         u = u + L::at(c, 0) * (L::at(q, 0) + L::at(d, 0));
     }
@@ -97,12 +132,23 @@ in_lanes! {
 fn dot2_in<L: Four>(c: &[f64], q: &[f64], v: &[f64]) -> (f64, f64) {
     let n = c.len();
     let (q, v) = (&q[..n], &v[..n]);
-    let full = n - n % 4;
+    let (full, big) = (n - n % 4, n - n % BLOCK);
     let (mut u, mut r) = (L::splat(0.0), L::splat(0.0));
-    let chunks = c[..full]
+    let blocks = c[..big]
+        .chunks_exact(BLOCK)
+        .zip(q[..big].chunks_exact(BLOCK))
+        .zip(v[..big].chunks_exact(BLOCK));
+    for ((c, q), v) in blocks {
+        for j in IN_BLOCK {
+            let c = L::at(c, j);
+            u = u + c * L::at(q, j);
+            r = r + c * L::at(v, j);
+        }
+    }
+    let chunks = c[big..full]
         .chunks_exact(4)
-        .zip(q[..full].chunks_exact(4))
-        .zip(v[..full].chunks_exact(4));
+        .zip(q[big..full].chunks_exact(4))
+        .zip(v[big..full].chunks_exact(4));
     for ((c, q), v) in chunks {
         let c = L::at(c, 0);
         u = u + c * L::at(q, 0);
@@ -114,6 +160,56 @@ fn dot2_in<L: Four>(c: &[f64], q: &[f64], v: &[f64]) -> (f64, f64) {
         r[k - full] += c[k] * v[k];
     }
     (join(u), join(r))
+}
+
+in_lanes! {
+    /// The sums of c q, c v and c a (q, v and a at least as long as c), each as [`dot`] takes
+    /// it, in one pass: c read once for the three (a free stretch reads a point's or a signal's
+    /// value, rate and acceleration together).
+    pub(super) fn dot3(c: &[f64], q: &[f64], v: &[f64], a: &[f64]) -> [f64; 3] = dot3_in
+}
+
+#[inline(always)]
+fn dot3_in<L: Four>(c: &[f64], q: &[f64], v: &[f64], a: &[f64]) -> [f64; 3] {
+    let n = c.len();
+    let (q, v, a) = (&q[..n], &v[..n], &a[..n]);
+    let (full, big) = (n - n % 4, n - n % BLOCK);
+    let mut sums = [L::splat(0.0); 3];
+    let blocks = c[..big]
+        .chunks_exact(BLOCK)
+        .zip(q[..big].chunks_exact(BLOCK))
+        .zip(v[..big].chunks_exact(BLOCK))
+        .zip(a[..big].chunks_exact(BLOCK));
+    for (((c, q), v), a) in blocks {
+        for j in IN_BLOCK {
+            add3(&mut sums, [c, q, v, a], j);
+        }
+    }
+    let chunks = c[big..full]
+        .chunks_exact(4)
+        .zip(q[big..full].chunks_exact(4))
+        .zip(v[big..full].chunks_exact(4))
+        .zip(a[big..full].chunks_exact(4));
+    for (((c, q), v), a) in chunks {
+        add3(&mut sums, [c, q, v, a], 0);
+    }
+    let mut sums = sums.map(L::array);
+    for k in full..n {
+        let l = k - full;
+        sums[0][l] += c[k] * q[k];
+        sums[1][l] += c[k] * v[k];
+        sums[2][l] += c[k] * a[k];
+    }
+    sums.map(join)
+}
+
+/// One chunk's terms of [`dot3`]'s sums, the chunk at j of each of c, q, v and a.
+#[inline(always)]
+fn add3<L: Four>(sums: &mut [L; 3], [c, q, v, a]: [&[f64]; 4], j: usize) {
+    let c = L::at(c, j);
+    sums[0] = sums[0] + c * L::at(q, j);
+    sums[1] = sums[1] + c * L::at(v, j);
+    sums[2] = sums[2] + c * L::at(a, j);
 }
 
 in_lanes! {
@@ -129,7 +225,10 @@ fn add_weighted_in<L: Four>(out: [&mut [f64]; 4], abs: &[f64], m: [f64; 4]) {
     let (o0, o1, o2, o3) = (&mut o0[..n], &mut o1[..n], &mut o2[..n], &mut o3[..n]);
     let full = n - n % 4;
     let ms = m.map(L::splat);
-    for j in (0..full).step_by(4) {
+    for chunk in 0..full / 4 {
+        // The chunk's first mode (a multiple of four below `full`: the compiler sees its four
+        // modes in bounds, as it does not through `step_by`).
+        let j = 4 * chunk;
         let a = L::at(abs, j);
         (L::at(o0, j) + a * ms[0]).put(o0, j);
         (L::at(o1, j) + a * ms[1]).put(o1, j);
@@ -185,7 +284,8 @@ fn with_forces_in<L: Four>(
     let n = k_hat.len();
     let (dq, load, step) = (&mut dq[..n], &mut load[..n], &step[..n]);
     let full = n - n % 4;
-    for c in (0..full).step_by(4) {
+    for chunk in 0..full / 4 {
+        let c = 4 * chunk;
         let (d, l) = with_force(L::at(step, c), L::at(load, c), L::at(k_hat, c), sign);
         d.put(dq, c);
         l.put(load, c);
@@ -285,7 +385,8 @@ fn ringing_block_in<L: Four>(
     let (a, src) = (&a[..n], &src[..n + 3]);
     let full = n - n % 4;
     let (round_l, gain_l) = (L::splat(round), L::splat(gain));
-    for k in (0..full).step_by(4) {
+    for chunk in 0..full / 4 {
+        let k = 4 * chunk;
         let read = stencil_in(w, shifted::<L>(src, k));
         ((L::at(a, k) + round_l * read) * gain_l).put(todo, k);
     }
@@ -320,7 +421,8 @@ fn elastic_rows_in<L: Four>(e: &Elastic, out: &mut [f64]) {
     let [near_weight, far_weight, inv_z, top, inv_m] = e.constants;
     let full = n - n % 4;
     let [nw, fw, iz, tp, im] = e.constants.map(L::splat);
-    for k in (0..full).step_by(4) {
+    for chunk in 0..full / 4 {
+        let k = 4 * chunk;
         let near_far = nw * stencil_in(e.near.1, shifted::<L>(near, k))
             + fw * stencil_in(e.far.1, shifted::<L>(far, k));
         (iz * (near_far + tp * L::at(newest, k)) - im * L::at(b, k)).put(out, k);
@@ -374,7 +476,8 @@ fn commit_in<L: Four>(e: &Ends, q: &mut [f64], v: &mut [f64], a: &mut [f64]) -> 
     // lane inside one loop, it spilled them).
     let mut acc = [L::splat(0.0); 6];
     let full = n - n % 4;
-    for c in (0..full).step_by(4) {
+    for chunk in 0..full / 4 {
+        let c = 4 * chunk;
         let (q0, v0, dq) = (L::at(q0, c), L::at(v0s, c), L::at(dqs, c));
         let mode = [L::at(omega, c), L::at(zeta, c), L::at(gamma, c)];
         let (v1, a1) = newmark_end(dq, v0, L::at(a, c), hh);
@@ -642,7 +745,8 @@ fn increment_in<L: Four>(e: &Increment, step: &mut [f64]) {
     let (v, a, k_hat, load_now) = (&e.v[..n], &e.a[..n], &e.k_hat[..n], &e.load_now[..n]);
     let hh = e.hh;
     let full = n - n % 4;
-    for c in (0..full).step_by(4) {
+    for chunk in 0..full / 4 {
+        let c = 4 * chunk;
         let mode = [L::at(omega, c), L::at(zeta, c), L::at(gamma, c)];
         // 0.0: an elastic side's corrections do not change.
         let (now, zero) = (L::at(load_now, c), L::splat(0.0));
@@ -778,13 +882,26 @@ mod tests {
                 [both.0.to_bits(), both.1.to_bits()],
                 [dot(&c, &q).to_bits(), dot(&c, &d).to_bits()]
             );
-            // Mode k in lane k mod 4, the lanes joined pairwise: written out term by term.
+            let a = fixed_signed(3 + n as u64, n);
+            let apart = [dot(&c, &q), dot(&c, &d), dot(&c, &a)].map(f64::to_bits);
+            assert_eq!(dot3(&c, &q, &d, &a).map(f64::to_bits), apart, "{n}");
+            assert_eq!(
+                dot3_in::<F4>(&c, &q, &d, &a).map(f64::to_bits),
+                apart,
+                "{n}"
+            );
+            // Mode k in lane k mod 4, the lanes joined pairwise: written out term by term (the
+            // sixteen-mode blocks change no term's place).
             let mut lane = [0.0f64; 4];
+            let mut plain = [0.0f64; 4];
             for k in 0..n {
                 lane[k % 4] += c[k] * (q[k] + d[k]);
+                plain[k % 4] += c[k] * q[k];
             }
             let by_hand = (lane[0] + lane[2]) + (lane[1] + lane[3]);
             assert_eq!(dot_moved(&c, &q, &d).to_bits(), by_hand.to_bits(), "{n}");
+            let by_hand = (plain[0] + plain[2]) + (plain[1] + plain[3]);
+            assert_eq!(dot(&c, &q).to_bits(), by_hand.to_bits(), "{n}");
         }
     }
 

@@ -406,6 +406,9 @@ pub(super) struct Stepper<'a> {
     single_level: bool,
     /// The next free step is one fine step (yielding storeys near or past their yield point).
     single_step: bool,
+    /// Each level's largest closing motion is followed: in a run without contact, where it is
+    /// the gap that avoids contact (a run with contact reports none).
+    follow_closing: bool,
     /// Buffers, boxed so that a stage can take them out of the stepper for the step's length
     /// without copying them.
     scratch: Option<Box<Scratch>>,
@@ -580,6 +583,7 @@ impl<'a> Stepper<'a> {
             tall,
             single_level,
             single_step: false,
+            follow_closing: sc.contact == ContactModel::None,
             scratch: Some(Box::default()),
             contact_scratch: Some(contact_scratch),
         };
@@ -769,7 +773,18 @@ impl<'a> Stepper<'a> {
         (energy, still)
     }
 
+    /// The stepper of a run that follows each level's largest closing motion only where
+    /// `follow` (a run without contact follows it unless told not to; a run with contact never).
+    pub fn following_closings(mut self, follow: bool) -> Self {
+        self.follow_closing &= follow;
+        self
+    }
+
+    /// Each level's largest closing motion: empty where the run did not follow it.
     pub fn max_closing(&self) -> Vec<f64> {
+        if !self.follow_closing {
+            return Vec::new();
+        }
         self.points.iter().map(|p| p.max_closing).collect()
     }
 

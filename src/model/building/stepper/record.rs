@@ -367,6 +367,25 @@ impl Stepper<'_> {
         sum_of(&sig.coef, q[sig.side])
     }
 
+    /// Signal i's value, rate and acceleration: [`Stepper::signal`] and
+    /// [`Stepper::signal_value`] of `acc`, the same sums, a tall side's three in one pass.
+    #[inline]
+    pub(super) fn signal_reading(
+        &self,
+        i: usize,
+        q: [&[f64]; 2],
+        v: [&[f64]; 2],
+        acc: [&[f64]; 2],
+    ) -> [f64; 3] {
+        let sig = &self.signals[i];
+        let s = sig.side;
+        if sig.coef.len() < LANES_FROM {
+            let (u, r) = sums_of(&sig.coef, q[s], v[s]);
+            return [u, r, sum_of(&sig.coef, acc[s])];
+        }
+        lanes::dot3(&sig.coef, q[s], v[s], acc[s])
+    }
+
     /// Every signal's peak brought up to the current state.
     pub(super) fn track_peaks_now(&mut self) {
         let t = self.time();
