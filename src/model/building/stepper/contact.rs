@@ -542,6 +542,14 @@ impl Stepper<'_> {
             }
             // A tall side's sums four modes a register (the same terms in the same order).
             let in_lanes = tall && k_hat.len() >= lanes::LANES_FROM;
+            if in_lanes && let Some(i) = pushing_one(&cs.awake, &out.forces) {
+                // One point pushes (as in most of a contact's steps): its load and the
+                // increments in one pass.
+                let r = &self.points[i].r[s];
+                let (dq, load) = (&mut out.dq[s], &mut out.load[s]);
+                lanes::with_one_force(dq, load, &cs.step[s], k_hat, r, out.forces[i], sign);
+                continue;
+            }
             // Each mode's sum, in the points' order, made point by point in `load`: a pass over
             // the modes for each point that pushes, which the compiler puts in vector lanes.
             let sums = &mut out.load[s][..];
@@ -1098,6 +1106,15 @@ impl Stepper<'_> {
             [&self.sides[0].q, &self.sides[1].q],
             [&self.sides[0].v, &self.sides[1].v],
         )
+    }
+}
+
+/// The awake point that pushes (a non-zero force), where exactly one does.
+fn pushing_one(awake: &[usize], forces: &[f64]) -> Option<usize> {
+    let mut pushing = awake.iter().copied().filter(|&i| forces[i] != 0.0);
+    match (pushing.next(), pushing.next()) {
+        (Some(i), None) => Some(i),
+        _ => None,
     }
 }
 

@@ -164,7 +164,7 @@ impl Stepper<'_> {
                 a,
                 b: (a + g.check).min(len),
             };
-            match self.refine(&mut w, 0, part, t0) {
+            match self.refine(&mut w, 0, part, t0, false) {
                 Ok(None) => {}
                 Ok(Some(onset)) => {
                     // The stretch is taken up to the grid point before the onset's step: its
@@ -239,16 +239,21 @@ impl Stepper<'_> {
 
     /// Checks a part at depth `d` of the halving (for what its parent left open): clears it,
     /// halves it, or walks it. Returns the onset, if one was found in it.
+    /// `end_read`: the part ends where its parent does (its second half), whose check read
+    /// every value this one looks at there.
     fn refine(
         &mut self,
         w: &mut Scratch,
         d: usize,
         part: Part,
         t0: f64,
+        end_read: bool,
     ) -> Result<Option<Free>, SolveError> {
         self.steps += 1;
+        // The states at the part's end even where its values are known: a part ends with `w`
+        // there (the stretch's end is committed from it).
         self.states_and_accelerations(w, part.b);
-        let (any, unbounded) = self.flag(w, d, part, t0);
+        let (any, unbounded) = self.flag(w, d, part, t0, end_read);
         if any {
             let len = part.b - part.a;
             if unbounded || len <= WALK_SPAN {
@@ -257,8 +262,12 @@ impl Stepper<'_> {
                 }
             } else {
                 let mid = part.a + len / 2;
-                for half in [Part { a: part.a, b: mid }, Part { a: mid, b: part.b }] {
-                    if let Some(onset) = self.refine(w, d + 1, half, t0)? {
+                let halves = [
+                    (Part { a: part.a, b: mid }, false),
+                    (Part { a: mid, b: part.b }, true),
+                ];
+                for (half, end_read) in halves {
+                    if let Some(onset) = self.refine(w, d + 1, half, t0, end_read)? {
                         return Ok(Some(onset));
                     }
                 }
@@ -458,7 +467,16 @@ impl Stepper<'_> {
     /// value at an end: that is taken at once, as a walk would take it. Returns whether anything
     /// must be looked into, and whether an onset can have no bound (a slab's waves fresh from a
     /// contact).
-    fn flag(&mut self, w: &mut Scratch, d: usize, part: Part, t0: f64) -> (bool, bool) {
+    /// `end_read`: the part's parent ended where it does, and its values there are taken
+    /// (the same sums of the same states) rather than read again.
+    fn flag(
+        &mut self,
+        w: &mut Scratch,
+        d: usize,
+        part: Part,
+        t0: f64,
+        end_read: bool,
+    ) -> (bool, bool) {
         let (h, l) = (self.grid.h, (part.b - part.a) as f64 * self.grid.h);
         let t = t0 + part.b as f64 * h;
         let gap = self.sc.gap_m;
@@ -486,7 +504,11 @@ impl Stepper<'_> {
         for &i in &parent.points {
             let (open_onset, open_closing) = (parent.onset[i], parent.closing[i]);
             let p = &self.points[i];
-            let [c, cv, ca] = self.point_reading(p, q, v, acc);
+            let [c, cv, ca] = if end_read {
+                parent.values[i]
+            } else {
+                self.point_reading(p, q, v, acc)
+            };
             let [c0, cv0, _] = w.prev[i];
             let margin = cubic_margin(w.point_m4[i], l)
                 + cubic_margin(w.point_m4[i], h)
@@ -538,7 +560,11 @@ impl Stepper<'_> {
             any = !now.points.is_empty();
         }
         for &i in &parent.signals {
-            let [u, r, a] = self.signal_reading(i, q, v, acc);
+            let [u, r, a] = if end_read {
+                parent.values[np + i]
+            } else {
+                self.signal_reading(i, q, v, acc)
+            };
             let (u0, r0) = self.peaks.last(i);
             let m4 = w.signal_m4[i];
             let margin = cubic_margin(m4, l)
@@ -605,9 +631,16 @@ impl Stepper<'_> {
                 [&w.v[0][..], &w.v[1]],
                 [&w.acc[0][..], &w.acc[1]],
             );
+            // At the part's end, its check read every value the walk looks at.
+            let at_end = j == part.b;
+            let np = self.points.len();
             let mut onset = None;
             for &i in &open.points {
-                let [c, cv, ca] = self.point_reading(&self.points[i], q, v, acc);
+                let [c, cv, ca] = if at_end {
+                    open.values[i]
+                } else {
+                    self.point_reading(&self.points[i], q, v, acc)
+                };
                 let [c0, cv0, _] = w.prev[i];
                 w.prev[i] = [c, cv, ca];
                 // Between grid points the closing motion is the cubic through their exact
@@ -657,7 +690,11 @@ impl Stepper<'_> {
             // The motion up to here is free: its peaks count.
             let t = t0 + j as f64 * g.h;
             for &i in &open.signals {
-                let [u, r, a] = self.signal_reading(i, q, v, acc);
+                let [u, r, a] = if at_end {
+                    open.values[np + i]
+                } else {
+                    self.signal_reading(i, q, v, acc)
+                };
                 self.peaks.update(i, t, u, r);
                 w.signal_acc[i] = a;
             }

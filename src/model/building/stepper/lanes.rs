@@ -40,6 +40,20 @@ macro_rules! in_lanes {
     };
 }
 
+/// x's first `full` values (a multiple of four) as four-mode chunks: a loop over
+/// `0..full / 4` indexes every such slice in bounds, which the compiler sees (it does not see
+/// that 4 c + 4 <= full from c < full / 4, and kept a bounds check per slice in the loop).
+#[inline(always)]
+fn quads(x: &[f64], full: usize) -> &[[f64; 4]] {
+    x[..full].as_chunks().0
+}
+
+/// [`quads`] of a slice written to.
+#[inline(always)]
+fn quads_mut(x: &mut [f64], full: usize) -> &mut [[f64; 4]] {
+    x[..full].as_chunks_mut().0
+}
+
 /// Four lanes joined pairwise.
 #[inline(always)]
 fn join(l: [f64; 4]) -> f64 {
@@ -225,15 +239,17 @@ fn add_weighted_in<L: Four>(out: [&mut [f64]; 4], abs: &[f64], m: [f64; 4]) {
     let (o0, o1, o2, o3) = (&mut o0[..n], &mut o1[..n], &mut o2[..n], &mut o3[..n]);
     let full = n - n % 4;
     let ms = m.map(L::splat);
-    for chunk in 0..full / 4 {
-        // The chunk's first mode (a multiple of four below `full`: the compiler sees its four
-        // modes in bounds, as it does not through `step_by`).
-        let j = 4 * chunk;
-        let a = L::at(abs, j);
-        (L::at(o0, j) + a * ms[0]).put(o0, j);
-        (L::at(o1, j) + a * ms[1]).put(o1, j);
-        (L::at(o2, j) + a * ms[2]).put(o2, j);
-        (L::at(o3, j) + a * ms[3]).put(o3, j);
+    {
+        let abs = quads(abs, full);
+        let outs = [&mut *o0, &mut *o1, &mut *o2, &mut *o3].map(|o| quads_mut(o, full));
+        let [q0, q1, q2, q3] = outs;
+        for j in 0..full / 4 {
+            let a = L::at(&abs[j], 0);
+            (L::at(&q0[j], 0) + a * ms[0]).put(&mut q0[j], 0);
+            (L::at(&q1[j], 0) + a * ms[1]).put(&mut q1[j], 0);
+            (L::at(&q2[j], 0) + a * ms[2]).put(&mut q2[j], 0);
+            (L::at(&q3[j], 0) + a * ms[3]).put(&mut q3[j], 0);
+        }
     }
     for j in full..n {
         let a = abs[j];
@@ -284,14 +300,54 @@ fn with_forces_in<L: Four>(
     let n = k_hat.len();
     let (dq, load, step) = (&mut dq[..n], &mut load[..n], &step[..n]);
     let full = n - n % 4;
-    for chunk in 0..full / 4 {
-        let c = 4 * chunk;
-        let (d, l) = with_force(L::at(step, c), L::at(load, c), L::at(k_hat, c), sign);
-        d.put(dq, c);
-        l.put(load, c);
+    {
+        let (step, k_hat) = (quads(step, full), quads(k_hat, full));
+        let (dq, load) = (quads_mut(dq, full), quads_mut(load, full));
+        for c in 0..full / 4 {
+            let f = L::at(&load[c], 0);
+            let (d, l) = with_force(L::at(&step[c], 0), f, L::at(&k_hat[c], 0), sign);
+            d.put(&mut dq[c], 0);
+            l.put(&mut load[c], 0);
+        }
     }
     for k in full..n {
         (dq[k], load[k]) = with_force(step[k], load[k], k_hat[k], sign);
+    }
+}
+
+in_lanes! {
+    /// [`with_forces`] where one point pushes, with `force`, through its projections `r`: each
+    /// mode's sum of the forces' loads is 0 + r force, as [`add_scaled`] makes it from a cleared
+    /// sum, taken in the same pass (r at least as long as k_hat).
+    pub(super) fn with_one_force(dq: &mut [f64], load: &mut [f64], step: &[f64], k_hat: &[f64], r: &[f64], force: f64, sign: f64) = with_one_force_in
+}
+
+#[inline(always)]
+fn with_one_force_in<L: Four>(
+    dq: &mut [f64],
+    load: &mut [f64],
+    step: &[f64],
+    k_hat: &[f64],
+    r: &[f64],
+    force: f64,
+    sign: f64,
+) {
+    let n = k_hat.len();
+    let (dq, load, step, r) = (&mut dq[..n], &mut load[..n], &step[..n], &r[..n]);
+    let full = n - n % 4;
+    let (zero, f) = (L::splat(0.0), L::splat(force));
+    {
+        let (step, k_hat, r) = (quads(step, full), quads(k_hat, full), quads(r, full));
+        let (dq, load) = (quads_mut(dq, full), quads_mut(load, full));
+        for c in 0..full / 4 {
+            let sum = zero + L::at(&r[c], 0) * f;
+            let (d, l) = with_force(L::at(&step[c], 0), sum, L::at(&k_hat[c], 0), sign);
+            d.put(&mut dq[c], 0);
+            l.put(&mut load[c], 0);
+        }
+    }
+    for k in full..n {
+        (dq[k], load[k]) = with_force(step[k], 0.0 + r[k] * force, k_hat[k], sign);
     }
 }
 
@@ -476,21 +532,25 @@ fn commit_in<L: Four>(e: &Ends, q: &mut [f64], v: &mut [f64], a: &mut [f64]) -> 
     // lane inside one loop, it spilled them).
     let mut acc = [L::splat(0.0); 6];
     let full = n - n % 4;
-    for chunk in 0..full / 4 {
-        let c = 4 * chunk;
-        let (q0, v0, dq) = (L::at(q0, c), L::at(v0s, c), L::at(dqs, c));
-        let mode = [L::at(omega, c), L::at(zeta, c), L::at(gamma, c)];
-        let (v1, a1) = newmark_end(dq, v0, L::at(a, c), hh);
-        let (input, damping) = energy_terms(dq, v0, v1, mode, hh, e.ground);
-        for (sum, term) in
-            acc.iter_mut()
-                .zip([input, damping, dq.abs(), dq * dq, v1.abs(), v1 * v1])
-        {
-            *sum = *sum + term;
+    {
+        let (q0, v0s, dqs) = (quads(q0, full), quads(v0s, full), quads(dqs, full));
+        let [omega, zeta, gamma] = [omega, zeta, gamma].map(|x| quads(x, full));
+        let (q, v, a) = (quads_mut(q, full), quads_mut(v, full), quads_mut(a, full));
+        for c in 0..full / 4 {
+            let (q0, v0, dq) = (L::at(&q0[c], 0), L::at(&v0s[c], 0), L::at(&dqs[c], 0));
+            let mode = [&omega[c], &zeta[c], &gamma[c]].map(|x| L::at(x, 0));
+            let (v1, a1) = newmark_end(dq, v0, L::at(&a[c], 0), hh);
+            let (input, damping) = energy_terms(dq, v0, v1, mode, hh, e.ground);
+            for (sum, term) in
+                acc.iter_mut()
+                    .zip([input, damping, dq.abs(), dq * dq, v1.abs(), v1 * v1])
+            {
+                *sum = *sum + term;
+            }
+            (q0 + dq).put(&mut q[c], 0);
+            v1.put(&mut v[c], 0);
+            a1.put(&mut a[c], 0);
         }
-        (q0 + dq).put(q, c);
-        v1.put(v, c);
-        a1.put(a, c);
     }
     let mut acc = acc.map(L::array);
     for k in full..n {
@@ -745,21 +805,18 @@ fn increment_in<L: Four>(e: &Increment, step: &mut [f64]) {
     let (v, a, k_hat, load_now) = (&e.v[..n], &e.a[..n], &e.k_hat[..n], &e.load_now[..n]);
     let hh = e.hh;
     let full = n - n % 4;
-    for chunk in 0..full / 4 {
-        let c = 4 * chunk;
-        let mode = [L::at(omega, c), L::at(zeta, c), L::at(gamma, c)];
-        // 0.0: an elastic side's corrections do not change.
-        let (now, zero) = (L::at(load_now, c), L::splat(0.0));
-        let load = increment_load(
-            mode,
-            e.ground_change,
-            now,
-            zero,
-            L::at(v, c),
-            L::at(a, c),
-            hh,
-        );
-        (load / L::at(k_hat, c)).put(step, c);
+    {
+        let [omega4, zeta4, gamma4] = [omega, zeta, gamma].map(|x| quads(x, full));
+        let [v4, a4, k_hat4, now4] = [v, a, k_hat, load_now].map(|x| quads(x, full));
+        let step4 = quads_mut(step, full);
+        for c in 0..full / 4 {
+            let mode = [&omega4[c], &zeta4[c], &gamma4[c]].map(|x| L::at(x, 0));
+            // 0.0: an elastic side's corrections do not change.
+            let (now, zero) = (L::at(&now4[c], 0), L::splat(0.0));
+            let (vc, ac) = (L::at(&v4[c], 0), L::at(&a4[c], 0));
+            let load = increment_load(mode, e.ground_change, now, zero, vc, ac, hh);
+            (load / L::at(&k_hat4[c], 0)).put(&mut step4[c], 0);
+        }
     }
     for k in full..n {
         let mode = [omega[k], zeta[k], gamma[k]];
@@ -854,6 +911,14 @@ mod tests {
                 bits(&load),
                 bits(&d.iter().map(|f| -f + 0.0).collect::<Vec<_>>())
             );
+            // One point's force: as a cleared sum with its load added, then the increments.
+            let (mut one_dq, mut one_load) = (vec![0.0; n], vec![f64::NAN; n]);
+            with_one_force(&mut one_dq, &mut one_load, &q, &k_hat, &c, -0.61, 1.0);
+            let (mut two_dq, mut two_load) = (vec![0.0; n], vec![0.0; n]);
+            add_scaled(&mut two_load, &c, -0.61);
+            with_forces(&mut two_dq, &mut two_load, &q, &k_hat, 1.0);
+            assert_eq!(bits(&one_dq), bits(&two_dq), "{n}");
+            assert_eq!(bits(&one_load), bits(&two_load), "{n}");
             let (mut dq2, mut load2) = (vec![0.0; n], c.clone());
             with_forces(&mut dq2, &mut load2, &q, &k_hat, 1.0);
             let by_hand: Vec<f64> = (0..n).map(|k| q[k] + c[k] / k_hat[k]).collect();
