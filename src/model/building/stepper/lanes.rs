@@ -227,36 +227,87 @@ fn add3<L: Four>(sums: &mut [L; 3], [c, q, v, a]: [&[f64]; 4], j: usize) {
 }
 
 in_lanes! {
-    /// out[b] += abs m[b] row by row, for each of the four bounds b (every slice as long as
-    /// `abs`): one mode's terms of [`AbsRows::weigh`](super::weights::AbsRows::weigh).
-    pub(super) fn add_weighted(out: [&mut [f64]; 4], abs: &[f64], m: [f64; 4]) = add_weighted_in
+    /// A table's four weighted sums for every row: out[b][j] = the sum over the modes k of
+    /// abs[k rows + j] m[b][k], from zero, mode after mode (as each row's own sum takes them,
+    /// bit for bit). Eight rows' sums stay in registers over all the modes, so the rows are
+    /// neither read nor written once per mode. `abs` holds
+    /// m[b].len() modes of `rows` rows; each out[b] is `rows` long.
+    pub(super) fn weigh_rows(abs: &[f64], rows: usize, m: [&[f64]; 4], out: [&mut [f64]; 4]) = weigh_rows_in
 }
 
 #[inline(always)]
-fn add_weighted_in<L: Four>(out: [&mut [f64]; 4], abs: &[f64], m: [f64; 4]) {
-    let n = abs.len();
+fn weigh_rows_in<L: Four>(abs: &[f64], rows: usize, m: [&[f64]; 4], out: [&mut [f64]; 4]) {
+    let modes = m[0].len();
+    let [m0, m1, m2, m3] = m.map(|m| &m[..modes]);
+    let abs = &abs[..modes * rows];
     let [o0, o1, o2, o3] = out;
-    let (o0, o1, o2, o3) = (&mut o0[..n], &mut o1[..n], &mut o2[..n], &mut o3[..n]);
-    let full = n - n % 4;
-    let ms = m.map(L::splat);
-    {
-        let abs = quads(abs, full);
-        let outs = [&mut *o0, &mut *o1, &mut *o2, &mut *o3].map(|o| quads_mut(o, full));
-        let [q0, q1, q2, q3] = outs;
-        for j in 0..full / 4 {
-            let a = L::at(&abs[j], 0);
-            (L::at(&q0[j], 0) + a * ms[0]).put(&mut q0[j], 0);
-            (L::at(&q1[j], 0) + a * ms[1]).put(&mut q1[j], 0);
-            (L::at(&q2[j], 0) + a * ms[2]).put(&mut q2[j], 0);
-            (L::at(&q3[j], 0) + a * ms[3]).put(&mut q3[j], 0);
+    let (o0, o1, o2, o3) = (
+        &mut o0[..rows],
+        &mut o1[..rows],
+        &mut o2[..rows],
+        &mut o3[..rows],
+    );
+    let (pairs, full) = (rows - rows % 8, rows - rows % 4);
+    let zero = L::splat(0.0);
+    let mut j = 0;
+    // Eight rows at a time, each of their sums a named value (the compiler kept an array of
+    // them in memory): the four weights are splat once for the eight.
+    while j < pairs {
+        let (mut a0, mut a1, mut a2, mut a3) = (zero, zero, zero, zero);
+        let (mut b0, mut b1, mut b2, mut b3) = (zero, zero, zero, zero);
+        for (k, table) in abs.chunks_exact(rows).enumerate() {
+            let (w0, w1, w2, w3) = (
+                L::splat(m0[k]),
+                L::splat(m1[k]),
+                L::splat(m2[k]),
+                L::splat(m3[k]),
+            );
+            let eight = &table[j..j + 8];
+            let (x, y) = (L::at(eight, 0), L::at(eight, 4));
+            a0 = a0 + x * w0;
+            a1 = a1 + x * w1;
+            a2 = a2 + x * w2;
+            a3 = a3 + x * w3;
+            b0 = b0 + y * w0;
+            b1 = b1 + y * w1;
+            b2 = b2 + y * w2;
+            b3 = b3 + y * w3;
         }
+        a0.put(o0, j);
+        a1.put(o1, j);
+        a2.put(o2, j);
+        a3.put(o3, j);
+        b0.put(o0, j + 4);
+        b1.put(o1, j + 4);
+        b2.put(o2, j + 4);
+        b3.put(o3, j + 4);
+        j += 8;
     }
-    for j in full..n {
-        let a = abs[j];
-        o0[j] += a * m[0];
-        o1[j] += a * m[1];
-        o2[j] += a * m[2];
-        o3[j] += a * m[3];
+    if j < full {
+        let (mut a0, mut a1, mut a2, mut a3) = (zero, zero, zero, zero);
+        for k in 0..modes {
+            let x = L::at(abs, k * rows + j);
+            a0 = a0 + x * L::splat(m0[k]);
+            a1 = a1 + x * L::splat(m1[k]);
+            a2 = a2 + x * L::splat(m2[k]);
+            a3 = a3 + x * L::splat(m3[k]);
+        }
+        a0.put(o0, j);
+        a1.put(o1, j);
+        a2.put(o2, j);
+        a3.put(o3, j);
+        j += 4;
+    }
+    for row in j..rows {
+        let mut sums = [0.0; 4];
+        for k in 0..modes {
+            let a = abs[k * rows + row];
+            sums[0] += a * m0[k];
+            sums[1] += a * m1[k];
+            sums[2] += a * m2[k];
+            sums[3] += a * m3[k];
+        }
+        (o0[row], o1[row], o2[row], o3[row]) = (sums[0], sums[1], sums[2], sums[3]);
     }
 }
 
@@ -880,7 +931,7 @@ pub(super) fn newmark_end<T: Lane>(dq: T, v0: T, a0: T, hh: f64) -> (T, T) {
 
 #[cfg(test)]
 mod tests {
-    use super::super::fixed_signed;
+    use super::super::{fixed_signed, fixed_values};
     use super::*;
 
     #[test]
@@ -927,15 +978,24 @@ mod tests {
                 bits(&load2),
                 bits(&c.iter().map(|f| f + 0.0).collect::<Vec<_>>())
             );
-            let rows: [Vec<f64>; 4] = std::array::from_fn(|b| fixed_signed(40 + b as u64, n));
-            let (mut lanes, mut by_hand) = (rows.clone(), rows.clone());
-            let [l0, l1, l2, l3] = &mut lanes;
-            add_weighted([l0, l1, l2, l3], &k_hat, [0.5, -1.5, 3.0, 1e-3]);
-            for (b, m) in [0.5, -1.5, 3.0, 1e-3].into_iter().enumerate() {
-                for j in 0..n {
-                    by_hand[b][j] += k_hat[j] * m;
-                }
-                assert_eq!(bits(&lanes[b]), bits(&by_hand[b]));
+            // A table of n rows over 7 modes: each row's four weighted sums, mode after mode.
+            let modes = 7;
+            let abs: Vec<f64> = fixed_values(40 + n as u64, modes * n);
+            let m: [Vec<f64>; 4] = std::array::from_fn(|b| fixed_signed(50 + b as u64, modes));
+            let by_hand: [Vec<f64>; 4] = std::array::from_fn(|b| {
+                (0..n)
+                    .map(|j| (0..modes).fold(0.0, |sum, k| sum + abs[k * n + j] * m[b][k]))
+                    .collect()
+            });
+            let mut out: [Vec<f64>; 4] = std::array::from_fn(|_| vec![f64::NAN; n]);
+            let [o0, o1, o2, o3] = &mut out;
+            weigh_rows(&abs, n, [&m[0], &m[1], &m[2], &m[3]], [o0, o1, o2, o3]);
+            let mut scalars: [Vec<f64>; 4] = std::array::from_fn(|_| vec![f64::NAN; n]);
+            let [o0, o1, o2, o3] = &mut scalars;
+            weigh_rows_in::<F4>(&abs, n, [&m[0], &m[1], &m[2], &m[3]], [o0, o1, o2, o3]);
+            for b in 0..4 {
+                assert_eq!(bits(&out[b]), bits(&by_hand[b]), "{n}");
+                assert_eq!(bits(&scalars[b]), bits(&by_hand[b]), "{n}");
             }
             let both = dot2(&c, &q, &d);
             assert_eq!(

@@ -3,9 +3,9 @@
 //! A signal's (or a point's) bound on its size over a stretch is the sum over its side's modes
 //! of |c_k| times the mode's bound, and so are its fourth and fifth derivatives'. Taken signal
 //! by signal, a hundred-storey pair spends a third of a free stretch in these sums. Here the
-//! |c_k| of a side are kept mode by mode over all its rows, so one pass per mode adds that
-//! mode's term to every row: the same sums in the same order (bit for bit), four rows a vector
-//! register ([`lanes::add_weighted`]).
+//! |c_k| of a side are kept mode by mode over all its rows, and eight rows' sums are taken over
+//! every mode at once: the same sums in the same order (bit for bit), four rows a vector
+//! register ([`lanes::weigh_rows`]).
 
 use super::{Point, Signal, TALL, lanes};
 
@@ -75,18 +75,18 @@ impl AbsRows {
     pub(super) fn weigh(&self, m: [&[f64]; 4], out: &mut [Vec<f64>; 4]) {
         let n = self.rows;
         for o in out.iter_mut() {
-            // The same length at every stretch of a run: set to zero where it stands.
+            // The same length at every stretch of a run; every row is written.
             if o.len() != n {
                 o.resize(n, 0.0);
             }
-            o.fill(0.0);
+        }
+        if n == 0 {
+            return;
         }
         let [o0, o1, o2, o3] = out;
-        let (o0, o1, o2, o3) = (&mut o0[..n], &mut o1[..n], &mut o2[..n], &mut o3[..n]);
-        for (k, abs) in self.abs.chunks_exact(n.max(1)).enumerate() {
-            let mk = [m[0][k], m[1][k], m[2][k], m[3][k]];
-            lanes::add_weighted([&mut *o0, &mut *o1, &mut *o2, &mut *o3], &abs[..n], mk);
-        }
+        let modes = self.abs.len() / n;
+        let m = m.map(|m| &m[..modes]);
+        lanes::weigh_rows(&self.abs, n, m, [o0, o1, o2, o3]);
     }
 }
 
