@@ -453,13 +453,22 @@ pub(crate) fn integrals_over(
     j: usize,
 ) -> StepIntegrals {
     let mut acc: Option<(StepIntegrals, [[f64; 4]; 4])> = None;
+    // The map over the whole is not asked for: the last doubling joined needs none made.
+    let last = (0..doublings.len()).rev().find(|&b| j & (1 << b) != 0);
     for (b, (ints, phi)) in doublings.iter().enumerate() {
         if j & (1 << b) == 0 {
             continue;
         }
         acc = Some(match acc {
             None => (*ints, *phi),
-            Some((a_ints, a_phi)) => (joined(&a_ints, &a_phi, ints), mul4(phi, &a_phi)),
+            Some((a_ints, a_phi)) => {
+                let phi = if Some(b) == last {
+                    a_phi
+                } else {
+                    mul4(phi, &a_phi)
+                };
+                (joined(&a_ints, &a_phi, ints), phi)
+            }
         });
     }
     acc.map_or_else(StepIntegrals::default, |(ints, _)| ints)

@@ -491,7 +491,15 @@ impl Stepper<'_> {
                 norm,
             } = self.watch[w];
             let pr = &mut self.proof[i];
-            let room = pr.headroom - (largest * reach[s][0]).min(norm * reach[s][1]);
+            // The tighter of the two bounds (neither is NaN: sizes of finite states), taken
+            // without `f64::min`'s care for NaN, in the loop every batch runs over every signal.
+            let (by_largest, by_norm) = (largest * reach[s & 1][0], norm * reach[s & 1][1]);
+            let moved = if by_norm < by_largest {
+                by_norm
+            } else {
+                by_largest
+            };
+            let room = pr.headroom - moved;
             if room > 1e-9 * self.peaks.peak(i) {
                 pr.headroom = room;
                 pr.stale = true;
