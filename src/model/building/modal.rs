@@ -452,26 +452,23 @@ pub(crate) fn integrals_over(
     doublings: &[(StepIntegrals, [[f64; 4]; 4])],
     j: usize,
 ) -> StepIntegrals {
-    let mut acc: Option<(StepIntegrals, [[f64; 4]; 4])> = None;
-    // The map over the whole is not asked for: the last doubling joined needs none made.
-    let last = (0..doublings.len()).rev().find(|&b| j & (1 << b) != 0);
-    for (b, (ints, phi)) in doublings.iter().enumerate() {
-        if j & (1 << b) == 0 {
-            continue;
+    // The doublings j is made of, shortest first, joined one after another (the map over the
+    // whole is not asked for: the last join needs none made).
+    let mut parts = (0..doublings.len()).filter(|&b| j & (1 << b) != 0);
+    let Some(first) = parts.next() else {
+        return StepIntegrals::default();
+    };
+    let (mut ints, mut phi) = doublings[first];
+    let mut next = parts.next();
+    while let Some(b) = next {
+        next = parts.next();
+        let (b_ints, b_phi) = &doublings[b];
+        ints = joined(&ints, &phi, b_ints);
+        if next.is_some() {
+            phi = mul4(b_phi, &phi);
         }
-        acc = Some(match acc {
-            None => (*ints, *phi),
-            Some((a_ints, a_phi)) => {
-                let phi = if Some(b) == last {
-                    a_phi
-                } else {
-                    mul4(phi, &a_phi)
-                };
-                (joined(&a_ints, &a_phi, ints), phi)
-            }
-        });
     }
-    acc.map_or_else(StepIntegrals::default, |(ints, _)| ints)
+    ints
 }
 
 /// A mode's exact steps over h, 2h, ... `count` h, each the one before times the first (one
