@@ -787,6 +787,11 @@ impl Stepper<'_> {
         v: [&[f64]; 2],
         acc: [&[f64]; 2],
     ) -> [f64; 3] {
+        if !self.tall {
+            // A few modes' sums as the point's own functions take them (inlined, unrolled).
+            let (c, cv) = self.point_state(p, q, v);
+            return [c, cv, self.point_value(p, acc)];
+        }
         let side = |s: usize| {
             let r = &p.r[s][..];
             let n = r.len().min(q[s].len());
