@@ -17,11 +17,14 @@ pub struct Checked {
     pub result: BuildingResult,
     /// Its error estimate.
     pub estimate: Option<BuildingErrorEstimate>,
-    /// The same buildings without contact, with their histories (as the run's).
+    /// The same buildings without contact, with their histories (as the run's). A comparison:
+    /// it does not search for each level's largest closing (its `max_closing_m` is empty; a gap
+    /// assessment needs a run of its own, as [`super::solve()`] makes it).
     pub baseline: BuildingResult,
 }
 
-/// Runs `sc` with its checks side by side, each bit for bit what it is alone. `control` sees the
+/// Runs `sc` with its checks side by side, each bit for bit what it is alone (the run without
+/// contact every peak and history, less the search for its largest closings). `control` sees the
 /// run as the first half of the job and the checks left when it ends as the second; cancelling
 /// it stops all three.
 pub fn solve_checked(

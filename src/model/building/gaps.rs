@@ -47,8 +47,13 @@ pub struct GapAssessment {
     pub levels: Vec<LevelGap>,
 }
 
-/// The gaps of a run made without contact (`contact = none`).
+/// The gaps of a run made without contact (`contact = none`) that followed each level's
+/// largest closing (not [`super::Checked`]'s comparison run, whose `max_closing_m` is empty).
 pub fn assess(free: &BuildingResult) -> GapAssessment {
+    debug_assert!(
+        free.max_closing_m.len() == free.levels.len(),
+        "a gap assessment reads a run that followed the levels' largest closings"
+    );
     let levels: Vec<LevelGap> = free
         .max_closing_m
         .iter()

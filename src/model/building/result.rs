@@ -95,7 +95,10 @@ impl BuildingEnergy {
 /// What a run cost.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct BuildingStats {
-    /// Steps of every kind: free steps between samples of the record, contact steps.
+    /// Steps of every kind: contact steps, and the free stretches' looks at the exact motion
+    /// (each part a stretch's halving checks, each grid point it walks). What a run does not
+    /// follow is not looked for: a run without contact that follows each level's largest
+    /// closing takes more looks than one that does not.
     pub steps: usize,
     /// Steps taken inside contacts.
     pub contact_steps: usize,
@@ -202,9 +205,10 @@ pub struct BuildingResult {
     /// point's between two floors.
     pub peak_level_displacement_m: Vec<[f64; 2]>,
     /// The largest closing motion at each level, u_left - u_right at the point, over the run
-    /// [m]: the smallest gap that avoids contact there. Only a run without contact follows it
-    /// (empty for a run with contact, and for the run without contact a report sets beside a
-    /// run with contact).
+    /// [m]: the smallest gap that avoids contact there. Only a run without contact follows it:
+    /// empty for a run with contact, and for the run without contact that [`super::Checked`]
+    /// sets beside a run with contact (the window's, the lessons' and `pounding gaps`' runs
+    /// without contact follow it).
     pub max_closing_m: Vec<f64>,
     /// The Sears slabs at each level (empty for the other elements), whose waves
     /// [`BuildingResult::slab_waves`] gives.
