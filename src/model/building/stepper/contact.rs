@@ -523,6 +523,13 @@ impl Stepper<'_> {
     #[inline(always)]
     fn trial_loads(&self, full: bool, cs: &mut Scratch, tall: bool) {
         let out = &mut cs.trial;
+        // Where one point pushes (as in most of a contact's steps), a tall side takes its load
+        // and its increments in one pass.
+        let pusher = if tall {
+            pushing_one(&cs.awake, &out.forces)
+        } else {
+            None
+        };
         for s in 0..2 {
             let sign = if s == 0 { -1.0 } else { 1.0 };
             let k_hat = self.step_k_hat(&cs.k_hat, s, full);
@@ -542,9 +549,7 @@ impl Stepper<'_> {
             }
             // A tall side's sums four modes a register (the same terms in the same order).
             let in_lanes = tall && k_hat.len() >= lanes::LANES_FROM;
-            if in_lanes && let Some(i) = pushing_one(&cs.awake, &out.forces) {
-                // One point pushes (as in most of a contact's steps): its load and the
-                // increments in one pass.
+            if in_lanes && let Some(i) = pusher {
                 let r = &self.points[i].r[s];
                 let (dq, load) = (&mut out.dq[s], &mut out.load[s]);
                 lanes::with_one_force(dq, load, &cs.step[s], k_hat, r, out.forces[i], sign);

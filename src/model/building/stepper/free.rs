@@ -360,7 +360,7 @@ impl Stepper<'_> {
             w.point_m5.push(l[2] + r[2]);
             let size = (l[0] + r[0]) * (1.0 + ROUNDING);
             let gap = self.sc.gap_m;
-            let below = p.max_closing - 1e-6 * p.max_closing.abs();
+            let below = self.closing_bar(p);
             // The slabs' ringing is bounded (its envelope tabulated) only where the motion alone
             // cannot reach the gap: the bound is never negative.
             let ringing = |reach: f64| {
@@ -371,7 +371,7 @@ impl Stepper<'_> {
                 }
             };
             let mut onset = contact && (size >= gap || size + ringing(size) >= gap);
-            let mut closing = self.follow_closing && size >= below;
+            let mut closing = size >= below;
             // As for a tall building's signals (below): from where the closing motion is, at its
             // rate, with its acceleration's bound, it may still stay below the gap and its
             // largest value over the stretch.
@@ -515,7 +515,7 @@ impl Stepper<'_> {
                 + ROUNDING * (c0.abs() + c.abs() + l * (cv0.abs() + cv.abs()));
             // The cubic's largest value: at once below a quick bound, else found exactly.
             let quick = cubic_bound(c0, cv0, c, cv, l);
-            let below = p.max_closing - 1e-6 * p.max_closing.abs();
+            let below = self.closing_bar(p);
             let elastic = |top: f64| {
                 if self.sears && open_onset && contact && top + margin < gap {
                     p.elastic_bound_from(self.n + part.a)
@@ -647,15 +647,17 @@ impl Stepper<'_> {
                 // states: a maximum inside a step is found there, and a new largest one is
                 // refined on the exact motion (the gap that avoids contact is this maximum).
                 let inside = hermite_max(c0, cv0, c, cv, g.h);
-                let p = &mut self.points[i];
-                p.max_closing = p.max_closing.max(c);
-                // The cubic is good to (w h)^4 / 384 of the amplitude: near the running maximum
-                // the exact motion decides.
-                if self.follow_closing && inside > p.max_closing - 1e-6 * p.max_closing.abs() {
-                    let (a, b) = ((j - 1) as f64 * g.h, j as f64 * g.h);
-                    let exact = self.exact_max_closing(i, &w.y0, a, b);
-                    let m = &mut self.points[i].max_closing;
-                    *m = m.max(exact);
+                if self.follow_closing {
+                    let p = &mut self.points[i];
+                    p.max_closing = p.max_closing.max(c);
+                    // The cubic is good to (w h)^4 / 384 of the amplitude: near the running
+                    // maximum the exact motion decides.
+                    if inside > p.max_closing - 1e-6 * p.max_closing.abs() {
+                        let (a, b) = ((j - 1) as f64 * g.h, j as f64 * g.h);
+                        let exact = self.exact_max_closing(i, &w.y0, a, b);
+                        let m = &mut self.points[i].max_closing;
+                        *m = m.max(exact);
+                    }
                 }
                 let p = &self.points[i];
                 if contact == ContactModel::None || onset.is_some() || !open.onset[i] {
@@ -776,6 +778,16 @@ impl Stepper<'_> {
         )
     }
 
+    /// What a point's closing motion must reach to be looked into for its largest value: a hair
+    /// under the largest so far, or out of reach where the run does not follow it.
+    fn closing_bar(&self, p: &Point) -> f64 {
+        if self.follow_closing {
+            p.max_closing - 1e-6 * p.max_closing.abs()
+        } else {
+            f64::INFINITY
+        }
+    }
+
     /// A point's closing motion, its rate and its acceleration from modal displacements,
     /// velocities and accelerations: [`Stepper::point_state`] and [`Stepper::point_value`] of
     /// `acc`, the same sums, a tall side's three in one pass over its modes.
@@ -794,9 +806,8 @@ impl Stepper<'_> {
         }
         let side = |s: usize| {
             let r = &p.r[s][..];
-            let n = r.len().min(q[s].len());
-            if n >= lanes::LANES_FROM && v[s].len() >= n && acc[s].len() >= n {
-                lanes::dot3(&r[..n], q[s], v[s], acc[s])
+            if r.len() >= lanes::LANES_FROM {
+                lanes::dot3(r, q[s], v[s], acc[s])
             } else {
                 [dotv(r, q[s]), dotv(r, v[s]), dotv(r, acc[s])]
             }
@@ -848,7 +859,9 @@ impl Stepper<'_> {
         for (i, &(c0, cv0)) in before.iter().enumerate() {
             let (c, cv) = self.point_state(&self.points[i], [&q[0], &q[1]], [&v[0], &v[1]]);
             let p = &mut self.points[i];
-            p.max_closing = p.max_closing.max(c).max(hermite_max(c0, cv0, c, cv, len));
+            if self.follow_closing {
+                p.max_closing = p.max_closing.max(c).max(hermite_max(c0, cv0, c, cv, len));
+            }
             if self.sc.contact == ContactModel::None || self.sears {
                 continue;
             }

@@ -492,6 +492,8 @@ fn ringing_block_in<L: Four>(
     let (a, src) = (&a[..n], &src[..n + 3]);
     let full = n - n % 4;
     let (round_l, gain_l) = (L::splat(round), L::splat(gain));
+    // Indexed by chunk, not `step_by` (see `quads`); the stencils read past a chunk, so the
+    // sources stay whole slices.
     for chunk in 0..full / 4 {
         let k = 4 * chunk;
         let read = stencil_in(w, shifted::<L>(src, k));
@@ -528,6 +530,7 @@ fn elastic_rows_in<L: Four>(e: &Elastic, out: &mut [f64]) {
     let [near_weight, far_weight, inv_z, top, inv_m] = e.constants;
     let full = n - n % 4;
     let [nw, fw, iz, tp, im] = e.constants.map(L::splat);
+    // Indexed by chunk, as `ringing_block` is.
     for chunk in 0..full / 4 {
         let k = 4 * chunk;
         let near_far = nw * stencil_in(e.near.1, shifted::<L>(near, k))

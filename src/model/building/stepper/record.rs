@@ -492,7 +492,8 @@ impl Stepper<'_> {
             } = self.watch[w];
             let pr = &mut self.proof[i];
             // The tighter of the two bounds (neither is NaN: sizes of finite states), taken
-            // without `f64::min`'s care for NaN, in the loop every batch runs over every signal.
+            // without `f64::min`'s care for NaN, in the loop every batch runs over every signal
+            // (the side masked to 0 or 1, which the compiler indexes without a check).
             let (by_largest, by_norm) = (largest * reach[s & 1][0], norm * reach[s & 1][1]);
             let moved = if by_norm < by_largest {
                 by_norm
