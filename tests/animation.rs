@@ -245,7 +245,7 @@ fn bad_animation_flags_are_refused_naming_the_flag_and_its_range() {
         ),
         (
             vec!["--animate-frames", "1"],
-            "--animate-frames: frames: 1 is outside 2 to 2000",
+            "'--animate-frames <N>': '1': expected a whole number from 2 to 2000",
         ),
         (vec!["--animate-fps", "100"], "--animate-fps"),
         (vec!["--animate-size", "10x10"], "--animate-size"),

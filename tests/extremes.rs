@@ -70,6 +70,7 @@ fn named_refusal(e: &SolveError) -> bool {
     match e {
         SolveError::Input(i) => !i.field.is_empty(),
         SolveError::Budget { .. }
+        | SolveError::StepBudget { .. }
         | SolveError::Diverged { .. }
         | SolveError::FeWork { .. }
         | SolveError::Memory { .. } => true,

@@ -85,6 +85,18 @@ fn every_listed_key_is_accepted_by_the_parser_at_its_range_ends() {
                     } else {
                         ImpactSetup::default().apply_assignment(&a)
                     };
+                    // A period sets the storey stiffnesses: the periods a building can take
+                    // depend on its masses, so an end of the table's range may be refused, by
+                    // the period's own name and with the periods this building can take.
+                    if key.ends_with(".period")
+                        && let Err(e) = &r
+                    {
+                        assert!(
+                            e.field == key && e.message.contains("periods from"),
+                            "{a}: {e}"
+                        );
+                        continue;
+                    }
                     assert!(r.is_ok(), "{a}: {:?}", r.err());
                 }
             }

@@ -49,6 +49,8 @@ pub struct CompareScene {
     runs: Vec<(ModelKind, Solved)>,
     /// Whether `runs` are the newest solve's (a lesson reads no older result).
     fresh: bool,
+    /// The models of that solve that failed, and why (a lesson's readout of theirs says so).
+    failed: Vec<(ModelKind, String)>,
     /// The model whose energy is plotted.
     energy_model: ModelKind,
     /// Which of [`COMPARED`] the force plot shows.
@@ -63,6 +65,7 @@ impl CompareScene {
             slot: SolveSlot::new(run_job, move || waker.request_repaint()),
             runs: vec![],
             fresh: false,
+            failed: vec![],
             energy_model: LEAD,
             shown: [true; 5],
         };
@@ -94,10 +97,14 @@ impl CompareScene {
             return;
         }
         let mut runs = vec![];
+        let mut failed = vec![];
         for (model, result) in results {
             match result {
                 Ok(r) => runs.push((model, Solved::new(self.core.setup, r))),
-                Err(e) => self.slot.error = Some(format!("{}: {e}", model.name())),
+                Err(e) => {
+                    self.slot.error = Some(format!("{}: {e}", model.name()));
+                    failed.push((model, e.to_string()));
+                }
             }
         }
         self.fresh = match runs.iter().find(|(m, _)| *m == LEAD) {
@@ -109,6 +116,7 @@ impl CompareScene {
         };
         if self.fresh {
             self.runs = runs;
+            self.failed = failed;
         }
     }
 
@@ -278,7 +286,7 @@ impl ImpactScene for CompareScene {
             return None;
         }
         let runs: Vec<_> = self.runs.iter().map(|(m, s)| (*m, s)).collect();
-        context_of(&runs)
+        context_of(&runs).map(|ctx| ctx.with_failures(&self.failed))
     }
 }
 

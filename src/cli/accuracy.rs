@@ -283,19 +283,8 @@ fn ladders(args: &AccuracyArgs, buildings: bool) -> anyhow::Result<Vec<Rung>> {
     let quiet = args.quiet || args.json;
     let progress = Control::new();
     if buildings {
-        let mut setup: BuildingSetup = preset::load_for(
-            args.preset.as_deref().unwrap_or("paper-buildings"),
-            "buildings",
-        )
-        .map_err(|e| anyhow::anyhow!("preset {e}"))?;
-        for a in &args.set {
-            setup
-                .apply_assignment(a)
-                .map_err(|e| anyhow::anyhow!("--set {e}"))?;
-        }
-        if let Some(m) = &args.motion {
-            setup.motion.file = Some(m.display().to_string());
-        }
+        let (setup, _) =
+            super::buildings::setup(args.preset.as_deref(), &args.set, args.motion.as_deref())?;
         let motion = super::buildings::load_motion(&setup)?;
         super::with_bar("accuracy", &progress, quiet, || {
             building_ladders(&setup, &motion, &progress)
@@ -305,7 +294,7 @@ fn ladders(args: &AccuracyArgs, buildings: bool) -> anyhow::Result<Vec<Rung>> {
             args.preset.as_deref().unwrap_or(preset::DEFAULT_PRESET),
             "impact",
         )
-        .map_err(|e| anyhow::anyhow!("preset {e}"))?;
+        .map_err(super::preset_error)?;
         for a in &args.set {
             setup
                 .apply_assignment(a)

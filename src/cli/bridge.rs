@@ -31,7 +31,7 @@ pub struct BridgeArgs {
 pub fn setup(args: &BridgeArgs) -> anyhow::Result<(BridgeSetup, &str)> {
     let preset_name = args.common.preset.as_deref().unwrap_or(DEFAULT_PRESET);
     let mut setup: BridgeSetup =
-        preset::load_for(preset_name, "bridge").map_err(|e| anyhow::anyhow!("preset {e}"))?;
+        preset::load_for(preset_name, "bridge").map_err(super::preset_error)?;
     for a in &args.common.set {
         setup
             .apply_assignment(a)
@@ -129,11 +129,14 @@ pub fn run(args: &BridgeArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             pounding::io::csv::write_bridge_history(w, &result)
         })?;
     }
+    let unused = super::unused_settings(&args.common.set, |k| setup.unused(k));
     if args.common.json {
-        let report = BridgeReport::new(&setup, preset_name, &motion, &runs);
+        let mut report = BridgeReport::new(&setup, preset_name, &motion, &runs);
+        report.warnings.extend(unused);
         writeln!(out, "{}", serde_json::to_string_pretty(&report)?)?;
     } else if !super::csv_to_stdout(args.common.csv.as_deref()) {
         write!(out, "{}", summary(&setup, preset_name, &motion, &runs))?;
+        super::write_unused(out, &unused)?;
     }
     Ok(())
 }

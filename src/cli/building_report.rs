@@ -408,7 +408,7 @@ pub(super) fn motion_line(motion: &GroundMotion) -> String {
 fn contact_line(sc: &BuildingScenario) -> String {
     let mut contact = format!(
         "  contact: gap {} m, stiffness {:.4e}",
-        sc.gap_m,
+        pounding::model::settings::shown(sc.gap_m),
         sc.element_stiffness()
     );
     if sc.contact == ContactModel::Sears {

@@ -24,8 +24,12 @@ pub struct BuildingArgs {
     #[command(flatten)]
     pub animation: super::impact::AnimateArgs,
     /// The animation's drift exaggeration (1 to 500; the ground is drawn to scale)
-    #[arg(long, value_name = "X", default_value_t = 20.0)]
+    #[arg(long, value_name = "X", default_value_t = 20.0, requires = "animate", allow_hyphen_values = true, value_parser = parse_drift)]
     pub animate_drift: f64,
+}
+
+fn parse_drift(text: &str) -> Result<f64, String> {
+    super::parse_number_in(text, 1.0, 500.0)
 }
 
 /// Reads or generates the ground motion a setup asks for; errors phrased for the command line.
@@ -42,7 +46,7 @@ pub(super) fn setup<'a>(
 ) -> anyhow::Result<(BuildingSetup, &'a str)> {
     let preset_name = preset_name.unwrap_or("paper-buildings");
     let mut setup: BuildingSetup =
-        preset::load_for(preset_name, "buildings").map_err(|e| anyhow::anyhow!("preset {e}"))?;
+        preset::load_for(preset_name, "buildings").map_err(super::preset_error)?;
     for a in sets {
         setup
             .apply_assignment(a)
@@ -171,8 +175,9 @@ pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             pounding::io::csv::write_building_history(w, &result)
         })?;
     }
+    let unused = super::unused_settings(&args.common.set, |k| setup.unused(k));
     if args.common.json {
-        let report = BuildingReport::new(
+        let mut report = BuildingReport::new(
             &setup,
             preset_name,
             &motion,
@@ -180,6 +185,7 @@ pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
             &baseline,
             estimate.as_ref(),
         );
+        report.warnings.extend(unused);
         writeln!(out, "{}", serde_json::to_string_pretty(&report)?)?;
     } else if !super::csv_to_stdout(args.common.csv.as_deref()) {
         write!(
@@ -194,6 +200,7 @@ pub fn run(args: &BuildingArgs, out: &mut dyn Write) -> anyhow::Result<()> {
                 estimate.as_ref()
             )
         )?;
+        super::write_unused(out, &unused)?;
     }
     Ok(())
 }

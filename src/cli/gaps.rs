@@ -36,10 +36,10 @@ pub struct GapsArgs {
     #[arg(long, value_name = "FILE")]
     pub plot: Option<PathBuf>,
     /// Pixel size of a PNG --plot, e.g. 3000x1800 [default: 1200x600]
-    #[arg(long, value_name = "WxH", value_parser = super::parse_plot_size)]
+    #[arg(long, value_name = "WxH", value_parser = super::parse_plot_size, allow_hyphen_values = true)]
     pub plot_size: Option<(u32, u32)>,
     /// Text and line size of --plot relative to the default (0.25 to 8) [default: 1]
-    #[arg(long, value_name = "X", value_parser = super::parse_plot_scale)]
+    #[arg(long, value_name = "X", value_parser = super::parse_plot_scale, allow_hyphen_values = true)]
     pub plot_scale: Option<f64>,
     /// Print one JSON object instead of the table
     #[arg(long)]

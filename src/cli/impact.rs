@@ -24,7 +24,7 @@ pub struct ImpactArgs {
     #[arg(long, value_name = "FIELD", default_value = "stress")]
     pub xt_field: String,
     /// The x-t grid: NX points along each bar, NT times
-    #[arg(long, value_name = "NXxNT", default_value = "200x400", value_parser = parse_grid)]
+    #[arg(long, value_name = "NXxNT", default_value = "200x400", value_parser = parse_grid, allow_hyphen_values = true)]
     pub xt_grid: (usize, usize),
     /// Write the energy over time as CSV: time_s,rigid_kinetic_j,wave_j,contact_j,dissipated_j,total_j
     #[arg(long, value_name = "FILE")]
@@ -32,7 +32,12 @@ pub struct ImpactArgs {
     #[command(flatten)]
     pub animation: AnimateArgs,
     /// The animation's view: bars|xt|both
-    #[arg(long, value_name = "VIEW", default_value = "both")]
+    #[arg(
+        long,
+        value_name = "VIEW",
+        default_value = "both",
+        requires = "animate"
+    )]
     pub animate_view: String,
 }
 
@@ -44,13 +49,13 @@ pub struct AnimateArgs {
     #[arg(long, value_name = "FILE")]
     pub animate: Option<std::path::PathBuf>,
     /// Frames in the animation (2 to 2000)
-    #[arg(long, value_name = "N", default_value_t = 120)]
+    #[arg(long, value_name = "N", default_value_t = 120, requires = "animate", allow_hyphen_values = true, value_parser = parse_frames)]
     pub animate_frames: usize,
     /// Frames per second (1 to 50)
-    #[arg(long, value_name = "F", default_value_t = 30.0)]
+    #[arg(long, value_name = "F", default_value_t = 30.0, requires = "animate", allow_hyphen_values = true, value_parser = parse_fps)]
     pub animate_fps: f64,
-    /// The animation's pixel size, WIDTHxHEIGHT
-    #[arg(long, value_name = "WxH", default_value = "1280x720", value_parser = super::parse_plot_size)]
+    /// The animation's pixel size, WIDTHxHEIGHT, each 16 to 8192
+    #[arg(long, value_name = "WxH", default_value = "1280x720", requires = "animate", allow_hyphen_values = true, value_parser = parse_animate_size)]
     pub animate_size: (u32, u32),
 }
 
@@ -110,6 +115,33 @@ impl AnimateArgs {
 }
 
 /// NXxNT, each 2 to 20000, at most 4e7 points in all.
+fn parse_frames(text: &str) -> Result<usize, String> {
+    use pounding::export::animation::FRAMES_RANGE;
+    super::parse_whole_in(text, *FRAMES_RANGE.start(), *FRAMES_RANGE.end())
+}
+
+fn parse_fps(text: &str) -> Result<f64, String> {
+    use pounding::export::animation::FPS_RANGE;
+    super::parse_number_in(text, *FPS_RANGE.start(), *FPS_RANGE.end())
+}
+
+/// An animation's size: the offscreen target's limits, not a plot's.
+fn parse_animate_size(text: &str) -> Result<(u32, u32), String> {
+    use pounding::export::animation::SIDE_RANGE;
+    let (lo, hi) = (*SIDE_RANGE.start(), *SIDE_RANGE.end());
+    let bad = || format!("'{text}': expected WIDTHxHEIGHT in pixels, each {lo} to {hi}");
+    let (w, h) = text.split_once(['x', 'X']).ok_or_else(bad)?;
+    let (w, h): (u32, u32) = (
+        w.trim().parse().map_err(|_| bad())?,
+        h.trim().parse().map_err(|_| bad())?,
+    );
+    if SIDE_RANGE.contains(&w) && SIDE_RANGE.contains(&h) {
+        Ok((w, h))
+    } else {
+        Err(bad())
+    }
+}
+
 fn parse_grid(text: &str) -> Result<(usize, usize), String> {
     let bad = || {
         format!(
@@ -270,7 +302,7 @@ pub(super) fn answered_lists(
 pub(super) fn setup(common: &super::SceneArgs) -> anyhow::Result<(ImpactSetup, &str)> {
     let preset_name = common.preset.as_deref().unwrap_or(DEFAULT_PRESET);
     let mut setup: ImpactSetup =
-        preset::load_for(preset_name, "impact").map_err(|e| anyhow::anyhow!("preset {e}"))?;
+        preset::load_for(preset_name, "impact").map_err(super::preset_error)?;
     for assignment in &common.set {
         setup
             .apply_assignment(assignment)

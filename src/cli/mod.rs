@@ -141,7 +141,28 @@ pub fn run(cli: Cli, out: &mut dyn std::io::Write) -> anyhow::Result<()> {
     result
 }
 
+/// Where a command's --csv and --json both go: a `-` for --csv beside --json would write two
+/// formats into one standard output, which no reader can take apart.
+fn check_outputs(command: &Option<Command>) -> anyhow::Result<()> {
+    let (csv, json) = match command {
+        Some(Command::Impact(a)) => (a.common.csv.as_deref(), a.common.json),
+        Some(Command::Buildings(a)) => (a.common.csv.as_deref(), a.common.json),
+        Some(Command::Bridge(a)) => (a.common.csv.as_deref(), a.common.json),
+        Some(Command::Sweep(a)) => (a.common.csv.as_deref(), a.common.json),
+        Some(Command::Gaps(a)) => (a.csv.as_deref(), a.json),
+        Some(Command::Accuracy(a)) => (a.csv.as_deref(), a.json),
+        _ => (None, false),
+    };
+    if json && csv_to_stdout(csv) {
+        anyhow::bail!(
+            "--csv -: standard output already carries the --json report; write the CSV to a file (--csv FILE), or leave out --json"
+        );
+    }
+    Ok(())
+}
+
 fn dispatch(cli: Cli, out: &mut dyn std::io::Write) -> anyhow::Result<()> {
+    check_outputs(&cli.command)?;
     match cli.command {
         Some(Command::Impact(args)) => impact::run(&args, out),
         Some(Command::Buildings(args)) => buildings::run(&args, out),
@@ -184,10 +205,10 @@ pub struct SceneArgs {
     #[arg(long, value_name = "FILE")]
     pub plot: Option<std::path::PathBuf>,
     /// Pixel size of a PNG --plot, e.g. 3000x1800 [default: the scene's]
-    #[arg(long, value_name = "WxH", value_parser = parse_plot_size)]
+    #[arg(long, value_name = "WxH", value_parser = parse_plot_size, allow_hyphen_values = true)]
     pub plot_size: Option<(u32, u32)>,
     /// Text and line size of --plot relative to the default (0.25 to 8) [default: 1]
-    #[arg(long, value_name = "X", value_parser = parse_plot_scale)]
+    #[arg(long, value_name = "X", value_parser = parse_plot_scale, allow_hyphen_values = true)]
     pub plot_scale: Option<f64>,
     /// Print one JSON object instead of the summary
     #[arg(long)]
@@ -238,9 +259,59 @@ fn parse_plot_size(text: &str) -> Result<(u32, u32), String> {
 }
 
 fn parse_plot_scale(text: &str) -> Result<f64, String> {
-    match text.parse::<f64>() {
-        Ok(v) if (0.25..=8.0).contains(&v) => Ok(v),
-        _ => Err(format!("'{text}': expected a number from 0.25 to 8")),
+    parse_number_in(text, 0.25, 8.0)
+}
+
+/// A number from `lo` to `hi`, refused with that range (a negative one too: the flags that take
+/// these let a leading '-' through to here rather than to the argument parser).
+pub(crate) fn parse_number_in(text: &str, lo: f64, hi: f64) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(v) if (lo..=hi).contains(&v) => Ok(v),
+        _ => Err(format!("'{text}': expected a number from {lo} to {hi}")),
+    }
+}
+
+/// A whole number from `lo` to `hi`, refused with that range.
+pub(crate) fn parse_whole_in(text: &str, lo: usize, hi: usize) -> Result<usize, String> {
+    match text.trim().parse::<usize>() {
+        Ok(v) if (lo..=hi).contains(&v) => Ok(v),
+        _ => Err(format!(
+            "'{text}': expected a whole number from {lo} to {hi}"
+        )),
+    }
+}
+
+/// The `--set` assignments a run does not use, each with why (`unused` says it per key).
+pub(crate) fn unused_settings(
+    sets: &[String],
+    unused: impl Fn(&str) -> Option<String>,
+) -> Vec<String> {
+    sets.iter()
+        .filter_map(|a| {
+            let key = a.split_once('=').map_or(a.as_str(), |(k, _)| k).trim();
+            unused(key).map(|why| format!("--set {}: not used: {why}", a.trim()))
+        })
+        .collect()
+}
+
+/// Writes the settings a run did not use under the text summary.
+pub(crate) fn write_unused(out: &mut dyn std::io::Write, unused: &[String]) -> anyhow::Result<()> {
+    if !unused.is_empty() {
+        writeln!(out, "settings not used")?;
+        for w in unused {
+            writeln!(out, "  - {w}")?;
+        }
+    }
+    Ok(())
+}
+
+/// A preset that could not be loaded, said once as "preset NAME: ..." whether it is a shipped
+/// preset (whose error already names it so) or a file.
+pub(crate) fn preset_error(e: pounding::io::preset::PresetError) -> anyhow::Error {
+    if e.file.starts_with("preset ") {
+        anyhow::anyhow!("{e}")
+    } else {
+        anyhow::anyhow!("preset {e}")
     }
 }
 

@@ -4,6 +4,7 @@ use pounding::io::settings::ImpactSetup;
 use pounding::model::bar::{Bar, EndShape};
 use pounding::model::impact::estimate::ErrorEstimate;
 use pounding::model::impact::{ImpactResult, ModelKind};
+use pounding::model::settings::shown;
 use serde::Serialize;
 use std::fmt::Write;
 
@@ -158,18 +159,18 @@ impl ImpactReport {
 fn bar_line(name: &str, b: &Bar) -> String {
     let end = match b.end {
         EndShape::Flat => "flat end".to_string(),
-        EndShape::Rounded { radius_m } => format!("end rounded r = {radius_m} m"),
+        EndShape::Rounded { radius_m } => format!("end rounded r = {} m", shown(radius_m)),
     };
     format!(
         "  {name}: L = {} m, A = {:.4e} m^2, E = {:.4e} Pa, rho~ = {:.1} kg/m^3, m = {:.4} kg, c = {:.1} m/s, Z = {:.4e} N s/m, v = {} m/s, {end}\n",
-        b.length_m,
+        shown(b.length_m),
         b.area_m2(),
         b.material.youngs_modulus_pa,
         b.effective_density_kg_m3(),
         b.mass_kg(),
         b.wave_speed_m_s(),
         b.impedance_n_s_m(),
-        b.velocity_m_s
+        shown(b.velocity_m_s)
     )
 }
 

@@ -32,10 +32,10 @@ pub struct StudyArgs {
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub set: Vec<String>,
     /// Pixel size of the PNGs, e.g. 3000x1800 [default: 1200x700]
-    #[arg(long, value_name = "WxH", value_parser = super::parse_plot_size)]
+    #[arg(long, value_name = "WxH", value_parser = super::parse_plot_size, allow_hyphen_values = true)]
     pub plot_size: Option<(u32, u32)>,
     /// Text and line size relative to the default (0.25 to 8) [default: 1]
-    #[arg(long, value_name = "X", value_parser = super::parse_plot_scale)]
+    #[arg(long, value_name = "X", value_parser = super::parse_plot_scale, allow_hyphen_values = true)]
     pub plot_scale: Option<f64>,
     /// Print one JSON object instead of the summary
     #[arg(long)]

@@ -28,7 +28,7 @@ pub struct SweepArgs {
     #[arg(long, value_name = "B", allow_negative_numbers = true, required_unless_present_any = LISTS)]
     pub to: Option<f64>,
     /// Number of values, ends included (2 to 100000)
-    #[arg(long, value_name = "N", default_value_t = 50)]
+    #[arg(long, value_name = "N", default_value_t = 50, allow_hyphen_values = true, value_parser = |t: &str| super::parse_whole_in(t, 2, 100_000))]
     pub count: usize,
     /// Space the values geometrically (A and B > 0)
     #[arg(long)]

@@ -14,6 +14,8 @@ use std::path::{Path, PathBuf};
 pub const FPS_RANGE: std::ops::RangeInclusive<f64> = 1.0..=50.0;
 /// The number of frames an animation may have.
 pub const FRAMES_RANGE: std::ops::RangeInclusive<usize> = 2..=2000;
+/// The pixels each side of an offscreen frame may have (a texture's limits on every adapter).
+pub const SIDE_RANGE: std::ops::RangeInclusive<u32> = 16..=8192;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum AnimationFormat {

@@ -16,6 +16,13 @@ pub struct BridgeSetup {
     pub motion: MotionSpec,
 }
 
+impl BridgeSetup {
+    /// Why `key` (as `--set` spells it) has no effect on this setup, where it has none.
+    pub fn unused(&self, key: &str) -> Option<String> {
+        self.motion.unused(key)
+    }
+}
+
 impl WithMotion for BridgeSetup {
     fn motion(&self) -> &MotionSpec {
         &self.motion

@@ -12,6 +12,7 @@ use crate::model::building::{
 use crate::model::error::InputError;
 use crate::model::hysteresis::Hysteresis;
 use crate::model::settings::building as setting;
+use crate::model::settings::shown;
 
 pub use super::motion_settings::SYNTHETIC;
 
@@ -48,6 +49,24 @@ impl BuildingSetup {
         BUILDINGS.apply_assignment(self, assignment, "left.damping_ratio=0.02")
     }
 
+    /// Why `key` (as `--set` spells it) has no effect on this setup, where it has none: the
+    /// record's keys that do not apply to the record, and the yielding laws' parameters on
+    /// storeys that do not follow that law.
+    pub fn unused(&self, key: &str) -> Option<String> {
+        if let Some(why) = self.motion.unused(key) {
+            return Some(why);
+        }
+        let (side, rest) = key.split_once('.')?;
+        let i = ["left", "right"].iter().position(|s| *s == side)?;
+        let law = self.building(i).hysteresis;
+        let used = match rest {
+            "yield_forces" | "hardening" => law != Hysteresis::Elastic,
+            "bouc_wen_n" => law == Hysteresis::BoucWen,
+            _ => true,
+        };
+        (!used).then(|| format!("{side}.hysteresis is {}", law.name()))
+    }
+
     /// Building `i` (0: the left one).
     pub fn building(&self, i: usize) -> &Building {
         [&self.scenario.left, &self.scenario.right][i]
@@ -73,6 +92,36 @@ fn set_period(s: &mut BuildingSetup, t: &Target, v: &SettingValue) -> Result<(),
     check
         .validate()
         .map_err(|e| InputError::new(t.key, format!("needs valid storeys first: {e}")))?;
+    // The period is a way of setting the stiffnesses: a period they cannot reach within their
+    // own range is refused as this key, with the periods that would do.
+    let building = s.building(t.owner);
+    let now = building.period_s();
+    let range = setting::STIFFNESSES
+        .range()
+        .expect("storey stiffnesses have a range");
+    let (k_lo, k_hi) = building
+        .stiffnesses_n_m
+        .iter()
+        .fold((f64::INFINITY, 0.0_f64), |(lo, hi), &k| {
+            (lo.min(k), hi.max(k))
+        });
+    // k scales as 1 / T^2: the stiffest storey meets the top of the range at the shortest period.
+    let shortest = now * (k_hi / range.max).sqrt();
+    let longest = now * (k_lo / range.min).sqrt();
+    if !(shortest..=longest).contains(&period_s) {
+        return Err(InputError::new(
+            t.key,
+            format!(
+                "{} s is not allowed: with these masses it needs storey stiffnesses outside {range} N/m ({}); periods from about {:.4e} to {:.4e} s keep them inside",
+                shown(period_s),
+                setting::STIFFNESSES
+                    .key
+                    .replace("SIDE", ["left", "right"][t.owner]),
+                shortest * (1.0 + 1e-4),
+                longest * (1.0 - 1e-4)
+            ),
+        ));
+    }
     s.building_mut(t.owner).set_period(period_s);
     Ok(())
 }
@@ -202,10 +251,16 @@ pub static BUILDINGS: Registry<BuildingSetup> = Registry {
             &setting::YIELD_FORCES,
             |s, i| s.building(i).yield_forces_n.as_deref().and_then(list),
             |s, t, v| {
-                put(
-                    &mut s.building_mut(t.owner).yield_forces_n,
-                    t.numbers(v).map(Some),
-                )
+                // `auto` (the default) gives the storeys back their derived yield forces.
+                let forces = match v {
+                    SettingValue::Text(w) if w == "auto" => Ok(None),
+                    SettingValue::Number(_) | SettingValue::List(_) => t.numbers(v).map(Some),
+                    other => Err(t.expected(
+                        "auto, or a force in newtons (one for every storey, or one each by commas)",
+                        other,
+                    )),
+                };
+                put(&mut s.building_mut(t.owner).yield_forces_n, forces)
             },
         ),
         E::new(

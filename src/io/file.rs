@@ -5,7 +5,7 @@
 use std::io::Read;
 use std::path::Path;
 
-/// The largest record or preset file read. The longest PEER records are a few megabytes; a file
+/// The largest record, preset or lesson file read. The longest PEER records are a few megabytes; a file
 /// past this is refused before it is read, so a mistaken path cannot take the machine's memory.
 pub const MAX_BYTES: u64 = 64 * 1024 * 1024;
 
@@ -20,10 +20,10 @@ pub enum FileError {
     #[error("cannot read: {0}")]
     Read(String),
     /// A folder, a device or a pipe: reading one could block or never end.
-    #[error("not a regular file (a folder, device or pipe); give a record or preset file")]
+    #[error("not a regular file (a folder, device or pipe); give a text file")]
     NotRegular,
     /// Past the size limit.
-    #[error("larger than {} MiB, the most a record or preset file may hold", *.max_bytes as f64 / (1024.0 * 1024.0))]
+    #[error("larger than {} MiB, the most a record, preset or lesson file may hold", *.max_bytes as f64 / (1024.0 * 1024.0))]
     TooBig { max_bytes: u64 },
     /// Invalid UTF-8: the line and the byte within it (from 1), the offset in the file, the byte.
     #[error(

@@ -202,13 +202,16 @@ impl RecordSource {
             return Ok(RecordSource::Synthetic(None));
         }
         if let Some(seed) = t.strip_prefix("synthetic:") {
+            let max = crate::model::settings::building::MAX_SEED;
             return seed
                 .trim()
                 .parse::<u64>()
+                .ok()
+                .filter(|&s| s <= max)
                 .map(|s| RecordSource::Synthetic(Some(s)))
-                .map_err(|_| {
+                .ok_or_else(|| {
                     format!(
-                        "'{}': the seed must be a whole number >= 0, as in synthetic:42",
+                        "'{}': the seed must be a whole number from 0 to {max}, as in synthetic:42",
                         super::file::excerpt(seed)
                     )
                 });
@@ -218,6 +221,36 @@ impl RecordSource {
 }
 
 impl MotionSpec {
+    /// Why a `motion.*` key has no effect on this spec's record, where it has none: the
+    /// synthetic record's keys beside a record file, a text file's units and step beside a
+    /// record that carries its own.
+    pub fn unused(&self, key: &str) -> Option<String> {
+        let synthetic_only = [
+            setting::MOTION_PGA.key,
+            setting::MOTION_SEED.key,
+            setting::MOTION_LENGTH.key,
+        ];
+        let text_only = [setting::MOTION_UNITS.key, setting::MOTION_DT.key];
+        match &self.file {
+            None if text_only.contains(&key) => Some(
+                "the record is the synthetic one, which has its own step and units; this key is for a text record file"
+                    .into(),
+            ),
+            Some(name) if synthetic_only.contains(&key) => Some(format!(
+                "this key shapes the synthetic record, and the record is {name}"
+            )),
+            Some(name)
+                if text_only.contains(&key)
+                    && (is_built_in(name) || name.to_ascii_lowercase().ends_with(".at2")) =>
+            {
+                Some(format!(
+                    "{name} carries its own step and units (g); this key is for a text record file"
+                ))
+            }
+            _ => None,
+        }
+    }
+
     /// Points the spec at a source given as text (see [`RecordSource`]).
     pub fn set_source(&mut self, text: &str) -> Result<(), String> {
         match RecordSource::parse(text)? {

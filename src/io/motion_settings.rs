@@ -39,18 +39,7 @@ fn scale<S: WithMotion>(s: &mut S, t: &Target, v: &SettingValue) -> Result<(), I
 }
 
 fn seed<S: WithMotion>(s: &mut S, t: &Target, v: &SettingValue) -> Result<(), InputError> {
-    let x = t.checked(v)?;
-    if x.fract() != 0.0 || x < 0.0 {
-        return Err(InputError::new(
-            t.key,
-            format!(
-                "{} is not a whole number; the seed is a whole number >= 0",
-                crate::model::settings::shown(x)
-            ),
-        ));
-    }
-    s.motion_mut().synthetic.seed = x as u64;
-    Ok(())
+    put(&mut s.motion_mut().synthetic.seed, t.whole(v))
 }
 
 /// The record's source (`motion.file`).

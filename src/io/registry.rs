@@ -289,23 +289,58 @@ impl Target<'_> {
         }
     }
 
-    pub fn count(&self, v: &SettingValue) -> Result<usize, InputError> {
+    /// A whole number in the table row's range (a count's bounds), refused with that range.
+    pub fn whole(&self, v: &SettingValue) -> Result<u64, InputError> {
+        let (min, max) = match self.setting.kind {
+            Kind::Count { min, max } => (min, max),
+            _ => (0, 1 << 50),
+        };
         let x = self.number(v)?;
-        if x.is_finite() && x >= 0.0 && x.fract() == 0.0 && x <= 1e15 {
-            Ok(x as usize)
+        if x.is_finite() && x.fract() == 0.0 && x >= min as f64 && x <= max as f64 {
+            Ok(x as u64)
         } else {
             Err(InputError::new(
                 self.key,
-                format!("expected a whole number >= 0, got {}", shown(x)),
+                format!(
+                    "{} is not allowed: a whole number in [{min}, {max}]",
+                    // A whole number as digits where f64 holds it (2^53 rather than 9.007e15).
+                    if x.fract() == 0.0 && x.abs() < 1e17 {
+                        format!("{x:.0}")
+                    } else {
+                        shown(x)
+                    }
+                ),
             ))
         }
+    }
+
+    /// [`Target::whole`] as a count of things.
+    pub fn count(&self, v: &SettingValue) -> Result<usize, InputError> {
+        self.whole(v).map(|n| n as usize)
     }
 
     /// A number, or `None` for the word the table row takes instead (auto: the program picks).
     pub fn number_or_word(&self, v: &SettingValue) -> Result<Option<f64>, InputError> {
         match v {
             SettingValue::Text(s) if Some(s.as_str()) == self.setting.word() => Ok(None),
-            other => self.number(other).map(Some),
+            SettingValue::Number(x) => Ok(Some(*x)),
+            other => {
+                // The refusal says both forms the key takes: the word and the numbers' range.
+                let unit = if self.setting.unit.is_empty() {
+                    String::new()
+                } else {
+                    format!(" {}", self.setting.unit)
+                };
+                let numbers = self.setting.range().map_or_else(
+                    || "a number".to_string(),
+                    |r| format!("a number in {r}{unit}"),
+                );
+                let what = match self.setting.word() {
+                    Some(w) => format!("{w} or {numbers}"),
+                    None => numbers,
+                };
+                Err(self.expected(&what, other))
+            }
         }
     }
 

@@ -232,6 +232,8 @@ impl Vocabulary {
 pub struct Context {
     vocabulary: Vocabulary,
     values: BTreeMap<String, Value>,
+    /// Why a compared model gave no values, by its prefix (`fe.`): a name under it says so.
+    failures: BTreeMap<String, String>,
 }
 
 impl Context {
@@ -246,9 +248,19 @@ impl Context {
             return Ok(v.clone());
         }
         if self.vocabulary.knows(name) {
+            let why = self
+                .failures
+                .iter()
+                .find(|(prefix, _)| name.starts_with(prefix.as_str()))
+                .map_or_else(
+                    || "this model, setting or run does not give it".into(),
+                    |(prefix, reason)| {
+                        format!("{} did not solve: {reason}", prefix.trim_end_matches('.'))
+                    },
+                );
             Err(ExprError::Unavailable {
                 name: name.to_string(),
-                why: "this model, setting or run does not give it".into(),
+                why,
             })
         } else {
             Err(ExprError::UnknownName {
@@ -261,6 +273,16 @@ impl Context {
     /// The values by name (for a readout of what a step's expressions can see).
     pub fn values(&self) -> impl Iterator<Item = (&str, &Value)> {
         self.values.iter().map(|(k, v)| (k.as_str(), v))
+    }
+
+    /// The same values, with the compared models that failed and why: a name of theirs then
+    /// says the reason rather than only that it has no value.
+    pub fn with_failures(mut self, failed: &[(ModelKind, String)]) -> Self {
+        for (m, why) in failed {
+            self.failures
+                .insert(format!("{}.", model_prefix(*m)), why.clone());
+        }
+        self
     }
 
     fn set(&mut self, name: impl Into<String>, v: Value) {
@@ -282,6 +304,7 @@ impl Context {
             // narrower bar vocabulary when the lesson loaded.
             vocabulary: Vocabulary::for_scene(LessonScene::Compare),
             values: BTreeMap::new(),
+            failures: BTreeMap::new(),
         };
         for key in concrete_keys(IMPACT_SETTINGS) {
             if let Some(v) = impact_setting(setup, &key) {
@@ -369,6 +392,7 @@ impl Context {
         let mut ctx = Context {
             vocabulary: Vocabulary::for_scene(LessonScene::Buildings),
             values: BTreeMap::new(),
+            failures: BTreeMap::new(),
         };
         for key in concrete_keys(BUILDING_SETTINGS) {
             if let Some(v) = building_setting(setup, &key) {
@@ -445,5 +469,39 @@ fn lesson_value((setting, value): (&Setting, SettingValue)) -> Option<Value> {
             Kind::List { .. } => uniform(&xs).map(Value::Number),
             _ => None,
         },
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::lesson::expr::Expr;
+
+    #[test]
+    fn a_compared_model_that_failed_says_why_its_names_have_no_value() {
+        let setup = ImpactSetup::default();
+        let run = crate::model::impact::solve(ModelKind::Wave, &setup.scenario).unwrap();
+        let reason = "work budget exceeded: fe.segments = 100000 per bar needs more";
+        let ctx = Context::impact(&setup, &[(ModelKind::Wave, &run)])
+            .with_failures(&[(ModelKind::Fe, reason.to_string())]);
+        let e = Expr::parse("fe.peak_force_n > 0")
+            .unwrap()
+            .eval(&ctx)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("fe did not solve") && e.contains(reason), "{e}");
+        // A model that solved reads as before; one that was not compared says only that.
+        assert!(
+            Expr::parse("wave.peak_force_n > 0")
+                .unwrap()
+                .truth(&ctx)
+                .unwrap()
+        );
+        let e = Expr::parse("lumped_linear.contact_duration_s > 0")
+            .unwrap()
+            .eval(&ctx)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("does not give it"), "{e}");
     }
 }

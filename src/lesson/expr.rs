@@ -108,6 +108,7 @@ impl Expr {
         let mut p = Parser {
             chars: text.char_indices().collect(),
             pos: 0,
+            depth: 0,
         };
         let node = p.or()?;
         p.skip_ws();
@@ -344,9 +345,17 @@ fn binary(
     }
 }
 
+/// How deep an expression may nest: each bracket, `not`, unary minus, `^` and function call,
+/// and each further term of a chain (`a + b + c`, `a and b and c`), is one level. Evaluating,
+/// checking and dropping a tree walk it recursively, so a bound keeps a hostile file from
+/// overflowing the stack; a lesson's statements nest a few levels.
+pub const MAX_DEPTH: usize = 256;
+
 struct Parser {
     chars: Vec<(usize, char)>,
     pos: usize,
+    /// How deep the node being parsed sits in the tree (an upper bound).
+    depth: usize,
 }
 
 impl Parser {
@@ -359,6 +368,29 @@ impl Parser {
 
     fn peek(&self) -> Option<char> {
         self.chars.get(self.pos).map(|(_, c)| *c)
+    }
+
+    /// One level deeper, refused past [`MAX_DEPTH`].
+    fn deeper(&mut self) -> Result<(), ExprError> {
+        self.depth += 1;
+        if self.depth > MAX_DEPTH {
+            return Err(self.error(&format!(
+                "the expression nests more than {MAX_DEPTH} deep (brackets, not, minus, ^, calls \
+                 and the terms of a chain each count one)"
+            )));
+        }
+        Ok(())
+    }
+
+    /// Parses with `parse` one level deeper, then comes back.
+    fn nested(
+        &mut self,
+        parse: impl FnOnce(&mut Self) -> Result<Node, ExprError>,
+    ) -> Result<Node, ExprError> {
+        self.deeper()?;
+        let node = parse(self)?;
+        self.depth -= 1;
+        Ok(node)
     }
 
     fn skip_ws(&mut self) {
@@ -388,25 +420,34 @@ impl Parser {
         }
     }
 
-    fn or(&mut self) -> Result<Node, ExprError> {
-        let mut left = self.and()?;
-        while self.eat("or") {
-            left = Node::Bin(BinOp::Or, Box::new(left), Box::new(self.and()?));
+    /// A left-associative chain: `first`, then `next` after each operator `op` finds; the tree
+    /// deepens by one a term.
+    fn chain(
+        &mut self,
+        first: fn(&mut Self) -> Result<Node, ExprError>,
+        op: fn(&mut Self) -> Option<BinOp>,
+    ) -> Result<Node, ExprError> {
+        let base = self.depth;
+        let mut left = first(self)?;
+        while let Some(op) = op(self) {
+            self.deeper()?;
+            left = Node::Bin(op, Box::new(left), Box::new(first(self)?));
         }
+        self.depth = base;
         Ok(left)
     }
 
+    fn or(&mut self) -> Result<Node, ExprError> {
+        self.chain(Self::and, |p| p.eat("or").then_some(BinOp::Or))
+    }
+
     fn and(&mut self) -> Result<Node, ExprError> {
-        let mut left = self.not()?;
-        while self.eat("and") {
-            left = Node::Bin(BinOp::And, Box::new(left), Box::new(self.not()?));
-        }
-        Ok(left)
+        self.chain(Self::not, |p| p.eat("and").then_some(BinOp::And))
     }
 
     fn not(&mut self) -> Result<Node, ExprError> {
         if self.eat("not") {
-            return Ok(Node::Not(Box::new(self.not()?)));
+            return Ok(Node::Not(Box::new(self.nested(Self::not)?)));
         }
         self.comparison()
     }
@@ -422,43 +463,43 @@ impl Parser {
             (">", BinOp::Gt),
         ] {
             if self.eat(token) {
-                return Ok(Node::Bin(op, Box::new(left), Box::new(self.sum()?)));
+                return Ok(Node::Bin(
+                    op,
+                    Box::new(left),
+                    Box::new(self.nested(Self::sum)?),
+                ));
             }
         }
         Ok(left)
     }
 
     fn sum(&mut self) -> Result<Node, ExprError> {
-        let mut left = self.product()?;
-        loop {
-            let op = if self.eat("+") {
-                BinOp::Add
-            } else if self.eat("-") {
-                BinOp::Sub
+        self.chain(Self::product, |p| {
+            if p.eat("+") {
+                Some(BinOp::Add)
+            } else if p.eat("-") {
+                Some(BinOp::Sub)
             } else {
-                return Ok(left);
-            };
-            left = Node::Bin(op, Box::new(left), Box::new(self.product()?));
-        }
+                None
+            }
+        })
     }
 
     fn product(&mut self) -> Result<Node, ExprError> {
-        let mut left = self.unary()?;
-        loop {
-            let op = if self.eat("*") {
-                BinOp::Mul
-            } else if self.eat("/") {
-                BinOp::Div
+        self.chain(Self::unary, |p| {
+            if p.eat("*") {
+                Some(BinOp::Mul)
+            } else if p.eat("/") {
+                Some(BinOp::Div)
             } else {
-                return Ok(left);
-            };
-            left = Node::Bin(op, Box::new(left), Box::new(self.unary()?));
-        }
+                None
+            }
+        })
     }
 
     fn unary(&mut self) -> Result<Node, ExprError> {
         if self.eat("-") {
-            return Ok(Node::Neg(Box::new(self.unary()?)));
+            return Ok(Node::Neg(Box::new(self.nested(Self::unary)?)));
         }
         self.power()
     }
@@ -470,7 +511,7 @@ impl Parser {
             return Ok(Node::Bin(
                 BinOp::Pow,
                 Box::new(base),
-                Box::new(self.unary()?),
+                Box::new(self.nested(Self::unary)?),
             ));
         }
         Ok(base)
@@ -482,7 +523,7 @@ impl Parser {
             None => Err(self.error("the expression ends too early")),
             Some('(') => {
                 self.pos += 1;
-                let inner = self.or()?;
+                let inner = self.nested(Self::or)?;
                 if !self.eat(")") {
                     return Err(self.error("expected ')'"));
                 }
@@ -561,7 +602,7 @@ impl Parser {
             let mut args = Vec::new();
             if !self.eat(")") {
                 loop {
-                    args.push(self.or()?);
+                    args.push(self.nested(Self::or)?);
                     if self.eat(")") {
                         break;
                     }
@@ -622,5 +663,45 @@ mod tests {
         for bad in ["1 / 0", "sqrt(-1)", "true + 1", "1 and true", "\"a\" < 1"] {
             assert!(Expr::parse(bad).unwrap().eval(&ctx).is_err(), "{bad}");
         }
+    }
+
+    #[test]
+    fn nesting_past_the_limit_is_refused_and_below_it_evaluates() {
+        let deep = MAX_DEPTH + 10;
+        let refused = [
+            format!("{}1{}", "(".repeat(deep), ")".repeat(deep)),
+            format!("{}true", "not ".repeat(deep)),
+            format!("{}1", "-".repeat(deep)),
+            vec!["1"; deep].join(" + "),
+            vec!["2"; deep].join(" * "),
+            vec!["true"; deep].join(" and "),
+            vec!["2"; deep].join(" ^ "),
+            format!("{}1{}", "abs(".repeat(deep), ")".repeat(deep)),
+        ];
+        for text in &refused {
+            match Expr::parse(text) {
+                Err(ExprError::Syntax { message, .. }) => {
+                    assert!(message.contains("nests more than"), "{message}")
+                }
+                other => panic!("{}...: {other:?}", &text[..20]),
+            }
+        }
+        // Ten thousand deep: refused in the parse, not a stack overflow.
+        assert!(Expr::parse(&format!("{}1", "-".repeat(10_000))).is_err());
+        assert!(Expr::parse(&vec!["1"; 10_000].join(" + ")).is_err());
+        // Just inside the limit, every form still evaluates.
+        let inside = MAX_DEPTH - 2;
+        assert_eq!(
+            value(&format!("{}1{}", "(".repeat(inside), ")".repeat(inside))),
+            Value::Number(1.0)
+        );
+        assert_eq!(
+            value(&vec!["1"; inside].join(" + ")),
+            Value::Number(inside as f64)
+        );
+        assert_eq!(
+            value(&format!("{}1", "- ".repeat(inside))),
+            Value::Number(1.0)
+        );
     }
 }

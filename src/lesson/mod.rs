@@ -380,15 +380,26 @@ pub fn parse_text(text: &str, name: &str, source: &str) -> Result<Lesson, Lesson
     parse::parse(text, name, source)
 }
 
-/// A lesson by shipped name, or a file by path (a path wins where both exist).
+/// A shipped lesson by name, or a file by path (a path wins where both exist, unless it is a
+/// folder of a shipped lesson's name). A file is read as records and presets are: devices,
+/// pipes and folders refused, its size bounded, a byte that is not UTF-8 named by line.
 pub fn load(name_or_path: &str) -> Result<Lesson, LessonError> {
+    use crate::io::file::FileError;
     let path = std::path::Path::new(name_or_path);
-    if path.is_file() {
-        let text = std::fs::read_to_string(path).map_err(|e| LessonError {
+    let shipped = EMBEDDED.iter().any(|(n, _)| *n == name_or_path);
+    if path.exists() && !(shipped && path.is_dir()) {
+        let text = crate::io::file::read_text(path).map_err(|e| LessonError {
             file: name_or_path.to_string(),
+            // A byte that is not UTF-8 is placed by line and byte in the message itself.
             line: None,
             field: None,
-            message: format!("cannot read: {e}"),
+            message: match e {
+                FileError::NotRegular => format!(
+                    "not a regular file (a folder, device or pipe); give a lesson file, or a shipped lesson's name ({})",
+                    builtin_names().join(", ")
+                ),
+                _ => e.to_string(),
+            },
         })?;
         let stem = path
             .file_stem()

@@ -12,17 +12,28 @@ type Spanned<T> = toml::Spanned<T>;
 
 /// The text and where errors point.
 struct Doc<'a> {
-    text: &'a str,
     source: &'a str,
+    /// Where each line break is, so a line number is a binary search (a lesson of many steps
+    /// or long lists asks for one at every field).
+    breaks: Vec<usize>,
 }
 
-impl Doc<'_> {
+impl<'a> Doc<'a> {
+    fn new(text: &str, source: &'a str) -> Self {
+        Doc {
+            source,
+            breaks: text
+                .bytes()
+                .enumerate()
+                .filter(|&(_, b)| b == b'\n')
+                .map(|(i, _)| i)
+                .collect(),
+        }
+    }
+
+    /// The line (from 1) of a byte offset.
     fn line(&self, offset: usize) -> usize {
-        self.text.as_bytes()[..offset.min(self.text.len())]
-            .iter()
-            .filter(|&&b| b == b'\n')
-            .count()
-            + 1
+        self.breaks.partition_point(|&b| b < offset) + 1
     }
 
     fn error(&self, line: Option<usize>, field: &str, message: impl Into<String>) -> LessonError {
@@ -216,7 +227,7 @@ const NUMBER: &[&str] = &[
 const TASK: &[&str] = &["goal", "text", "hint", "solution"];
 
 pub(super) fn parse(text: &str, name: &str, source: &str) -> Result<Lesson, LessonError> {
-    let doc = Doc { text, source };
+    let doc = Doc::new(text, source);
     let root = DeTable::parse(text).map_err(|e| {
         doc.error(
             e.span().map(|s| doc.line(s.start)),
@@ -306,10 +317,20 @@ fn expression(
     field: &str,
     vocabulary: &Vocabulary,
 ) -> Result<Expr, LessonError> {
+    // A hostile expression can be megabytes long: the error quotes its start.
+    let quoted = if text.chars().count() > 200 {
+        format!(
+            "{}... ({} characters)",
+            text.chars().take(200).collect::<String>(),
+            text.chars().count()
+        )
+    } else {
+        text.to_string()
+    };
     let expr =
-        Expr::parse(text).map_err(|e| doc.error(Some(line), field, format!("'{text}': {e}")))?;
+        Expr::parse(text).map_err(|e| doc.error(Some(line), field, format!("'{quoted}': {e}")))?;
     expr.check(vocabulary)
-        .map_err(|e| doc.error(Some(line), field, format!("'{text}': {e}")))?;
+        .map_err(|e| doc.error(Some(line), field, format!("'{quoted}': {e}")))?;
     Ok(expr)
 }
 

@@ -42,6 +42,21 @@ pub enum SolveError {
         /// How far the run got [s].
         reached_s: f64,
     },
+    /// A run on one fixed step (a bridge) that needs more steps than its budget, with what
+    /// set the step and the keys that change it.
+    #[error(
+        "step budget exceeded: the run needs {needed} steps of {dt_s:.3e} s, more than solver.max_steps = {max_steps}; {why}"
+    )]
+    StepBudget {
+        /// The budget.
+        max_steps: usize,
+        /// The steps the run needs.
+        needed: usize,
+        /// The step [s].
+        dt_s: f64,
+        /// What set the step, and what to change.
+        why: String,
+    },
     /// An FE run whose mesh and steps would take longer than its work budget.
     #[error(
         "work budget exceeded: fe.segments = {segments} per bar needs about {node_steps:.2e} node updates, more than {max:.0e}; lower fe.segments or shorten solver.window"

@@ -7,6 +7,8 @@ use super::bars::{FieldResources, GpuBar, GpuHistory, GpuUniforms, View};
 use eframe::egui;
 use eframe::egui_wgpu::{self, wgpu};
 
+pub use crate::export::animation::SIDE_RANGE;
+
 /// The texture format of every offscreen target: 8-bit RGBA, no sRGB encoding, so a pixel holds
 /// exactly what the shader wrote (as in the window).
 pub const FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
@@ -17,7 +19,7 @@ pub enum OffscreenError {
     NoAdapter(String),
     #[error("the wgpu adapter gave no device: {0}")]
     Device(String),
-    #[error("pixel size {0}x{1}: each side must be 16 to 8192")]
+    #[error("pixel size {0}x{1}: each side must be {lo} to {hi}", lo = SIDE_RANGE.start(), hi = SIDE_RANGE.end())]
     Size(u32, u32),
     #[error("reading the frame back failed: {0}")]
     Readback(String),
@@ -74,7 +76,7 @@ impl Offscreen {
         queue: wgpu::Queue,
         (w, h): (u32, u32),
     ) -> Result<Self, OffscreenError> {
-        if !(16..=8192).contains(&w) || !(16..=8192).contains(&h) {
+        if !SIDE_RANGE.contains(&w) || !SIDE_RANGE.contains(&h) {
             return Err(OffscreenError::Size(w, h));
         }
         let texture = device.create_texture(&wgpu::TextureDescriptor {

@@ -18,6 +18,8 @@ pub struct Point {
     pub contacts: Option<usize>,
     /// Why this point has no result (a solver error), if so.
     pub error: Option<String>,
+    /// Why a point that solved has no restitution (the bars never met), if so.
+    pub no_restitution: Option<String>,
 }
 
 /// The swept values: linear or geometric, ends included.
@@ -179,14 +181,18 @@ pub fn run(
         let outcome =
             WORKSPACE.with(|ws| summary_with(model, &setups[i].scenario, &mut ws.borrow_mut()));
         match outcome {
+            // Without an impact the velocities are the ones the bars started with: their ratio
+            // is no coefficient of restitution.
             Ok(r) => Point {
                 model: name,
                 value,
                 peak_force_n: r.peak_force_n,
                 contact_duration_s: Some(r.contact_duration_s),
-                restitution: Some(r.restitution),
+                restitution: r.impact.then_some(r.restitution),
                 contacts: Some(r.contacts),
                 error: None,
+                no_restitution: (!r.impact)
+                    .then(|| "no impact: the bars never met in the simulated time".to_string()),
             },
             Err(e) => Point {
                 model: name,
@@ -196,6 +202,7 @@ pub fn run(
                 restitution: None,
                 contacts: None,
                 error: Some(e.to_string()),
+                no_restitution: None,
             },
         }
     })

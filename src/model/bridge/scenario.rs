@@ -371,6 +371,37 @@ impl BridgeScenario {
         h
     }
 
+    /// What sets [`Self::target_step_s`], and the keys that would lengthen it or the run's
+    /// budget: the advice of a step-budget refusal, naming only keys `pounding bridge` takes.
+    pub fn step_advice(&self) -> String {
+        let common = "raise solver.max_steps, or shorten the record (motion.duration)";
+        let round_trip = if self.contact == ContactModel::Sears {
+            self.girders()
+                .iter()
+                .map(|g| g.round_trip_s() / 16.0)
+                .fold(f64::INFINITY, f64::min)
+        } else {
+            f64::INFINITY
+        };
+        let contact = self
+            .contact_scale_s()
+            .map_or(f64::INFINITY, |s| s / self.steps_per_scale());
+        let h = self.target_step_s();
+        if h == round_trip && round_trip < contact.min(self.max_step_s) {
+            format!(
+                "the step is a sixteenth of the shortest girder's wave round trip (span.length, span.youngs_modulus, span.density); lengthen the spans, or {common}"
+            )
+        } else if h == contact && contact < self.max_step_s {
+            format!(
+                "the step resolves the contact's time scale (contact.stiffness, solver.steps_per_scale, solver.tolerance); soften the contact, ask for fewer steps per scale or a looser tolerance, or {common}"
+            )
+        } else {
+            format!(
+                "the step is solver.max_step (a tenth of it under stereomechanics); raise it, or {common}"
+            )
+        }
+    }
+
     /// Checks every value against its range in the settings table; the error names the key.
     pub fn validate(&self) -> Result<(), InputError> {
         setting::SPANS.check_at(0, self.spans as f64)?;
@@ -419,11 +450,20 @@ impl BridgeScenario {
         if lo > 0.0 && hi.is_finite() && hi / lo <= 1e10 {
             return Ok(());
         }
+        // Either stiffness (or a mass) can spread the frame's modes: both keys are named, with
+        // the frame's values, since the one a user changed is not known here.
+        let [pier, bearing] = self.frame_stiffnesses(i);
         Err(InputError::new(
-            setting::PIER_STIFFNESS.key,
             format!(
-                "frame {}: its pier and bearings (with the pier top's and girder's masses) give squared frequencies more than 1e10 apart, so the slower mode is lost to round-off; bring the pier and bearing stiffnesses (and the masses) within a factor of about 1e9 of each other",
-                i + 1
+                "{} and {}",
+                setting::PIER_STIFFNESS.key,
+                setting::BEARING_STIFFNESS.key
+            ),
+            format!(
+                "frame {}: its pier ({} N/m) and bearings ({} N/m), with the pier top's and girder's masses, give squared frequencies more than 1e10 apart, so the slower mode is lost to round-off; bring the pier and bearing stiffnesses (and the masses) within a factor of about 1e9 of each other",
+                i + 1,
+                crate::model::settings::shown(pier),
+                crate::model::settings::shown(bearing),
             ),
         ))
     }

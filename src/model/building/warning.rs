@@ -67,7 +67,8 @@ impl fmt::Display for Warning {
             ),
             Warning::InContactAtEnd { end_s } => write!(
                 f,
-                "the buildings were still in contact at the end of the record (t = {end_s} s)"
+                "the buildings were still in contact at the end of the record (t = {} s)",
+                crate::model::settings::shown(*end_s)
             ),
             Warning::StereoChatter { impacts, exchanges } => write!(
                 f,

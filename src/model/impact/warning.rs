@@ -2,6 +2,7 @@
 //! a test matches the kind of warning, never a phrase; its message is its `Display`.
 
 use crate::model::settings::impact;
+use crate::model::settings::shown;
 use std::fmt;
 
 /// Why a step coarser than the contact's time scale was kept.
@@ -48,7 +49,7 @@ impl fmt::Display for Outside {
             Outside::Stiffness(k) => write!(f, "contact stiffness {k:.3e}"),
             Outside::ApproachVelocity(w) => write!(f, "approach velocity {w:e} m/s"),
             Outside::LengthRatio(r) => write!(f, "length ratio {r:.3e}"),
-            Outside::ZoneScale(s) => write!(f, "zone scale {s}"),
+            Outside::ZoneScale(s) => write!(f, "zone scale {}", shown(*s)),
             Outside::AddedMass { bar, kg, times_own } => write!(
                 f,
                 "bar{bar} added mass {kg:.3e} kg, {times_own:.0} times its own"
@@ -196,7 +197,8 @@ impl fmt::Display for Warning {
                 anagnostopoulos_xi,
             } => write!(
                 f,
-                "Kelvin-Voigt damping ratio {xi:.4} (c = {damping_n_s_m:.4e} N s/m) gives e = {restitution} with a link that cannot pull; Anagnostopoulos' formula, which lets the link pull at the end of contact, would give {anagnostopoulos_xi:.4}"
+                "Kelvin-Voigt damping ratio {xi:.4} (c = {damping_n_s_m:.4e} N s/m) gives e = {} with a link that cannot pull; Anagnostopoulos' formula, which lets the link pull at the end of contact, would give {anagnostopoulos_xi:.4}",
+                shown(*restitution)
             ),
             Warning::Instantaneous => write!(
                 f,
@@ -220,7 +222,8 @@ impl fmt::Display for Warning {
             ),
             Warning::NotApproaching { approach_m_s } => write!(
                 f,
-                "the bars are not approaching (v1 - v2 = {approach_m_s} m/s <= 0): no impact; give bar1.velocity > bar2.velocity"
+                "the bars are not approaching (v1 - v2 = {} m/s <= 0): no impact; give bar1.velocity > bar2.velocity",
+                shown(*approach_m_s)
             ),
             Warning::PaperCreatesEnergy { percent, a_tau } => write!(
                 f,

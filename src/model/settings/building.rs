@@ -142,7 +142,7 @@ pub const YIELD_FORCES: Setting = Setting {
     key: "SIDE.yield_forces",
     label: "yield force",
     unit: "N",
-    help: "storey yield forces F_y, one for every storey or one each (bilinear, bouc-wen)",
+    help: "storey yield forces F_y, one for every storey or one each, or auto (bilinear, bouc-wen)",
     kind: Kind::List {
         range: Range::closed(1e-3, 1e15),
         slider: (1e3, 1e8),
@@ -347,6 +347,10 @@ pub const MOTION_PGA: Setting = Setting {
     default: "0.3",
 };
 
+/// The largest seed: every whole number up to it is held exactly by the f64 a setting's value
+/// travels as, so a seed is run as typed or refused, never rounded.
+pub const MAX_SEED: u64 = (1 << 53) - 1;
+
 pub const MOTION_SEED: Setting = Setting {
     key: "motion.seed",
     label: "seed",
@@ -354,7 +358,7 @@ pub const MOTION_SEED: Setting = Setting {
     help: "synthetic record: random seed",
     kind: Kind::Count {
         min: 0,
-        max: 1 << 53,
+        max: MAX_SEED,
     },
     default: "1940",
 };

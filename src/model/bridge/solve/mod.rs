@@ -1058,10 +1058,11 @@ fn run_publishing(
     let duration = motion.duration_s() + sc.delay_s(sc.length_m()).max(0.0);
     let steps = (duration / h).ceil() as usize;
     if steps > sc.max_steps {
-        return Err(SolveError::Budget {
+        return Err(SolveError::StepBudget {
             max_steps: sc.max_steps,
+            needed: steps,
             dt_s: h,
-            reached_s: 0.0,
+            why: sc.step_advice(),
         });
     }
     let mut run = Run::new(sc, motion, h);
