@@ -1206,7 +1206,9 @@ fn finish(
         .map(|u| {
             format!(
                 "joint {} unseated at {:.3} s: it opened further than the seat length {} m",
-                u.joint, u.time_s, sc.seat_length_m
+                u.joint,
+                u.time_s,
+                crate::model::settings::shown(sc.seat_length_m)
             )
         })
         .collect();
