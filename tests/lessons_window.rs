@@ -152,3 +152,125 @@ fn a_lesson_opened_at_a_step_in_lecture_mode_shows_that_step_and_only_its_unlock
     assert!(h.query_by_label("Building pounding").is_none());
     assert!(h.query_by_label("Load preset").is_none());
 }
+
+/// Every label of a widget that could replace a step's scene or change a setting by a choice:
+/// the scene tabs, the presets' buttons, and every choice the scenes offer.
+fn tempting_labels() -> Vec<String> {
+    use pounding::model::building::{ContactModel, DampingModel, SlabReading};
+    use pounding::model::hysteresis::Hysteresis;
+    use pounding::model::impact::ModelKind;
+    let mut labels: Vec<String> = [
+        "Bar impact",
+        "Wave vs lumped",
+        "Building pounding",
+        "Bridge pounding",
+        "Parameter study",
+        "Load preset",
+        "Reset",
+        "Paper's buildings",
+        "Load",
+    ]
+    .iter()
+    .map(|s| s.to_string())
+    .collect();
+    labels.extend(ContactModel::ALL.iter().map(|m| m.name().to_string()));
+    labels.extend(Hysteresis::ALL.iter().map(|m| m.name().to_string()));
+    labels.extend(DampingModel::ALL.iter().map(|m| m.name().to_string()));
+    labels.extend(SlabReading::ALL.iter().map(|m| m.name().to_string()));
+    labels.extend(ModelKind::ALL.iter().map(|m| m.name().to_string()));
+    labels.sort();
+    labels.dedup();
+    labels
+}
+
+#[test]
+fn every_step_holds_its_scene_and_locked_settings_against_tabs_presets_and_choices() {
+    if common::adapter_or_skip().is_none() {
+        return;
+    }
+    use pounding::model::settings::{BUILDING_SETTINGS, IMPACT_SETTINGS, concrete_keys};
+    let labels = tempting_labels();
+    for name in lesson::builtin_names() {
+        let lesson = lesson::builtin(name).expect("shipped lessons parse");
+        let mut h = window(
+            Launch {
+                lesson: Some(name.to_string()),
+                lesson_step: Some(1),
+                ..Default::default()
+            },
+            egui::vec2(1600.0, 1000.0),
+        );
+        for (k, step) in lesson.steps.iter().enumerate() {
+            let at = format!("{name} step {}", k + 1);
+            h.state_mut().lesson_go_to(k);
+            common::settle(&mut h, &at);
+            if let Some(p) = &step.prediction {
+                answer(&mut h, p, name, k);
+            }
+            let keys = concrete_keys(match step.scene {
+                LessonScene::Buildings => BUILDING_SETTINGS,
+                _ => IMPACT_SETTINGS,
+            });
+            let locked: Vec<(String, Option<String>)> = keys
+                .into_iter()
+                .filter(|key| {
+                    !step
+                        .unlock
+                        .iter()
+                        .any(|u| key == u || key.starts_with(&format!("{u}.")))
+                })
+                .map(|key| {
+                    let v = h.state().lesson_setting(&key);
+                    (key, v)
+                })
+                .collect();
+            for label in &labels {
+                let nodes: Vec<_> = h.query_all_by_label(label).collect();
+                if nodes.is_empty() {
+                    continue;
+                }
+                for node in nodes {
+                    node.click();
+                }
+                h.run_steps(2);
+                assert_eq!(
+                    h.state().scene_kind(),
+                    scene_of(step.scene),
+                    "{at}: '{label}' changed the scene"
+                );
+            }
+            common::settle(&mut h, &format!("{at}: after the clicks"));
+            for (key, before) in &locked {
+                assert_eq!(
+                    &h.state().lesson_setting(key),
+                    before,
+                    "{at}: the locked {key} changed"
+                );
+            }
+            // A scripted change of a locked key is refused by name.
+            if let Some((key, _)) = locked.iter().find(|(_, v)| v.is_some()) {
+                let e = h.state_mut().lesson_set(key, "1").unwrap_err();
+                assert!(e.contains(key) && e.contains("locked"), "{at}: {e}");
+            }
+        }
+    }
+}
+
+#[test]
+fn teacher_notes_show_only_in_teacher_mode() {
+    if common::adapter_or_skip().is_none() {
+        return;
+    }
+    let mut h = window(
+        Launch {
+            lesson: Some("buildings-that-pound".into()),
+            lesson_step: Some(1),
+            ..Default::default()
+        },
+        egui::vec2(1280.0, 900.0),
+    );
+    assert!(h.query_by_label("Teacher notes").is_none());
+    h.state_mut().set_teacher(true);
+    h.run_steps(2);
+    h.get_by_label("Teacher notes");
+}

@@ -51,11 +51,13 @@ fn building_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup
             .on_hover_text("Number of storeys: a floor (lumped mass) above each")
             .id;
         let mut n = b.storeys;
-        if ui
-            .add(egui::DragValue::new(&mut n).range(1..=MAX_STOREYS))
-            .labelled_by(label)
-            .changed()
-        {
+        // A lesson's lock greys every choice as it greys the sliders (lesson_gate holds it).
+        let key = setting::STOREYS.key_of(side);
+        if fields.gate(ui, &key, |ui| {
+            ui.add(egui::DragValue::new(&mut n).range(1..=MAX_STOREYS))
+                .labelled_by(label)
+                .changed()
+        }) {
             for list in [
                 &mut b.masses_kg,
                 &mut b.stiffnesses_n_m,
@@ -90,9 +92,12 @@ fn building_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup
             ui.label(setting::DAMPING.label).on_hover_text(
                 "modal: the ratio in every mode; rayleigh: C = a M + b K with the ratio in modes 1 and 2",
             );
-            for d in DampingModel::ALL {
-                ui.selectable_value(&mut b.damping, d, d.name());
-            }
+            fields.gate(ui, &setting::DAMPING.key_of(side), |ui| {
+                for d in DampingModel::ALL {
+                    ui.selectable_value(&mut b.damping, d, d.name());
+                }
+                false
+            });
         });
     }
 }
@@ -104,9 +109,12 @@ fn yielding_ui(ui: &mut egui::Ui, fields: &mut Fields, side: usize, setup: &mut 
     ui.horizontal(|ui| {
         ui.label(setting::HYSTERESIS.label)
             .on_hover_text(setting::HYSTERESIS.help);
-        for h in Hysteresis::ALL {
-            ui.selectable_value(&mut b.hysteresis, h, h.name());
-        }
+        fields.gate(ui, &setting::HYSTERESIS.key_of(side), |ui| {
+            for h in Hysteresis::ALL {
+                ui.selectable_value(&mut b.hysteresis, h, h.name());
+            }
+            false
+        });
     });
     if !b.yields() {
         return;
@@ -192,9 +200,12 @@ pub fn ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup, pat
 
 fn contact_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup) {
     ui.horizontal_wrapped(|ui| {
-        for m in ContactModel::ALL {
-            ui.selectable_value(&mut setup.scenario.contact, m, m.name());
-        }
+        fields.gate(ui, setting::CONTACT_MODEL.key, |ui| {
+            for m in ContactModel::ALL {
+                ui.selectable_value(&mut setup.scenario.contact, m, m.name());
+            }
+            false
+        });
     });
     // The question is which gap avoids pounding: it lives between 0 and a few centimetres, so
     // the slider is logarithmic from 0.1 mm (typed values go up to the validated maximum).
@@ -214,9 +225,12 @@ fn contact_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup)
     row(ui, fields, &setting::RESTITUTION, 0, setup);
     ui.horizontal(|ui| {
         ui.label(setting::CONTACT_READING.label);
-        for r in SlabReading::ALL {
-            ui.selectable_value(&mut setup.scenario.reading, r, r.name());
-        }
+        fields.gate(ui, setting::CONTACT_READING.key, |ui| {
+            for r in SlabReading::ALL {
+                ui.selectable_value(&mut setup.scenario.reading, r, r.name());
+            }
+            false
+        });
     });
     row(ui, fields, &setting::SLAB_DAMPING, 0, setup);
     row(ui, fields, &setting::MERGE_GAP, 0, setup);

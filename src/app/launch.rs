@@ -49,6 +49,8 @@ pub struct Launch {
     pub lesson_step: Option<usize>,
     /// Start in lecture mode.
     pub lecture: bool,
+    /// Start in teacher mode: a lesson's teacher notes shown (never to a student otherwise).
+    pub teacher: bool,
     /// Move this setting every frame and report how soon its runs land (with
     /// `exit_after_frames`).
     pub drag: Option<super::drag::DragSpec>,

@@ -3,6 +3,7 @@
 //! unlocked, its prediction judged and its task checked on every new result.
 
 use super::impact_scene::ImpactScene;
+use super::lesson_gate::{scene_of, step_opens};
 use super::lesson_player::LessonPlayer;
 use super::visibility::{Lock, Visibility};
 use super::{PoundingApp, SceneKind};
@@ -12,14 +13,6 @@ use eframe::egui::{self, Color32, RichText};
 
 const GOOD: Color32 = Color32::from_rgb(20, 140, 60);
 const BAD: Color32 = Color32::from_rgb(200, 50, 40);
-
-fn scene_of(s: LessonScene) -> SceneKind {
-    match s {
-        LessonScene::Bar => SceneKind::BarImpact,
-        LessonScene::Compare => SceneKind::WaveVsLumped,
-        LessonScene::Buildings => SceneKind::Buildings,
-    }
-}
 
 impl PoundingApp {
     /// Opens a lesson (shipped name or file) at step `step` (from 0).
@@ -35,6 +28,7 @@ impl PoundingApp {
     /// Leaves the lesson: every panel and setting back.
     pub fn close_lesson(&mut self) {
         self.lesson = None;
+        self.lesson_held = None;
         self.apply_visibility();
     }
 
@@ -48,6 +42,7 @@ impl PoundingApp {
         if let Some(p) = &mut self.lesson {
             p.record(&mut self.progress);
             p.go_to(k);
+            p.restore_answer(&self.progress);
         }
     }
 
@@ -56,6 +51,9 @@ impl PoundingApp {
         let Some(p) = &self.lesson else {
             return Err("no lesson is open".into());
         };
+        if !step_opens(p, key) {
+            return Err(format!("{key}: locked in this step"));
+        }
         let v = crate::io::settings::SettingValue::from_cli(value);
         let r = match p.current().scene {
             LessonScene::Bar => self
@@ -99,8 +97,19 @@ impl PoundingApp {
         if !p.loaded {
             p.loaded = true;
             let step = p.current().clone();
+            // The lock holds to the step's scene as loaded, not to the one before it.
+            self.lesson_held = None;
             match SceneSetup::load(step.scene, step.preset.as_deref(), &step.set) {
-                Ok(setup) => self.load_scene(scene_of(step.scene), setup),
+                Ok(setup) => {
+                    // The top bar names the preset the step loaded, not the last one picked.
+                    if let Some(name) = &step.preset {
+                        match step.scene {
+                            LessonScene::Buildings => self.building_preset.clone_from(name),
+                            _ => self.preset_choice.clone_from(name),
+                        }
+                    }
+                    self.load_scene(scene_of(step.scene), setup)
+                }
                 Err(e) => {
                     if let Some(p) = &mut self.lesson {
                         p.load_error = Some(e);
@@ -240,11 +249,22 @@ impl PoundingApp {
             .get(&p.lesson.name)
             .map_or(0, |pr| pr.done(&p.lesson));
         let where_ = format!("step {} of {n} ({done} done)", p.step + 1);
+        let score = progress
+            .0
+            .get(&p.lesson.name)
+            .map(|pr| pr.score(&p.lesson))
+            .unwrap_or(((0, 0), (0, 0)));
         if done == 0 {
             // An empty bar draws its rounded end over the text.
             ui.label(where_);
         } else {
             ui.add(egui::ProgressBar::new(done as f32 / n as f32).text(where_));
+        }
+        let ((right, asked), (met, tasks)) = score;
+        if asked + tasks > 0 {
+            ui.label(format!(
+                "score: {right} of {asked} predictions right at the first try, {met} of {tasks} tasks met"
+            ));
         }
         ui.horizontal(|ui| {
             if ui
@@ -305,25 +325,31 @@ impl PoundingApp {
                 p.hint_shown = true;
             }
         }
-        ui.separator();
-        egui::CollapsingHeader::new("Teacher notes")
-            .id_salt("teacher-notes")
-            .default_open(p.teacher_notes)
-            .show(ui, |ui| {
-                ui.label(format!(
-                    "{} ({} min). Goals:",
-                    p.lesson.audience, p.lesson.duration_min
-                ));
-                for g in &p.lesson.goals {
-                    ui.label(format!("- {g}"));
-                }
-                ui.label(reflow(&p.lesson.teacher_notes));
-            });
+        // The notes answer some of the questions: only a teacher's screen shows them.
+        if self.teacher {
+            ui.separator();
+            egui::CollapsingHeader::new("Teacher notes")
+                .id_salt("teacher-notes")
+                .default_open(true)
+                .show(ui, |ui| {
+                    ui.label(format!(
+                        "{} ({} min). Goals:",
+                        p.lesson.audience, p.lesson.duration_min
+                    ));
+                    for g in &p.lesson.goals {
+                        ui.label(format!("- {g}"));
+                    }
+                    ui.label(reflow(&p.lesson.teacher_notes));
+                });
+        }
         if close {
             self.close_lesson();
         } else if reset {
-            let k = p.step;
-            self.lesson_go_to(k);
+            // As it began: the answer cleared too (Back and Next give a step's answer back).
+            if let Some(p) = &mut self.lesson {
+                p.record(&mut self.progress);
+                p.reset_step();
+            }
         } else if let Some(k) = turn {
             self.lesson_go_to(k);
         }

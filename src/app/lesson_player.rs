@@ -14,15 +14,22 @@ pub const PROGRESS_KEY: &str = "lesson-progress-v1";
 pub struct LessonProgress {
     /// The step last on screen (from 0).
     pub step: usize,
-    /// Steps whose prediction was answered, and whether rightly.
+    /// Steps whose prediction was answered, and whether the first answer was right.
     pub answered: BTreeMap<usize, bool>,
     /// Steps whose task was met.
     pub met: BTreeSet<usize>,
+    /// The furthest step reached (going back does not undo what was done).
+    #[serde(default)]
+    pub furthest: usize,
+    /// Each answered step's first answer, given back when the student returns to it.
+    #[serde(default)]
+    pub answers: BTreeMap<usize, Answer>,
 }
 
 impl LessonProgress {
     /// Steps done: answered where they ask, met where they set a task, seen otherwise.
     pub fn done(&self, lesson: &Lesson) -> usize {
+        let reached = self.furthest.max(self.step);
         lesson
             .steps
             .iter()
@@ -30,9 +37,22 @@ impl LessonProgress {
             .filter(|(k, s)| {
                 let answered = s.prediction.is_none() || self.answered.contains_key(k);
                 let met = s.task.is_none() || self.met.contains(k);
-                answered && met && *k <= self.step
+                answered && met && *k <= reached
             })
             .count()
+    }
+
+    /// The lesson's score: (predictions right at the first try, predictions), (tasks met,
+    /// tasks).
+    pub fn score(&self, lesson: &Lesson) -> ((usize, usize), (usize, usize)) {
+        let predictions = lesson
+            .steps
+            .iter()
+            .filter(|s| s.prediction.is_some())
+            .count();
+        let tasks = lesson.steps.iter().filter(|s| s.task.is_some()).count();
+        let right = self.answered.values().filter(|&&r| r).count();
+        ((right, predictions), (self.met.len(), tasks))
     }
 }
 
@@ -63,7 +83,7 @@ impl Progress {
 }
 
 /// What the student has typed or picked for the step's prediction.
-#[derive(Debug, Clone, Default, PartialEq)]
+#[derive(Debug, Clone, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Answer {
     pub choice: Option<usize>,
     pub number: String,
@@ -86,7 +106,6 @@ pub struct LessonPlayer {
     pub loaded: bool,
     /// The student's answer is waiting for the result to be judged against.
     pub judging: bool,
-    pub teacher_notes: bool,
 }
 
 impl LessonPlayer {
@@ -102,7 +121,6 @@ impl LessonPlayer {
             load_error: None,
             loaded: false,
             judging: false,
-            teacher_notes: false,
         }
     }
 
@@ -114,6 +132,21 @@ impl LessonPlayer {
     pub fn go_to(&mut self, k: usize) {
         self.step = k.min(self.lesson.steps.len().saturating_sub(1));
         self.reset_step();
+    }
+
+    /// Gives back the answer this step was first given (kept in `progress`), judged again
+    /// once the step's result lands: going back does not forget what the student said.
+    pub fn restore_answer(&mut self, progress: &Progress) {
+        let given = progress
+            .0
+            .get(&self.lesson.name)
+            .and_then(|p| p.answers.get(&self.step));
+        if let Some(a) = given
+            && self.current().prediction.is_some()
+        {
+            self.answer = a.clone();
+            self.judging = true;
+        }
     }
 
     /// The step as it was when first shown.
@@ -154,7 +187,9 @@ impl LessonPlayer {
                 let t = self.answer.number.trim();
                 match t.parse::<f64>() {
                     Ok(x) if x.is_finite() => Ok(()),
+                    _ if t.is_empty() && unit.is_empty() => Err("type a number".to_string()),
                     _ if t.is_empty() => Err(format!("type a number (in {unit})")),
+                    _ if unit.is_empty() => Err(format!("'{t}' is not a number: type one")),
                     _ => Err(format!("'{t}' is not a number: type one, in {unit}")),
                 }
             }
@@ -199,12 +234,16 @@ impl LessonPlayer {
         met && !was_met
     }
 
-    /// Records this step's state in the lesson's progress.
+    /// Records this step's state in the lesson's progress; a step's first answer stands.
     pub fn record(&self, progress: &mut Progress) {
         let p = progress.0.entry(self.lesson.name.clone()).or_default();
         p.step = self.step;
+        p.furthest = p.furthest.max(self.step);
         if let Some(Ok(j)) = &self.judged {
-            p.answered.insert(self.step, j.correct);
+            p.answered.entry(self.step).or_insert(j.correct);
+            p.answers
+                .entry(self.step)
+                .or_insert_with(|| self.answer.clone());
         }
         if matches!(self.task, Some(Ok(true))) {
             p.met.insert(self.step);

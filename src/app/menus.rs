@@ -23,71 +23,11 @@ impl PoundingApp {
                 return;
             }
             ui.separator();
-            ui.selectable_value(&mut self.scene, SceneKind::BarImpact, "Bar impact")
-                .on_hover_text("One impact, one model, every readout");
-            ui.selectable_value(&mut self.scene, SceneKind::WaveVsLumped, "Wave vs lumped")
-                .on_hover_text("Sears, wave theory, lumped and FE models overlaid");
-            ui.selectable_value(&mut self.scene, SceneKind::Buildings, "Building pounding")
-                .on_hover_text("Two buildings swaying in an earthquake, with and without pounding");
-            ui.selectable_value(&mut self.scene, SceneKind::Bridge, "Bridge pounding")
-                .on_hover_text(
-                    "Bridge girders pounding at their joints, stress waves in the deck, seats running out",
-                );
-            ui.selectable_value(&mut self.scene, SceneKind::Study, "Parameter study")
-                .on_hover_text(
-                    "One setting swept over a range: peak force, duration and e per model",
-                );
+            // A lesson step decides its scene: the ways of replacing it are closed (the lock
+            // itself is held in lesson_gate, whatever changes the scene).
+            self.scene_tabs(ui);
             ui.separator();
-            if self.scene == SceneKind::Buildings {
-                let mut load = None;
-                if ui
-                    .button("Paper's buildings")
-                    .on_hover_text(
-                        "The paper's Section 4 as published: Table 1 on 8 s of El Centro 1940",
-                    )
-                    .clicked()
-                {
-                    load = Some("paper-buildings".to_string());
-                }
-                let label = ui.label("preset").id;
-                egui::ComboBox::from_id_salt("building-preset")
-                    .selected_text(&self.building_preset)
-                    .show_ui(ui, |ui| {
-                        for (name, text) in EMBEDDED
-                            .iter()
-                            .filter(|(_, t)| preset::scene(t) == "buildings")
-                        {
-                            ui.selectable_value(&mut self.building_preset, name.to_string(), *name)
-                                .on_hover_text(preset::description(text).unwrap_or_default());
-                        }
-                    })
-                    .response
-                    .labelled_by(label);
-                if ui
-                    .button("Load preset")
-                    .on_hover_text("Replace the buildings by the preset's")
-                    .clicked()
-                {
-                    load = Some(self.building_preset.clone());
-                }
-                if let Some(name) = load {
-                    match preset::load_for::<crate::io::building_settings::BuildingSetup>(
-                        &name,
-                        "buildings",
-                    ) {
-                        Ok(s) => {
-                            self.buildings.setup = s;
-                            self.buildings.reset_fields();
-                            self.buildings.request();
-                        }
-                        Err(e) => self.message = Some((e.to_string(), true)),
-                    }
-                }
-            } else if self.scene == SceneKind::Bridge {
-                self.bridge_preset_ui(ui);
-            } else {
-                self.preset_ui(ui);
-            }
+            self.scene_presets(ui);
             ui.separator();
             if ui
                 .button(if self.dark { "Light" } else { "Dark" })
@@ -110,6 +50,107 @@ impl PoundingApp {
                 self.help = !self.help;
             }
         });
+    }
+
+    /// The scene tabs, closed in a lesson.
+    fn scene_tabs(&mut self, ui: &mut egui::Ui) {
+        for (kind, label, about) in [
+            (
+                SceneKind::BarImpact,
+                "Bar impact",
+                "One impact, one model, every readout",
+            ),
+            (
+                SceneKind::WaveVsLumped,
+                "Wave vs lumped",
+                "Sears, wave theory, lumped and FE models overlaid",
+            ),
+            (
+                SceneKind::Buildings,
+                "Building pounding",
+                "Two buildings swaying in an earthquake, with and without pounding",
+            ),
+            (
+                SceneKind::Bridge,
+                "Bridge pounding",
+                "Bridge girders pounding at their joints, stress waves in the deck, seats running out",
+            ),
+            (
+                SceneKind::Study,
+                "Parameter study",
+                "One setting swept over a range: peak force, duration and e per model",
+            ),
+        ] {
+            if self
+                .open_button(ui, egui::Button::selectable(self.scene == kind, label))
+                .on_hover_text(about)
+                .clicked()
+            {
+                self.scene = kind;
+            }
+        }
+    }
+
+    /// A button that replaces the scene: enabled unless a lesson step decides the scene.
+    fn open_button(&self, ui: &mut egui::Ui, button: egui::Button) -> egui::Response {
+        ui.add_enabled(!self.scene_locked(), button)
+            .on_disabled_hover_text(
+                "A lesson step decides its scene and settings: Leave the lesson to explore",
+            )
+    }
+
+    /// The shown scene's presets: pick, load, reset.
+    fn scene_presets(&mut self, ui: &mut egui::Ui) {
+        if self.scene == SceneKind::Buildings {
+            let mut load = None;
+            if self
+                .open_button(ui, egui::Button::new("Paper's buildings"))
+                .on_hover_text(
+                    "The paper's Section 4 as published: Table 1 on 8 s of El Centro 1940",
+                )
+                .clicked()
+            {
+                load = Some("paper-buildings".to_string());
+            }
+            let label = ui.label("preset").id;
+            egui::ComboBox::from_id_salt("building-preset")
+                .selected_text(&self.building_preset)
+                .show_ui(ui, |ui| {
+                    for (name, text) in EMBEDDED
+                        .iter()
+                        .filter(|(_, t)| preset::scene(t) == "buildings")
+                    {
+                        ui.selectable_value(&mut self.building_preset, name.to_string(), *name)
+                            .on_hover_text(preset::description(text).unwrap_or_default());
+                    }
+                })
+                .response
+                .labelled_by(label);
+            if self
+                .open_button(ui, egui::Button::new("Load preset"))
+                .on_hover_text("Replace the buildings by the preset's")
+                .clicked()
+            {
+                load = Some(self.building_preset.clone());
+            }
+            if let Some(name) = load {
+                match preset::load_for::<crate::io::building_settings::BuildingSetup>(
+                    &name,
+                    "buildings",
+                ) {
+                    Ok(s) => {
+                        self.buildings.setup = s;
+                        self.buildings.reset_fields();
+                        self.buildings.request();
+                    }
+                    Err(e) => self.message = Some((e.to_string(), true)),
+                }
+            }
+        } else if self.scene == SceneKind::Bridge {
+            self.bridge_preset_ui(ui);
+        } else {
+            self.preset_ui(ui);
+        }
     }
 
     /// The bridge presets, and loading one into the Bridge pounding scene.
@@ -192,6 +233,18 @@ impl PoundingApp {
             self.set_lecture(ui.ctx(), lecture);
             ui.close();
         }
+        let mut teacher = self.teacher;
+        if ui
+            .checkbox(&mut teacher, "Teacher mode")
+            .on_hover_text(
+                "A lesson's teacher notes: its goals, the model's limits and the usual \
+                 misconceptions (they answer some of the questions: not for a student's screen)",
+            )
+            .changed()
+        {
+            self.teacher = teacher;
+            ui.close();
+        }
         let mut smooth = self.smooth_lines;
         if ui
             .checkbox(&mut smooth, "Smooth lines")
@@ -210,8 +263,14 @@ impl PoundingApp {
 
     fn file_menu(&mut self, ui: &mut egui::Ui) {
         let recorded = matches!(self.scene, SceneKind::Buildings | SceneKind::Bridge);
+        let open = !self.scene_locked();
+        let why = "A lesson step decides its scene and record: Leave the lesson to open another";
         if !recorded {
-            if ui.button("Open scene...").clicked() {
+            if ui
+                .add_enabled(open, egui::Button::new("Open scene..."))
+                .on_disabled_hover_text(why)
+                .clicked()
+            {
                 self.dialogs.ask(dialog::Purpose::OpenScene, &self.path);
                 ui.close();
             }
@@ -219,7 +278,11 @@ impl PoundingApp {
                 self.dialogs.ask(dialog::Purpose::SaveScene, &self.path);
                 ui.close();
             }
-        } else if ui.button("Open ground motion...").clicked() {
+        } else if ui
+            .add_enabled(open, egui::Button::new("Open ground motion..."))
+            .on_disabled_hover_text(why)
+            .clicked()
+        {
             self.dialogs.ask(dialog::Purpose::Motion, "");
             ui.close();
         }
@@ -334,12 +397,12 @@ impl PoundingApp {
             .labelled_by(label);
         // Both buttons load the chosen preset (Reset reads as undoing edits); both are drawn
         // every frame, so neither is skipped when the other is clicked.
-        let load = ui
-            .button("Load preset")
+        let load = self
+            .open_button(ui, egui::Button::new("Load preset"))
             .on_hover_text("Replace the scene's parameters by the preset")
             .clicked();
-        let reset = ui
-            .button("Reset")
+        let reset = self
+            .open_button(ui, egui::Button::new("Reset"))
             .on_hover_text("Back to the preset's values")
             .clicked();
         if load || reset {
@@ -351,7 +414,7 @@ impl PoundingApp {
         ui.add(egui::TextEdit::singleline(&mut self.path).desired_width(140.0))
             .labelled_by(label)
             .on_hover_text("A TOML scene file");
-        if ui.button("Open").clicked() {
+        if self.open_button(ui, egui::Button::new("Open")).clicked() {
             self.open_scene();
         }
         if ui.button("Save").clicked() {

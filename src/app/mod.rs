@@ -27,6 +27,7 @@ mod job_error;
 mod later;
 mod launch;
 mod lecture;
+mod lesson_gate;
 mod lesson_panel;
 pub mod lesson_player;
 mod menus;
@@ -91,9 +92,14 @@ pub struct PoundingApp {
     launch: Launch,
     /// The lesson being played, and every lesson's progress.
     lesson: Option<lesson_player::LessonPlayer>,
+    /// The lesson step's scene as the last frame left it: what its lock holds to.
+    lesson_held: Option<lesson_gate::Held>,
     progress: lesson_player::Progress,
     /// Lecture mode: large, high-contrast, only what the step needs.
     lecture: bool,
+    /// Teacher mode: a lesson's teacher notes (goals, the model's limits, the answers' traps)
+    /// are shown; a student never sees them otherwise.
+    teacher: bool,
     /// Lines anti-aliased (egui's feathering), and whether the user chose it (saved) rather
     /// than the adapter (off on a software renderer, where every line then costs a third of
     /// the triangles: a dragged slider's result shows in 40 ms there instead of 55).
@@ -209,8 +215,10 @@ impl PoundingApp {
             ui_ms: 0.0,
             frames: 0,
             lesson: None,
+            lesson_held: None,
             progress,
             lecture: launch.lecture,
+            teacher: launch.teacher,
             smooth_lines,
             smooth_lines_chosen,
             lesson_path: "lesson.toml".into(),
@@ -272,6 +280,16 @@ impl PoundingApp {
     /// Whether lecture mode is on.
     pub fn lecture(&self) -> bool {
         self.lecture
+    }
+
+    /// Whether teacher mode is on (View > Teacher mode, `--teacher`).
+    pub fn teacher(&self) -> bool {
+        self.teacher
+    }
+
+    /// Turns teacher mode on or off.
+    pub fn set_teacher(&mut self, on: bool) {
+        self.teacher = on;
     }
 
     /// A solve is under way in some scene.
@@ -370,10 +388,17 @@ impl eframe::App for PoundingApp {
         }
         self.study.poll();
         self.drag_frame();
-        if self.scene == SceneKind::Buildings {
+        if self.scene_locked() {
+            if building_scene::dropped_path(&ctx).is_some() {
+                self.message = Some((
+                    "A lesson step decides its record: leave the lesson to open a dropped file"
+                        .into(),
+                    true,
+                ));
+            }
+        } else if self.scene == SceneKind::Buildings {
             self.buildings.take_dropped(&ctx);
-        }
-        if self.scene == SceneKind::Bridge
+        } else if self.scene == SceneKind::Bridge
             && let Some(path) = building_scene::dropped_path(&ctx)
         {
             self.bridge.load_motion(path);
@@ -399,6 +424,9 @@ impl eframe::App for PoundingApp {
             lecture::apply(&ctx, true, self.dark);
         }
         self.lesson_frame();
+        if self.lesson_held.is_none() {
+            self.hold_lesson_scene();
+        }
         self.playback().advance(dt.min(0.1));
         let side = self.panel_frame(egui::Frame::side_top_panel(ui.style()));
         egui::Panel::top("top")
@@ -466,6 +494,7 @@ impl eframe::App for PoundingApp {
                 ctx.send_viewport_cmd(egui::ViewportCommand::Close);
             }
         }
+        self.enforce_lesson_lock();
         // A change held for a run goes now, unless this frame's own change replaced it.
         self.bar.slot.flush();
         self.compare.slot.flush();

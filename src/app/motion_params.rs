@@ -24,30 +24,34 @@ pub fn ui<S: WithMotion>(
             .find(|b| b.name == f)
             .map_or_else(|| "file".to_string(), |b| b.title.to_string()),
     };
+    let file_key = setting::MOTION_FILE.key;
     ui.horizontal(|ui| {
         let label = ui.label("record").id;
-        egui::ComboBox::from_id_salt("motion-record")
-            .selected_text(shown)
-            .show_ui(ui, |ui| {
-                for b in built_in {
+        fields.gate(ui, file_key, |ui| {
+            egui::ComboBox::from_id_salt("motion-record")
+                .selected_text(shown)
+                .show_ui(ui, |ui| {
+                    for b in built_in {
+                        if ui
+                            .selectable_label(m.file.as_deref() == Some(b.name), b.title)
+                            .on_hover_text(b.about)
+                            .clicked()
+                        {
+                            m.file = Some(b.name.to_string());
+                        }
+                    }
                     if ui
-                        .selectable_label(m.file.as_deref() == Some(b.name), b.title)
-                        .on_hover_text(b.about)
+                        .selectable_label(m.file.is_none(), "synthetic (Kanai-Tajimi)")
+                        .on_hover_text("A seeded synthetic record: PGA and seed below")
                         .clicked()
                     {
-                        m.file = Some(b.name.to_string());
+                        m.file = None;
                     }
-                }
-                if ui
-                    .selectable_label(m.file.is_none(), "synthetic (Kanai-Tajimi)")
-                    .on_hover_text("A seeded synthetic record: PGA and seed below")
-                    .clicked()
-                {
-                    m.file = None;
-                }
-            })
-            .response
-            .labelled_by(label);
+                })
+                .response
+                .labelled_by(label);
+            false
+        });
     });
     ui.horizontal(|ui| {
         let label = ui.label("file").id;
@@ -57,9 +61,12 @@ pub fn ui<S: WithMotion>(
                 .desired_width(170.0),
         )
         .labelled_by(label);
-        if ui.button("Load").clicked() && !path.trim().is_empty() {
-            m.file = Some(path.trim().to_string());
-        }
+        fields.gate(ui, file_key, |ui| {
+            if ui.button("Load").clicked() && !path.trim().is_empty() {
+                m.file = Some(path.trim().to_string());
+            }
+            false
+        });
     });
     // A factor of 0 is refused by the entry: the record keeps its last factor.
     fields.setting(ui, registry.entry(&setting::MOTION_SCALE), 0, setup);

@@ -83,6 +83,10 @@ pub struct WindowArgs {
     /// Lecture mode: large, high-contrast, only what the lesson step needs (View > Lecture mode)
     #[arg(long)]
     pub lecture: bool,
+    /// Teacher mode: a lesson's teacher notes shown (View > Teacher mode); never on a
+    /// student's screen otherwise
+    #[arg(long)]
+    pub teacher: bool,
     /// Measure liveness: move one setting of the buildings or bridge scene every frame, as a
     /// dragged slider does (KEY=FROM:TO, e.g. gap=0.01:0.03), and print on closing how soon the
     /// changes' runs were on screen (needs --exit-after-frames)
@@ -125,6 +129,7 @@ fn window(args: &WindowArgs) -> anyhow::Result<()> {
         lesson: args.lesson.clone(),
         lesson_step: args.step,
         lecture: args.lecture,
+        teacher: args.teacher,
         drag,
         ..Default::default()
     })
