@@ -473,3 +473,50 @@ fn the_command_line_lists_checks_and_writes_a_handout() {
     assert!(!student.contains("Teacher notes"));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Two compare steps of the paper's base case: the first shows `first_show`, the second asks
+/// wave theory's e.
+fn ask_after_showing(first_show: &str) -> Result<lesson::CheckReport, lesson::LessonError> {
+    let text = format!(
+        r#"title = "t"
+audience = "a"
+duration_min = 5
+goals = ["g"]
+teacher_notes = "n"
+
+[[step]]
+title = "Five models"
+text = "The base case."
+scene = "compare"
+show = [{first_show}]
+
+[[step]]
+title = "Wave theory's e"
+text = "The same impact."
+scene = "compare"
+show = ["readouts"]
+
+[step.prediction]
+kind = "number"
+question = "What e does wave theory give?"
+unit = ""
+answer = "wave.restitution"
+tolerance = 0.05
+explanation = "L1/L2."
+"#
+    );
+    let l = lesson::parse_text(&text, "t", "t.toml").expect("parses");
+    lesson::check(&l, Control::never())
+}
+
+#[test]
+fn a_prediction_whose_answer_an_earlier_step_shows_fails_the_check() {
+    let e = ask_after_showing("\"force\", \"readouts\"").expect_err("the answer was on screen");
+    assert_eq!(e.field.as_deref(), Some("step[2].prediction"), "{e}");
+    assert!(
+        e.message.contains("wave.restitution = 0.5") && e.message.contains("step 1's readouts"),
+        "{e}"
+    );
+    // Without the table the answer is not on screen before its question.
+    ask_after_showing("\"force\"").unwrap_or_else(|e| panic!("{e}"));
+}

@@ -144,3 +144,34 @@ fn hertz_at_high_velocity_overshoots_the_wave_force() {
     assert!(over > 0.07 && over < 0.08, "overshoot {over}");
     assert!(r.sears.unwrap().a_tau > 1.0 / std::f64::consts::E);
 }
+
+#[test]
+fn the_a_tau_label_never_calls_a_run_that_created_energy_well_behaved() {
+    use pounding::io::preset;
+    use pounding::io::settings::ImpactSetup;
+    use pounding::model::impact::ENERGY_CREATION_TOL;
+    let mut created = 0;
+    for k in [1e8, 1e9, 1.5e9, 2e9, 5e9, 2e10] {
+        let mut s: ImpactSetup = preset::load_for("stiff-linear", "impact").expect("shipped");
+        s.apply_assignment(&format!("contact.stiffness={k:e}"))
+            .unwrap();
+        s.apply_assignment("sears.reading=paper").unwrap();
+        let r = run(ModelKind::Sears, &s.scenario);
+        let d = r.sears.expect("a Sears run");
+        let made = r.energy.balance_error > ENERGY_CREATION_TOL;
+        created += usize::from(made);
+        assert_eq!(
+            d.regime().contains("created energy"),
+            made,
+            "k = {k:e}: a tau {}, balance {:+.3e}, label '{}'",
+            d.a_tau,
+            r.energy.balance_error,
+            d.regime()
+        );
+        if d.a_tau < (-1f64).exp() && made {
+            // The case a lecturer saw: a tau below 1/e and energy created all the same.
+            assert!(!d.regime().contains("well behaved"), "k = {k:e}");
+        }
+    }
+    assert!(created > 0, "the ladder reaches a run that creates energy");
+}

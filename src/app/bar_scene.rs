@@ -331,14 +331,7 @@ fn readouts_ui(
                 ui.label("Sears reading");
                 ui.label(d.reading.name());
                 ui.label("validity a tau");
-                let regime = if d.a_tau < (-1f64).exp() {
-                    "well behaved"
-                } else if d.a_tau < std::f64::consts::FRAC_PI_2 {
-                    "overshoot"
-                } else {
-                    "oscillating"
-                };
-                ui.label(format!("{:.4} ({regime})", d.a_tau));
+                ui.label(format!("{:.4} ({})", d.a_tau, d.regime()));
                 ui.end_row();
                 if d.reading == Reading::Paper && d.creates_energy {
                     ui.colored_label(

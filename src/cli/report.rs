@@ -271,13 +271,7 @@ fn energy_and_sears(s: &mut String, r: &ImpactResult) {
         e.initial_j, e.rigid_body_j, e.vibration_j, e.dissipated_j, e.contact_j, e.balance_error
     );
     if let Some(d) = &r.sears {
-        let regime = if d.a_tau < (-1f64).exp() {
-            "well behaved (< 1/e)"
-        } else if d.a_tau < std::f64::consts::FRAC_PI_2 {
-            "overshoot regime (1/e .. pi/2)"
-        } else {
-            "oscillating regime (> pi/2)"
-        };
+        let regime = d.regime();
         let _ = writeln!(
             s,
             "  Sears               zone d = {:.4e} / {:.4e} m, plane delays {:.4e} / {:.4e} s, a tau = {:.4} {regime}",

@@ -1,9 +1,11 @@
 //! `lesson --check`: every step loaded and solved headless, every expression evaluated.
 
+use super::context::{COMPARE_MODELS, model_prefix};
 use super::expr::Expr;
 use super::solve::solve_step;
-use super::{Context, Lesson, LessonError, Prediction, Step};
+use super::{Context, Lesson, LessonError, LessonScene, Panel, Prediction, Step};
 use crate::model::control::Control;
+use crate::model::settings::{BUILDING_SETTINGS, IMPACT_SETTINGS, concrete_keys};
 
 /// What one step gave.
 #[derive(Debug, Clone, PartialEq)]
@@ -53,20 +55,142 @@ fn truth(
 /// and each task's solution meets a goal not met before it.
 pub fn check(lesson: &Lesson, control: &Control) -> Result<CheckReport, LessonError> {
     let n = lesson.steps.len() as u32;
-    let steps = (0..lesson.steps.len())
-        .map(|i| {
-            // Each step is an equal part of the progress a caller shows.
-            control.stage(i as u32, n);
-            check_step(lesson, i, control)
-        })
-        .collect::<Result<Vec<_>, _>>()?;
+    let mut steps = Vec::with_capacity(lesson.steps.len());
+    let mut seen: Vec<Context> = Vec::with_capacity(lesson.steps.len());
+    for i in 0..lesson.steps.len() {
+        // Each step is an equal part of the progress a caller shows.
+        control.stage(i as u32, n);
+        let (report, ctx) = check_step(lesson, i, control)?;
+        answer_not_shown_before(lesson, i, &ctx, &seen)?;
+        steps.push(report);
+        seen.push(ctx);
+    }
     Ok(CheckReport {
         lesson: lesson.name.clone(),
         steps,
     })
 }
 
-fn check_step(lesson: &Lesson, i: usize, control: &Control) -> Result<StepReport, LessonError> {
+/// The result fields a panel shows as numbers, by scene (a compare scene's table shows each
+/// model's): what a later step must not ask while the same value is already on screen.
+fn shown_by(scene: LessonScene, panel: Panel) -> &'static [&'static str] {
+    match (scene, panel) {
+        (LessonScene::Bar, Panel::Readouts) => &[
+            "peak_force_n",
+            "contact_duration_s",
+            "touching_duration_s",
+            "restitution",
+            "restitution_first_contact",
+            "contacts",
+            "energy.initial_j",
+            "energy.rigid_body_j",
+            "energy.vibration_j",
+            "energy.dissipated_j",
+            "energy_balance_error",
+            "a_tau",
+            "steps",
+            "dt_s",
+        ],
+        (LessonScene::Compare, Panel::Readouts) => {
+            &["peak_force_n", "contact_duration_s", "restitution"]
+        }
+        (LessonScene::Buildings, Panel::Readouts) => &[
+            "impact_count",
+            "contact_count",
+            "max_pounding_force_n",
+            "peak_displacement_left_m",
+            "peak_displacement_right_m",
+            "peak_displacement_left_no_pounding_m",
+            "peak_displacement_right_no_pounding_m",
+        ],
+        (LessonScene::Buildings, Panel::Impacts) => {
+            &["impact_count", "contact_count", "max_pounding_force_n"]
+        }
+        (LessonScene::Buildings, Panel::Gaps) => &[
+            "min_gap_m",
+            "abs_gap_m",
+            "srss_gap_m",
+            "abs_ratio",
+            "srss_ratio",
+        ],
+        _ => &[],
+    }
+}
+
+/// Whether `panel` of a step in `scene` shows the field `name` (a compare model's field under
+/// its prefix too).
+fn shows(scene: LessonScene, panel: Panel, name: &str) -> bool {
+    let fields = shown_by(scene, panel);
+    let bare = match name.split_once('.') {
+        Some((model, field))
+            if scene == LessonScene::Compare
+                && COMPARE_MODELS.iter().any(|m| model_prefix(*m) == model) =>
+        {
+            field
+        }
+        _ => name,
+    };
+    fields.contains(&bare)
+}
+
+/// Refuses a prediction whose answer can be read off an earlier step's screen: every result
+/// field its expressions read (settings are the step's own inputs) is shown, with the value it
+/// has now, by a panel of some earlier step.
+fn answer_not_shown_before(
+    lesson: &Lesson,
+    i: usize,
+    ctx: &Context,
+    seen: &[Context],
+) -> Result<(), LessonError> {
+    let step = &lesson.steps[i];
+    let Some(p) = &step.prediction else {
+        return Ok(());
+    };
+    let table = match step.scene {
+        LessonScene::Buildings => BUILDING_SETTINGS,
+        _ => IMPACT_SETTINGS,
+    };
+    let settings = concrete_keys(table);
+    let mut names: Vec<&str> = match p {
+        Prediction::Choice { when, .. } => when.iter().flat_map(|e| e.names()).collect(),
+        Prediction::Number { answer, .. } => answer.names(),
+    };
+    names.retain(|n| !settings.iter().any(|k| k == n));
+    names.sort_unstable();
+    names.dedup();
+    let shown_where = |name: &str| {
+        let now = ctx.get(name).ok()?;
+        lesson.steps[..i]
+            .iter()
+            .enumerate()
+            .find_map(|(j, earlier)| {
+                earlier.show.iter().find_map(|&panel| {
+                    (shows(earlier.scene, panel, name)
+                        && seen[j].get(name).ok() == Some(now.clone()))
+                    .then(|| format!("{name} = {now} (step {}'s {})", j + 1, panel.name()))
+                })
+            })
+    };
+    let shown: Vec<String> = names.iter().filter_map(|n| shown_where(n)).collect();
+    if names.is_empty() || shown.len() < names.len() {
+        return Ok(());
+    }
+    Err(at(
+        lesson,
+        i,
+        ".prediction",
+        format!(
+            "its answer can be read off an earlier screen: {}; ask before showing it, or leave that panel out",
+            shown.join(", ")
+        ),
+    ))
+}
+
+fn check_step(
+    lesson: &Lesson,
+    i: usize,
+    control: &Control,
+) -> Result<(StepReport, Context), LessonError> {
     let step: &Step = &lesson.steps[i];
     let start = std::time::Instant::now();
     let solved = solve_step(step, &[], control, &lesson.source)?;
@@ -137,12 +261,13 @@ fn check_step(lesson: &Lesson, i: usize, control: &Control) -> Result<StepReport
             after = Some(met);
         }
     }
-    Ok(StepReport {
+    let report = StepReport {
         title: step.title.clone(),
         answer,
         task_met_at_start: before,
         task_met_by_solution: after,
         asserts: step.asserts.len(),
         solve_time_s: start.elapsed().as_secs_f64(),
-    })
+    };
+    Ok((report, ctx))
 }

@@ -269,6 +269,23 @@ pub struct SearsDiagnostics {
     pub creates_energy: bool,
 }
 
+impl SearsDiagnostics {
+    /// How this run's reading behaved, in words every front end shows: the energy check comes
+    /// first (a run that created energy is never called well behaved, whatever its a tau), then
+    /// a tau's regime, which rates the paper reading's delayed planes only.
+    pub fn regime(&self) -> &'static str {
+        match self.reading {
+            Reading::Paper if self.creates_energy => "created energy (see the energy balance)",
+            Reading::Paper if self.a_tau < (-1f64).exp() => "well behaved (< 1/e)",
+            Reading::Paper if self.a_tau < std::f64::consts::FRAC_PI_2 => {
+                "overshoot regime (1/e .. pi/2)"
+            }
+            Reading::Paper => "oscillating regime (> pi/2)",
+            Reading::Collocated | Reading::End => "rates the paper reading, not this one",
+        }
+    }
+}
+
 /// What a solve cost.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct SolveStats {
