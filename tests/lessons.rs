@@ -520,3 +520,77 @@ fn a_prediction_whose_answer_an_earlier_step_shows_fails_the_check() {
     // Without the table the answer is not on screen before its question.
     ask_after_showing("\"force\"").unwrap_or_else(|e| panic!("{e}"));
 }
+
+#[test]
+fn a_handout_is_one_printable_html_page_a_copy_with_every_figure_inlined_and_no_result_before_its_question()
+ {
+    let name = "buildings-that-pound";
+    let dir = std::env::temp_dir().join(format!("pounding-handout-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let o = common::pounding(&[
+        "lesson",
+        name,
+        "--handout",
+        dir.to_str().unwrap(),
+        "--teacher",
+    ]);
+    assert!(o.status.success(), "{}", common::stderr(&o));
+    let pngs: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .filter_map(|e| e.ok())
+        .map(|e| e.file_name().to_string_lossy().to_string())
+        .filter(|n| n.ends_with(".png"))
+        .collect();
+    assert!(!pngs.is_empty());
+    for (file, teacher) in [
+        (format!("{name}.html"), false),
+        (format!("{name}-teacher.html"), true),
+    ] {
+        let html = std::fs::read_to_string(dir.join(&file)).unwrap();
+        let doc = roxmltree::Document::parse_with_options(
+            &html,
+            roxmltree::ParsingOptions {
+                allow_dtd: true,
+                ..Default::default()
+            },
+        )
+        .unwrap_or_else(|e| panic!("{file} does not parse: {e}"));
+        let mut named = vec![];
+        for img in doc.descendants().filter(|n| n.has_tag_name("img")) {
+            let src = img.attribute("src").unwrap_or_default();
+            // The PNG signature, base64-encoded.
+            assert!(
+                src.starts_with("data:image/png;base64,iVBORw0KGgo"),
+                "{file}: {}",
+                &src[..40.min(src.len())]
+            );
+            let title = img.attribute("title").expect("each image names its figure");
+            assert!(
+                pngs.iter().any(|p| p == title),
+                "{file}: {title} is not a figure written"
+            );
+            assert!(!img.attribute("alt").unwrap_or_default().is_empty());
+            named.push(title.to_string());
+        }
+        for p in &pngs {
+            assert!(named.contains(p), "{file} does not embed {p}");
+        }
+        let text: String = doc.descendants().filter_map(|n| n.text()).collect();
+        assert_eq!(text.contains("Answer:"), teacher, "{file}");
+        assert_eq!(text.contains("Teacher notes"), teacher, "{file}");
+    }
+    // In the student's copy a questioning step's figures come after every question.
+    let md = std::fs::read_to_string(dir.join(format!("{name}.md"))).unwrap();
+    let results = md.find("## Results").expect("a results section");
+    let lesson = shipped(name);
+    for (k, step) in lesson.steps.iter().enumerate() {
+        if step.prediction.is_none() && step.task.is_none() {
+            continue;
+        }
+        let figure = format!("![Step {}, ", k + 1);
+        if let Some(at) = md.find(&figure) {
+            assert!(at > results, "step {}'s figure before the results", k + 1);
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

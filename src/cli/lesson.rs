@@ -20,7 +20,7 @@ pub struct LessonArgs {
     /// Write a printable worksheet into DIR: Markdown and the steps' figures as PNG
     #[arg(long, value_name = "DIR")]
     pub handout: Option<PathBuf>,
-    /// With --handout: the teacher's version, with the answers, explanations and notes
+    /// With --handout: the teacher's copy too, with the answers, explanations and notes
     #[arg(long, requires = "handout")]
     pub teacher: bool,
     /// Show no progress bar on standard error (it shows only on a terminal)
@@ -133,10 +133,18 @@ fn handout(
     let h = super::with_control("lesson --handout", quiet, |c| {
         lesson::handout::write(lesson, dir, teacher, c)
     })?;
+    let copies = if teacher {
+        format!(
+            "the student's copy ({name}.md, {name}.html) and the teacher's ({})",
+            h.html.display(),
+            name = lesson.name
+        )
+    } else {
+        format!("{} and {}", h.markdown.display(), h.html.display())
+    };
     writeln!(
         out,
-        "wrote {} and {} figure(s) in {:.2} s",
-        h.markdown.display(),
+        "wrote {copies} with {} figure(s) in {:.2} s",
         h.figures.len(),
         start.elapsed().as_secs_f64()
     )?;

@@ -1,6 +1,9 @@
-//! A printable worksheet: Markdown with each step's text and questions, and the step's figures
-//! rendered headless as PNG with the CPU exporters. The teacher's version adds the answers
-//! (computed from the model), the explanations and the teacher notes.
+//! A printable worksheet: each step's text and questions, and the step's figures rendered
+//! headless as PNG with the CPU exporters, written as Markdown and as one self-contained HTML
+//! page (figures inlined) that prints from any browser. The student's copy keeps the figures of
+//! a step that asks a question until after all the questions, under "Results", so no result
+//! sits under its own question; the teacher's copy adds the answers (computed from the model),
+//! the explanations and the teacher notes, with each figure in its step.
 
 use super::solve::{Solved, solve_step};
 use super::{Lesson, LessonError, Panel, Prediction, Step};
@@ -16,6 +19,8 @@ use std::path::{Path, PathBuf};
 pub struct Handout {
     /// The Markdown file.
     pub markdown: PathBuf,
+    /// The self-contained HTML page.
+    pub html: PathBuf,
     /// The figures, in order.
     pub figures: Vec<PathBuf>,
 }
@@ -32,7 +37,28 @@ fn io_error(dir: &Path, what: String) -> LessonError {
     }
 }
 
-/// Writes `DIR/NAME.md` (or `NAME-teacher.md`) and its figures `DIR/NAME-stepN-PANEL.png`.
+/// One piece of a worksheet, as both formats write it.
+#[derive(Debug, Clone, PartialEq)]
+enum Block {
+    /// A heading of `level` (1: the title).
+    Heading(u8, String),
+    /// A paragraph, with a bold lead (`Predict first.`) if any.
+    Para { lead: Option<String>, text: String },
+    /// Options to tick.
+    Options(Vec<String>),
+    /// A line to write an answer on, with its unit.
+    AnswerLine(String),
+    /// A figure: its file name and caption.
+    Figure { file: String, caption: String },
+    /// What the teacher's copy says under a question: answer, explanation, goal.
+    Solution(Vec<String>),
+    /// A list of items.
+    List(Vec<String>),
+}
+
+/// Writes the student's copy (`DIR/NAME.md`, `DIR/NAME.html`), and with `teacher` the
+/// teacher's copy too (`NAME-teacher.md`, `NAME-teacher.html`): both from one solve of every
+/// step, sharing the figures `DIR/NAME-stepN-PANEL.png`. Returns the last copy written.
 pub fn write(
     lesson: &Lesson,
     dir: &Path,
@@ -41,83 +67,380 @@ pub fn write(
 ) -> Result<Handout, LessonError> {
     std::fs::create_dir_all(dir)
         .map_err(|e| io_error(dir, format!("cannot create the folder: {e}")))?;
-    let mut md = String::new();
-    let _ = writeln!(md, "# {}\n", lesson.title);
-    let _ = writeln!(
-        md,
-        "*{}, about {} minutes.*\n\n## Goals\n",
-        lesson.audience, lesson.duration_min
-    );
-    for g in &lesson.goals {
-        let _ = writeln!(md, "- {g}");
-    }
+    let steps = render_steps(lesson, dir, teacher, control)?;
+    let figures: Vec<PathBuf> = steps
+        .iter()
+        .flat_map(|s| s.figures.iter().map(|(f, _)| dir.join(f)))
+        .collect();
+    let mut last = save(lesson, dir, &student_copy(lesson, &steps), &lesson.name)?;
     if teacher {
-        let _ = writeln!(md, "\n## Teacher notes\n\n{}", lesson.teacher_notes.trim());
+        let name = format!("{}-teacher", lesson.name);
+        last = save(lesson, dir, &teacher_copy(lesson, &steps), &name)?;
     }
-    let mut figures = Vec::new();
+    Ok(Handout { figures, ..last })
+}
+
+/// One step, solved: its text and question, its figures (file, caption), the figures it shares
+/// with an earlier step (said, not drawn twice), and the teacher's solution.
+struct StepBlocks {
+    text: Vec<Block>,
+    figures: Vec<(String, String)>,
+    same_as: Vec<String>,
+    asks: bool,
+    solution: Vec<Block>,
+}
+
+fn render_steps(
+    lesson: &Lesson,
+    dir: &Path,
+    teacher: bool,
+    control: &Control,
+) -> Result<Vec<StepBlocks>, LessonError> {
+    let mut out: Vec<StepBlocks> = Vec::new();
+    let mut drawn: Vec<(Vec<u8>, String)> = Vec::new();
     for (i, step) in lesson.steps.iter().enumerate() {
         control.stage(i as u32, lesson.steps.len() as u32);
         let solved = solve_step(step, &[], control, &lesson.source)?;
-        let _ = writeln!(
-            md,
-            "\n## Step {}: {}\n\n{}\n",
-            i + 1,
-            step.title,
-            step.text.trim()
-        );
-        let own = question(&mut md, step);
+        let mut text = vec![
+            Block::Heading(2, format!("Step {}: {}", i + 1, step.title)),
+            Block::Para {
+                lead: None,
+                text: step.text.trim().to_string(),
+            },
+        ];
+        let asks = question(&mut text, step);
+        let (mut figures, mut same_as) = (vec![], vec![]);
         for panel in &step.show {
             let name = format!("{}-step{}-{}.png", lesson.name, i + 1, panel.name());
             let path = dir.join(&name);
-            if figure(&solved, *panel, &path).map_err(|e| io_error(&path, e))? {
-                let _ = writeln!(md, "![{} ({})]({name})\n", step.title, panel.name());
-                figures.push(path);
+            if !figure(&solved, *panel, &path).map_err(|e| io_error(&path, e))? {
+                continue;
+            }
+            let bytes = std::fs::read(&path).map_err(|e| io_error(&path, e.to_string()))?;
+            let caption = format!("Step {}, {}", i + 1, panel.name());
+            match drawn.iter().find(|(b, _)| *b == bytes) {
+                Some((_, earlier)) => {
+                    let _ = std::fs::remove_file(&path);
+                    same_as.push(format!("{caption}: the same figure as {earlier}."));
+                }
+                None => {
+                    drawn.push((bytes, caption.clone()));
+                    figures.push((name, caption));
+                }
             }
         }
-        if teacher && own {
-            answer(&mut md, step, &solved, &lesson.source)?;
+        let mut solution = vec![];
+        if teacher && asks {
+            solution.push(answer(step, &solved, &lesson.source)?);
         }
+        out.push(StepBlocks {
+            text,
+            figures,
+            same_as,
+            asks,
+            solution,
+        });
     }
-    let file = if teacher {
-        format!("{}-teacher.md", lesson.name)
-    } else {
-        format!("{}.md", lesson.name)
-    };
-    let markdown = dir.join(file);
-    std::fs::write(&markdown, md).map_err(|e| io_error(&markdown, format!("cannot write: {e}")))?;
-    Ok(Handout { markdown, figures })
+    Ok(out)
 }
 
-/// The step's question and task, with room to answer; whether there is anything to answer.
-fn question(md: &mut String, step: &Step) -> bool {
-    if let Some(p) = &step.prediction {
-        let _ = writeln!(md, "**Predict first.** {}\n", p.question());
-        match p {
-            Prediction::Choice { options, .. } => {
+fn head(lesson: &Lesson) -> Vec<Block> {
+    vec![
+        Block::Heading(1, lesson.title.clone()),
+        Block::Para {
+            lead: None,
+            text: format!(
+                "{}, about {} minutes.",
+                lesson.audience, lesson.duration_min
+            ),
+        },
+        Block::Heading(2, "Goals".into()),
+        Block::List(lesson.goals.clone()),
+    ]
+}
+
+fn figure_blocks(s: &StepBlocks) -> Vec<Block> {
+    let mut out: Vec<Block> = s
+        .figures
+        .iter()
+        .map(|(file, caption)| Block::Figure {
+            file: file.clone(),
+            caption: caption.clone(),
+        })
+        .collect();
+    out.extend(s.same_as.iter().map(|t| Block::Para {
+        lead: None,
+        text: t.clone(),
+    }));
+    out
+}
+
+/// The student's copy: questions first; a questioning step's figures wait under "Results".
+fn student_copy(lesson: &Lesson, steps: &[StepBlocks]) -> Vec<Block> {
+    let mut doc = head(lesson);
+    let mut results = vec![];
+    for s in steps {
+        doc.extend(s.text.iter().cloned());
+        if s.asks {
+            results.extend(figure_blocks(s));
+        } else {
+            doc.extend(figure_blocks(s));
+        }
+    }
+    if !results.is_empty() {
+        doc.push(Block::Heading(
+            2,
+            "Results, to look at after answering".into(),
+        ));
+        doc.extend(results);
+    }
+    doc
+}
+
+/// The teacher's copy: the notes, then each step with its figures and its solution.
+fn teacher_copy(lesson: &Lesson, steps: &[StepBlocks]) -> Vec<Block> {
+    let mut doc = head(lesson);
+    doc.push(Block::Heading(2, "Teacher notes".into()));
+    doc.push(Block::Para {
+        lead: None,
+        text: lesson.teacher_notes.trim().to_string(),
+    });
+    for s in steps {
+        doc.extend(s.text.iter().cloned());
+        doc.extend(figure_blocks(s));
+        doc.extend(s.solution.iter().cloned());
+    }
+    doc
+}
+
+/// Writes `NAME.md` and `NAME.html` (figures inlined) of `doc`.
+fn save(lesson: &Lesson, dir: &Path, doc: &[Block], name: &str) -> Result<Handout, LessonError> {
+    let markdown = dir.join(format!("{name}.md"));
+    std::fs::write(&markdown, to_markdown(doc))
+        .map_err(|e| io_error(&markdown, format!("cannot write: {e}")))?;
+    let html = dir.join(format!("{name}.html"));
+    std::fs::write(&html, to_html(&lesson.title, doc, dir)?)
+        .map_err(|e| io_error(&html, format!("cannot write: {e}")))?;
+    Ok(Handout {
+        markdown,
+        html,
+        figures: vec![],
+    })
+}
+
+fn to_markdown(doc: &[Block]) -> String {
+    let mut md = String::new();
+    for b in doc {
+        match b {
+            Block::Heading(level, t) => {
+                let _ = writeln!(md, "{} {t}\n", "#".repeat(usize::from(*level)));
+            }
+            Block::Para {
+                lead: Some(l),
+                text,
+            } => {
+                let _ = writeln!(md, "**{l}** {text}\n");
+            }
+            Block::Para { lead: None, text } => {
+                let _ = writeln!(md, "{text}\n");
+            }
+            Block::Options(options) => {
                 for (k, o) in options.iter().enumerate() {
                     let _ = writeln!(md, "{}. [ ] {o}", k + 1);
                 }
                 md.push('\n');
             }
-            Prediction::Number { unit, .. } => {
+            Block::AnswerLine(unit) => {
                 let _ = writeln!(md, "Your answer: ______________ {unit}\n");
+            }
+            Block::Figure { file, caption } => {
+                let _ = writeln!(md, "![{caption}]({file})\n");
+            }
+            Block::Solution(lines) => {
+                let quoted: Vec<String> = lines
+                    .iter()
+                    .map(|l| format!("> {}", l.replace('\n', "\n> ")))
+                    .collect();
+                let _ = writeln!(md, "{}\n", quoted.join("\n>\n"));
+            }
+            Block::List(items) => {
+                for i in items {
+                    let _ = writeln!(md, "- {i}");
+                }
+                md.push('\n');
             }
         }
     }
+    md
+}
+
+/// Text as HTML: the characters XML reserves escaped.
+fn escape(t: &str) -> String {
+    t.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
+        .replace('\'', "&#39;")
+}
+
+/// Text with `**bold**` and `` `code` `` spans, as HTML.
+fn inline(t: &str) -> String {
+    let mut out = String::new();
+    for (k, part) in escape(t).split("**").enumerate() {
+        let part: String = part
+            .split('`')
+            .enumerate()
+            .map(|(j, p)| {
+                if j % 2 == 1 {
+                    format!("<code>{p}</code>")
+                } else {
+                    p.to_string()
+                }
+            })
+            .collect();
+        if k % 2 == 1 {
+            let _ = write!(out, "<strong>{part}</strong>");
+        } else {
+            out.push_str(&part);
+        }
+    }
+    out
+}
+
+/// A text's paragraphs (blank lines apart) as `<p>`s; single line breaks flow together.
+fn paragraphs(lead: Option<&str>, text: &str) -> String {
+    let mut out = String::new();
+    for (k, p) in text.split("\n\n").enumerate() {
+        let flowed = p.split('\n').map(str::trim).collect::<Vec<_>>().join(" ");
+        let lead = match (k, lead) {
+            (0, Some(l)) => format!("<strong>{}</strong> ", escape(l)),
+            _ => String::new(),
+        };
+        let _ = writeln!(out, "<p>{lead}{}</p>", inline(&flowed));
+    }
+    out
+}
+
+/// A style that reads on screen and prints on A4 or Letter (figures kept whole on a page).
+const STYLE: &str = "body{font-family:sans-serif;max-width:46em;margin:2em auto;line-height:1.45;color:#111}\
+h1{font-size:1.7em}h2{font-size:1.25em;margin-top:1.6em;border-bottom:1px solid #999}\
+figure{margin:1em 0;break-inside:avoid}figure img{width:100%;height:auto;border:1px solid #ccc}\
+figcaption{font-size:.9em;color:#444}.line{border-bottom:1px solid #000;display:inline-block;width:12em}\
+blockquote{border-left:4px solid #0072b2;margin:1em 0;padding:.2em 1em;background:#f3f7fb}\
+ol.options{list-style:none;padding-left:0}ol.options li::before{content:'\\2610  '}\
+@media print{body{margin:0;max-width:none}h2{break-after:avoid}}";
+
+/// A self-contained page: the figures as data URIs, so one file is the whole handout.
+fn to_html(title: &str, doc: &[Block], dir: &Path) -> Result<String, LessonError> {
+    let mut h = String::new();
+    let _ = writeln!(
+        h,
+        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\"/>\n<title>{}</title>\n<style>{STYLE}</style>\n</head>\n<body>",
+        escape(title)
+    );
+    for b in doc {
+        match b {
+            Block::Heading(level, t) => {
+                let _ = writeln!(h, "<h{level}>{}</h{level}>", escape(t));
+            }
+            Block::Para { lead, text } => h.push_str(&paragraphs(lead.as_deref(), text)),
+            Block::Options(options) => {
+                h.push_str("<ol class=\"options\">\n");
+                for o in options {
+                    let _ = writeln!(h, "<li>{}</li>", inline(o));
+                }
+                h.push_str("</ol>\n");
+            }
+            Block::AnswerLine(unit) => {
+                let _ = writeln!(
+                    h,
+                    "<p>Your answer: <span class=\"line\"></span> {}</p>",
+                    escape(unit)
+                );
+            }
+            Block::Figure { file, caption } => {
+                let path = dir.join(file);
+                let bytes = std::fs::read(&path).map_err(|e| io_error(&path, e.to_string()))?;
+                let _ = writeln!(
+                    h,
+                    "<figure><img src=\"data:image/png;base64,{}\" alt=\"{}\" title=\"{}\"/><figcaption>{}</figcaption></figure>",
+                    base64(&bytes),
+                    escape(caption),
+                    escape(file),
+                    escape(caption)
+                );
+            }
+            Block::Solution(lines) => {
+                h.push_str("<blockquote>\n");
+                for l in lines {
+                    h.push_str(&paragraphs(None, l));
+                }
+                h.push_str("</blockquote>\n");
+            }
+            Block::List(items) => {
+                h.push_str("<ul>\n");
+                for i in items {
+                    let _ = writeln!(h, "<li>{}</li>", inline(i));
+                }
+                h.push_str("</ul>\n");
+            }
+        }
+    }
+    h.push_str("</body>\n</html>\n");
+    Ok(h)
+}
+
+/// Standard base64 (RFC 4648, padded): how a figure travels inside the page.
+fn base64(bytes: &[u8]) -> String {
+    const ALPHABET: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    let mut out = String::with_capacity(bytes.len().div_ceil(3) * 4);
+    for chunk in bytes.chunks(3) {
+        let b = [
+            chunk[0],
+            chunk.get(1).copied().unwrap_or(0),
+            chunk.get(2).copied().unwrap_or(0),
+        ];
+        let n = (u32::from(b[0]) << 16) | (u32::from(b[1]) << 8) | u32::from(b[2]);
+        for k in 0..4 {
+            if k <= chunk.len() {
+                out.push(ALPHABET[((n >> (18 - 6 * k)) & 63) as usize] as char);
+            } else {
+                out.push('=');
+            }
+        }
+    }
+    out
+}
+
+/// The step's question and task, with room to answer; whether there is anything to answer.
+fn question(doc: &mut Vec<Block>, step: &Step) -> bool {
+    if let Some(p) = &step.prediction {
+        doc.push(Block::Para {
+            lead: Some("Predict first.".into()),
+            text: p.question().trim().to_string(),
+        });
+        match p {
+            Prediction::Choice { options, .. } => doc.push(Block::Options(options.clone())),
+            Prediction::Number { unit, .. } => doc.push(Block::AnswerLine(unit.clone())),
+        }
+    }
     if let Some(t) = &step.task {
-        let _ = writeln!(
-            md,
-            "**Task.** {}\n\n*Hint:* {}\n",
-            t.text.trim(),
-            t.hint.trim()
-        );
+        doc.push(Block::Para {
+            lead: Some("Task.".into()),
+            text: t.text.trim().to_string(),
+        });
+        doc.push(Block::Para {
+            lead: Some("Hint:".into()),
+            text: t.hint.trim().to_string(),
+        });
     }
     step.prediction.is_some() || step.task.is_some()
 }
 
-/// The teacher's answer block: the model's answer, the explanation, the goal.
-fn answer(md: &mut String, step: &Step, solved: &Solved, file: &str) -> Result<(), LessonError> {
+/// The teacher's solution to a step: the model's answer, the explanation, the goal.
+fn answer(step: &Step, solved: &Solved, file: &str) -> Result<Block, LessonError> {
     let ctx = solved.context();
+    let mut lines = vec![];
     if let Some(p) = &step.prediction {
         let expected = p.expected(&ctx).map_err(|e| LessonError {
             file: file.to_string(),
@@ -131,24 +454,21 @@ fn answer(md: &mut String, step: &Step, solved: &Solved, file: &str) -> Result<(
             }
             Prediction::Choice { .. } => String::new(),
         };
-        let _ = writeln!(
-            md,
-            "> **Answer:** {expected}{tolerance}\n>\n> {}\n",
-            p.explanation().trim().replace('\n', "\n> ")
-        );
+        lines.push(format!("**Answer:** {expected}{tolerance}"));
+        lines.push(p.explanation().trim().to_string());
     }
     if let Some(t) = &step.task {
-        let _ = writeln!(md, "> **Goal checked:** `{}`\n", t.goal);
+        lines.push(format!("**Goal checked:** `{}`", t.goal));
         if !t.solution.is_empty() {
             let s: Vec<String> = t
                 .solution
                 .iter()
                 .map(|(k, v, _)| format!("{k}={v}"))
                 .collect();
-            let _ = writeln!(md, "> **One way:** `{}`\n", s.join(" "));
+            lines.push(format!("**One way:** `{}`", s.join(" ")));
         }
     }
-    Ok(())
+    Ok(Block::Solution(lines))
 }
 
 /// Renders one panel as PNG; `false` for a panel with no printable figure (the animated bars
@@ -282,5 +602,32 @@ fn series(name: &str, t: &[f64], y: &[f64], tx: f64, ty: f64) -> Series {
             .step_by(stride)
             .map(|(a, b)| (a * tx, b * ty))
             .collect(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn base64_matches_the_standards_examples() {
+        // RFC 4648, section 10.
+        for (plain, coded) in [
+            ("", ""),
+            ("f", "Zg=="),
+            ("fo", "Zm8="),
+            ("foo", "Zm9v"),
+            ("foob", "Zm9vYg=="),
+            ("fooba", "Zm9vYmE="),
+            ("foobar", "Zm9vYmFy"),
+        ] {
+            assert_eq!(base64(plain.as_bytes()), coded, "{plain}");
+        }
+    }
+
+    #[test]
+    fn html_text_is_escaped_and_bold_and_code_spans_kept() {
+        assert_eq!(inline("a < b & **c**"), "a &lt; b &amp; <strong>c</strong>");
+        assert_eq!(inline("`k=1`"), "<code>k=1</code>");
     }
 }
