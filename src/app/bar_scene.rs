@@ -320,9 +320,13 @@ fn readouts_ui(
             ui.end_row();
             let e = &r.energy;
             ui.label("energy");
+            let j = |x: f64| crate::model::settings::engineering(x, "J");
             ui.label(format!(
-                "rigid {:.3e} J, vibration {:.3e} J, dissipated {:.3e} J of {:.3e} J",
-                e.rigid_body_j, e.vibration_j, e.dissipated_j, e.initial_j
+                "rigid {}, vibration {}, dissipated {} of {}",
+                j(e.rigid_body_j),
+                j(e.vibration_j),
+                j(e.dissipated_j),
+                j(e.initial_j)
             ));
             ui.label("energy balance");
             ui.label(format!("{:+.2e}", e.balance_error));
@@ -343,9 +347,9 @@ fn readouts_ui(
             }
             ui.label("solve");
             ui.label(format!(
-                "{} steps of {:.3e} s, {}",
+                "{} steps of {}, {}",
                 r.stats.steps,
-                r.stats.dt_s,
+                crate::model::settings::engineering(r.stats.dt_s, "s"),
                 super::ms(solve_time.as_secs_f64(), 3)
             ));
             ui.label("error estimate").on_hover_text("Step doubling: the same impact with twice the step (half the mesh for FE), Richardson's |q(h) - q(2h)| / 3");

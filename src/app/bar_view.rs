@@ -172,7 +172,10 @@ fn stress_legend(painter: &egui::Painter, rect: Rect, stress_scale_pa: f64, text
     painter.text(
         Pos2::new(legend.left(), legend.bottom() + 2.0),
         egui::Align2::LEFT_TOP,
-        format!("compression  {:.3e} Pa  tension", stress_scale_pa),
+        format!(
+            "compression  {}  tension",
+            crate::model::settings::engineering(stress_scale_pa, "Pa")
+        ),
         egui::FontId::proportional(11.0),
         text,
     );

@@ -102,7 +102,11 @@ impl CompareScene {
             match result {
                 Ok(r) => runs.push((model, Solved::new(self.core.setup, r))),
                 Err(e) => {
-                    self.slot.error = Some(format!("{}: {e}", model.name()));
+                    // A compared model the setup does not suit (lumped Hertz on a flat end)
+                    // is left out and said quietly; only a failed run is an error.
+                    if !matches!(e, SolveError::Input(_)) || model == LEAD {
+                        self.slot.error = Some(format!("{}: {e}", model.name()));
+                    }
                     failed.push((model, e.to_string()));
                 }
             }
@@ -153,6 +157,11 @@ impl CompareScene {
     pub fn main_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
         if let Some(e) = &self.slot.error {
             ui.colored_label(Color32::from_rgb(220, 60, 50), e);
+        }
+        for (m, why) in &self.failed {
+            if !matches!(self.slot.error.as_deref(), Some(e) if e.starts_with(m.name())) {
+                ui.weak(format!("{} is left out here: {why}", m.name()));
+            }
         }
         if self.lead().is_none() {
             ui.label("solving...");
@@ -366,4 +375,14 @@ fn compare_table(ui: &mut egui::Ui, peers: &[(ModelKind, Solved)]) {
                 ui.end_row();
             }
         });
+    // Each model's own warnings (an FE mesh too coarse for a stiff contact, say): a number in
+    // the table is read with what its model says about it.
+    for (m, s) in peers {
+        for w in &s.result.warnings {
+            ui.colored_label(
+                Color32::from_rgb(220, 140, 40),
+                format!("{}: {w}", m.name()),
+            );
+        }
+    }
 }

@@ -301,11 +301,11 @@ impl XtDiagram<'_> {
         if (0.0..=length).contains(&d) {
             let (stress, velocity) = self.read(i, d, t);
             response.clone().on_hover_text_at_pointer(format!(
-                "bar {}: x = {:.4} m from the contact, t = {:.4} ms\nstress {:+.4e} Pa, velocity {:+.4} m/s",
+                "bar {}: x = {:.4} m from the contact, t = {:.4} ms\nstress {}, velocity {:+.4} m/s",
                 i + 1,
                 d,
                 t * 1e3,
-                stress,
+                crate::model::settings::engineering(stress, "Pa"),
                 velocity
             ));
         }

@@ -122,6 +122,45 @@ pub fn shown(x: f64) -> String {
     }
 }
 
+/// A quantity as an engineer writes it: three significant figures with an SI prefix (30.1 J,
+/// 1.59 MN, 7.73 ms, 0 Pa), no exponent and no negative zero.
+pub fn engineering(x: f64, unit: &str) -> String {
+    const PREFIXES: [(i32, &str); 9] = [
+        (-12, "p"),
+        (-9, "n"),
+        (-6, "u"),
+        (-3, "m"),
+        (0, ""),
+        (3, "k"),
+        (6, "M"),
+        (9, "G"),
+        (12, "T"),
+    ];
+    if !x.is_finite() {
+        return format!("{x} {unit}");
+    }
+    // Rounded to three figures first, so 999.96 reads 1.00 k, not 1000.
+    let rounded = if x == 0.0 {
+        0.0
+    } else {
+        let digits = 2 - x.abs().log10().floor() as i32;
+        let f = 10f64.powi(digits);
+        (x * f).round() / f
+    };
+    if rounded == 0.0 {
+        return format!("0 {unit}");
+    }
+    let power = (rounded.abs().log10() / 3.0).floor() as i32 * 3;
+    let (p, prefix) = PREFIXES
+        .iter()
+        .copied()
+        .min_by_key(|(p, _)| (p - power).abs())
+        .expect("prefixes");
+    let m = rounded / 10f64.powi(p);
+    let decimals = (2 - m.abs().log10().floor() as i32).max(0) as usize;
+    format!("{m:.decimals$} {prefix}{unit}")
+}
+
 impl fmt::Display for Range {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let num = shown;
@@ -438,6 +477,22 @@ pub(crate) const fn number_or(
 
 #[cfg(test)]
 mod tests {
+
+    #[test]
+    fn engineering_numbers_read_as_an_engineer_writes_them() {
+        for (x, unit, want) in [
+            (30.13, "J", "30.1 J"),
+            (-0.0, "Pa", "0 Pa"),
+            (1.5944e5, "N", "159 kN"),
+            (7.7337e-3, "s", "7.73 ms"),
+            (999.96, "N", "1.00 kN"),
+            (2.1e11, "Pa", "210 GPa"),
+            (-20.301e6, "Pa", "-20.3 MPa"),
+        ] {
+            assert_eq!(engineering(x, unit), want, "{x} {unit}");
+        }
+    }
+
     use super::*;
 
     #[test]
