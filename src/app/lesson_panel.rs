@@ -32,6 +32,32 @@ impl PoundingApp {
         self.apply_visibility();
     }
 
+    /// Writes `<export prefix>-lesson-results.csv` and `.json`; the message to show, and
+    /// whether it is an error.
+    pub fn export_lesson_results(&mut self) -> (String, bool) {
+        if let Some(p) = &self.lesson {
+            p.record(&mut self.progress);
+        }
+        let rows = super::lesson_player::results(&self.progress, |n| lesson::load(n).ok());
+        let stem = format!("{}-lesson-results", self.exporter.prefix);
+        let json = serde_json::to_string_pretty(&rows).unwrap_or_default();
+        let written = std::fs::write(
+            format!("{stem}.csv"),
+            super::lesson_player::results_csv(&rows),
+        )
+        .and_then(|_| std::fs::write(format!("{stem}.json"), json));
+        match written {
+            Ok(()) => (
+                format!("wrote {stem}.csv and {stem}.json ({} rows)", rows.len()),
+                false,
+            ),
+            Err(e) => (
+                format!("lesson results: cannot write {stem}.csv: {e}"),
+                true,
+            ),
+        }
+    }
+
     /// The lesson on screen, if any.
     pub fn lesson_player(&self) -> Option<&LessonPlayer> {
         self.lesson.as_ref()

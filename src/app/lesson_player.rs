@@ -24,6 +24,9 @@ pub struct LessonProgress {
     /// Each answered step's first answer, given back when the student returns to it.
     #[serde(default)]
     pub answers: BTreeMap<usize, Answer>,
+    /// When each step was first answered or its task first met [s since 1970, UTC].
+    #[serde(default)]
+    pub at_s: BTreeMap<usize, u64>,
 }
 
 impl LessonProgress {
@@ -239,21 +242,185 @@ impl LessonPlayer {
         let p = progress.0.entry(self.lesson.name.clone()).or_default();
         p.step = self.step;
         p.furthest = p.furthest.max(self.step);
+        let now = || {
+            std::time::SystemTime::now()
+                .duration_since(std::time::UNIX_EPOCH)
+                .map_or(0, |d| d.as_secs())
+        };
         if let Some(Ok(j)) = &self.judged {
             p.answered.entry(self.step).or_insert(j.correct);
             p.answers
                 .entry(self.step)
                 .or_insert_with(|| self.answer.clone());
+            p.at_s.entry(self.step).or_insert_with(now);
         }
         if matches!(self.task, Some(Ok(true))) {
             p.met.insert(self.step);
+            p.at_s.entry(self.step).or_insert_with(now);
         }
     }
+}
+
+/// One row of a class's lesson results: a step's prediction or task, as a teacher collects it.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct ResultRow {
+    pub lesson: String,
+    /// From 1, as the window shows it.
+    pub step: usize,
+    pub title: String,
+    /// `prediction` or `task`.
+    pub kind: &'static str,
+    /// The student's first answer (the option's text, or the number typed), or `met`.
+    pub answer: String,
+    /// Whether the first answer was right, or the task met.
+    pub right: bool,
+    /// When, in UTC (ISO 8601).
+    pub time_utc: String,
+}
+
+/// Every answered prediction and met task of every lesson in `progress`, in lesson and step
+/// order (lessons that cannot be loaded any more are left out).
+pub fn results(progress: &Progress, load: impl Fn(&str) -> Option<Lesson>) -> Vec<ResultRow> {
+    let mut rows = vec![];
+    for (name, p) in &progress.0 {
+        let Some(lesson) = load(name) else { continue };
+        for (k, step) in lesson.steps.iter().enumerate() {
+            let time_utc = p.at_s.get(&k).map_or_else(String::new, |&t| utc(t));
+            if let Some(&right) = p.answered.get(&k) {
+                let given = p.answers.get(&k).cloned().unwrap_or_default();
+                let answer = match (&step.prediction, given.choice) {
+                    (Some(Prediction::Choice { options, .. }), Some(c)) => {
+                        options.get(c).cloned().unwrap_or_default()
+                    }
+                    _ => given.number,
+                };
+                rows.push(ResultRow {
+                    lesson: name.clone(),
+                    step: k + 1,
+                    title: step.title.clone(),
+                    kind: "prediction",
+                    answer,
+                    right,
+                    time_utc: time_utc.clone(),
+                });
+            }
+            if step.task.is_some() && p.met.contains(&k) {
+                rows.push(ResultRow {
+                    lesson: name.clone(),
+                    step: k + 1,
+                    title: step.title.clone(),
+                    kind: "task",
+                    answer: "met".into(),
+                    right: true,
+                    time_utc,
+                });
+            }
+        }
+    }
+    rows
+}
+
+/// The rows as CSV, one a line under a header; text quoted where it holds a comma or a quote.
+pub fn results_csv(rows: &[ResultRow]) -> String {
+    let q = |t: &str| {
+        if t.contains([',', '"', '\n']) {
+            format!("\"{}\"", t.replace('"', "\"\""))
+        } else {
+            t.to_string()
+        }
+    };
+    let mut out = String::from("lesson,step,title,kind,answer,right,time_utc\n");
+    for r in rows {
+        out.push_str(&format!(
+            "{},{},{},{},{},{},{}\n",
+            q(&r.lesson),
+            r.step,
+            q(&r.title),
+            r.kind,
+            q(&r.answer),
+            r.right,
+            r.time_utc
+        ));
+    }
+    out
+}
+
+/// Seconds since 1970 as an ISO 8601 UTC time (the civil calendar from days since the epoch).
+fn utc(t: u64) -> String {
+    let (days, secs) = ((t / 86_400) as i64, t % 86_400);
+    // Howard Hinnant's days-to-civil algorithm.
+    let z = days + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z.rem_euclid(146_097);
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let d = doy - (153 * mp + 2) / 5 + 1;
+    let m = if mp < 10 { mp + 3 } else { mp - 9 };
+    let y = yoe + era * 400 + i64::from(m <= 2);
+    format!(
+        "{y:04}-{m:02}-{d:02}T{:02}:{:02}:{:02}Z",
+        secs / 3600,
+        secs % 3600 / 60,
+        secs % 60
+    )
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn utc_times_match_known_dates() {
+        assert_eq!(utc(0), "1970-01-01T00:00:00Z");
+        assert_eq!(utc(951_782_400), "2000-02-29T00:00:00Z");
+        assert_eq!(utc(1_795_810_245), "2026-11-27T20:10:45Z");
+    }
+
+    #[test]
+    fn lesson_results_list_first_answers_and_met_tasks_as_csv_and_json() {
+        let lesson = crate::lesson::builtin("lumped-or-wave").expect("shipped");
+        let k = lesson
+            .steps
+            .iter()
+            .position(|s| matches!(s.prediction, Some(Prediction::Choice { .. })))
+            .expect("a choice");
+        let t = lesson
+            .steps
+            .iter()
+            .position(|s| s.task.is_some())
+            .expect("a task");
+        let mut progress = Progress::default();
+        let p = progress.0.entry("lumped-or-wave".into()).or_default();
+        p.answered.insert(k, false);
+        p.answers.insert(
+            k,
+            Answer {
+                choice: Some(1),
+                number: String::new(),
+            },
+        );
+        p.at_s.insert(k, 0);
+        p.met.insert(t);
+        let rows = results(&progress, |n| crate::lesson::builtin(n).ok());
+        let Some(Prediction::Choice { options, .. }) = &lesson.steps[k].prediction else {
+            unreachable!()
+        };
+        assert_eq!(rows[0].step, k + 1);
+        assert_eq!(rows[0].answer, options[1]);
+        assert!(!rows[0].right);
+        assert_eq!(rows[0].time_utc, "1970-01-01T00:00:00Z");
+        assert!(
+            rows.iter()
+                .any(|r| r.kind == "task" && r.step == t + 1 && r.right)
+        );
+        let csv = results_csv(&rows);
+        assert!(csv.starts_with("lesson,step,title,kind,answer,right,time_utc\n"));
+        assert_eq!(csv.lines().count(), rows.len() + 1);
+        let json: serde_json::Value =
+            serde_json::from_str(&serde_json::to_string(&rows).unwrap()).unwrap();
+        assert_eq!(json[0]["lesson"], "lumped-or-wave");
+    }
 
     #[test]
     fn progress_survives_its_stored_form_and_a_bad_store_starts_afresh() {

@@ -357,6 +357,17 @@ impl PoundingApp {
             ui.close();
         }
         ui.menu_button("Export animation", |ui| self.animation_menu(ui));
+        if ui
+            .button("Export lesson results (CSV, JSON)")
+            .on_hover_text(
+                "Every lesson's answered predictions (first answer, right or not, when) and met \
+                 tasks, for a teacher to collect",
+            )
+            .clicked()
+        {
+            self.message = Some(self.export_lesson_results());
+            ui.close();
+        }
     }
 
     /// File > Export animation: the shown run (an impact or the buildings) as a GIF or APNG.
