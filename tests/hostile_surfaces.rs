@@ -453,3 +453,45 @@ fn tiny_numbers_print_in_exponent_form_and_a_preset_is_named_once() {
     assert!(e.contains("preset paper-base"), "{e}");
     assert!(!e.contains("preset preset"), "{e}");
 }
+
+#[test]
+fn an_animations_time_range_is_refused_outside_the_run_or_past_its_impacts() {
+    let e = refused(&[
+        "buildings",
+        "--animate",
+        "a.gif",
+        "--animate-around",
+        "99",
+        "--set",
+        "motion.duration=1",
+    ]);
+    assert!(
+        e.contains("--animate-around") && e.contains("from 1 to"),
+        "{e}"
+    );
+    let e = refused(&[
+        "impact",
+        "--animate",
+        "a.gif",
+        "--animate-from",
+        "0.5",
+        "--animate-to",
+        "0.1",
+    ]);
+    assert!(
+        e.contains("--animate-from") && e.contains("outside the run"),
+        "{e}"
+    );
+    let e = refused(&["impact", "--animate-from", "0.001"]);
+    assert!(e.contains("--animate <FILE>"), "{e}");
+    let e = refused(&[
+        "buildings",
+        "--animate",
+        "a.gif",
+        "--animate-around",
+        "strongest",
+        "--animate-from",
+        "1",
+    ]);
+    assert!(e.contains("cannot be used with"), "{e}");
+}

@@ -26,6 +26,10 @@ pub struct BuildingArgs {
     /// The animation's drift exaggeration (1 to 500; the ground is drawn to scale)
     #[arg(long, value_name = "X", default_value_t = 20.0, requires = "animate", allow_hyphen_values = true, value_parser = parse_drift)]
     pub animate_drift: f64,
+    /// Slow motion around one impact: `strongest`, or its number K from 1 (the frames span
+    /// twice its duration before and after it)
+    #[arg(long, value_name = "strongest|K", requires = "animate", conflicts_with_all = ["animate_from", "animate_to"])]
+    pub animate_around: Option<String>,
 }
 
 fn parse_drift(text: &str) -> Result<f64, String> {
@@ -73,11 +77,14 @@ fn write_animation(
     if a.animate.is_none() {
         return Ok(());
     }
-    let title = format!(
-        "Two buildings: {} contact, {}",
-        result.contact.name(),
-        motion.name
-    );
+    // A slide's title: the record's name without the note of where it came from.
+    let record = motion
+        .name
+        .split(" [")
+        .next()
+        .unwrap_or(&motion.name)
+        .trim();
+    let title = format!("Two buildings: {} contact, {record}", result.contact.name());
     let mut animation = pounding::render::animate_buildings::BuildingAnimation::new(
         setup.clone(),
         motion.clone(),
@@ -87,10 +94,47 @@ fn write_animation(
         a.animate_frames,
     );
     animation.exaggeration = args.animate_drift;
+    let end = animation.t_range.1;
+    let default = match &args.animate_around {
+        None => animation.t_range,
+        Some(which) => around(result, which, end)?,
+    };
+    animation.t_range = a.range(default, end)?;
     a.write(
         args.common.json || args.common.quiet,
         |target, path, progress| animation.write(target, path, a.animate_fps, progress),
     )
+}
+
+/// The frames' range around one impact (`strongest`, or K from 1): twice its duration before
+/// and after it, at least 20 ms a side, within the run.
+fn around(
+    result: &pounding::model::building::BuildingResult,
+    which: &str,
+    end: f64,
+) -> anyhow::Result<(f64, f64)> {
+    let n = result.impacts.len();
+    if n == 0 {
+        anyhow::bail!("--animate-around: the run has no impact to show");
+    }
+    let k = match which.trim() {
+        "strongest" => result
+            .impacts
+            .iter()
+            .enumerate()
+            .max_by(|a, b| a.1.peak_force_n.total_cmp(&b.1.peak_force_n))
+            .map(|(k, _)| k)
+            .unwrap_or(0),
+        text => match text.parse::<usize>() {
+            Ok(k) if (1..=n).contains(&k) => k - 1,
+            _ => anyhow::bail!(
+                "--animate-around: '{text}': expected strongest or an impact's number from 1 to {n}"
+            ),
+        },
+    };
+    let i = &result.impacts[k];
+    let pad = (2.0 * (i.end_s - i.start_s)).max(0.02);
+    Ok(((i.start_s - pad).max(0.0), (i.end_s + pad).min(end)))
 }
 
 #[cfg(not(feature = "gui"))]

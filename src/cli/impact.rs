@@ -54,12 +54,34 @@ pub struct AnimateArgs {
     /// Frames per second (1 to 50)
     #[arg(long, value_name = "F", default_value_t = 30.0, requires = "animate", allow_hyphen_values = true, value_parser = parse_fps)]
     pub animate_fps: f64,
+    /// The animation's first frame at this time [s] (default: the run's start)
+    #[arg(long, value_name = "S", requires = "animate", allow_hyphen_values = true, value_parser = parse_time)]
+    pub animate_from: Option<f64>,
+    /// The animation's last frame at this time [s] (default: the run's end)
+    #[arg(long, value_name = "S", requires = "animate", allow_hyphen_values = true, value_parser = parse_time)]
+    pub animate_to: Option<f64>,
     /// The animation's pixel size, WIDTHxHEIGHT, each 16 to 8192
     #[arg(long, value_name = "WxH", default_value = "1280x720", requires = "animate", allow_hyphen_values = true, value_parser = parse_animate_size)]
     pub animate_size: (u32, u32),
 }
 
 impl AnimateArgs {
+    /// The frames' time range within a run of `0..=end` seconds: `--animate-from` and
+    /// `--animate-to` where given (checked against the run), else `default`.
+    pub fn range(&self, default: (f64, f64), end: f64) -> anyhow::Result<(f64, f64)> {
+        let from = self.animate_from.unwrap_or(default.0);
+        let to = self.animate_to.unwrap_or(default.1);
+        for (flag, t) in [("--animate-from", from), ("--animate-to", to)] {
+            if !(0.0..=end).contains(&t) {
+                anyhow::bail!("{flag}: {t} s is outside the run, 0 to {end:.4} s");
+            }
+        }
+        if to <= from {
+            anyhow::bail!("--animate-to: {to} s is not after --animate-from ({from} s)");
+        }
+        Ok((from, to))
+    }
+
     /// Checks the frame count and rate before a solve is spent on them.
     pub fn check(&self) -> anyhow::Result<()> {
         if let Some(path) = &self.animate {
@@ -115,6 +137,10 @@ impl AnimateArgs {
 }
 
 /// NXxNT, each 2 to 20000, at most 4e7 points in all.
+fn parse_time(text: &str) -> Result<f64, String> {
+    super::parse_number_in(text, 0.0, 1e6)
+}
+
 fn parse_frames(text: &str) -> Result<usize, String> {
     use pounding::export::animation::FRAMES_RANGE;
     super::parse_whole_in(text, *FRAMES_RANGE.start(), *FRAMES_RANGE.end())
@@ -256,7 +282,7 @@ fn write_animation(
         AnimView::Both => "stress waves and their x-t diagram",
     };
     let title = format!("{} ({preset_name}): {shown}", setup.model.name());
-    let animation = pounding::render::animate::ImpactAnimation::new(
+    let mut animation = pounding::render::animate::ImpactAnimation::new(
         &setup.scenario,
         r,
         title,
@@ -264,6 +290,7 @@ fn write_animation(
         a.animate_size,
         a.animate_frames,
     );
+    animation.t_range = a.range(animation.t_range, animation.t_range.1)?;
     a.write(
         args.common.json || args.common.quiet,
         |target, path, progress| animation.write(target, path, a.animate_fps, progress),

@@ -106,6 +106,9 @@ fn shown_by(scene: LessonScene, panel: Panel) -> &'static [&'static str] {
         (LessonScene::Buildings, Panel::Impacts) => {
             &["impact_count", "contact_count", "max_pounding_force_n"]
         }
+        (LessonScene::Buildings, Panel::Hysteresis) => {
+            &["ductility_demand_left", "ductility_demand_right"]
+        }
         (LessonScene::Buildings, Panel::Gaps) => &[
             "min_gap_m",
             "abs_gap_m",

@@ -138,6 +138,42 @@ pub const BUILDING_FIELDS: &[(&str, &str)] = &[
         "peak_displacement_right_no_pounding_m",
         "the same without contact [m]",
     ),
+    (
+        "ductility_demand_left",
+        "left building's largest storey ductility demand (peak drift / yield drift)",
+    ),
+    (
+        "ductility_demand_right",
+        "right building's largest storey ductility demand",
+    ),
+    (
+        "ductility_demand_left_no_pounding",
+        "the same without contact",
+    ),
+    (
+        "ductility_demand_right_no_pounding",
+        "the same without contact",
+    ),
+    (
+        "residual_drift_left_m",
+        "left building's largest storey drift left at the end, in size [m]",
+    ),
+    (
+        "residual_drift_right_m",
+        "right building's largest storey drift left at the end, in size [m]",
+    ),
+    (
+        "residual_drift_left_no_pounding_m",
+        "the same without contact [m]",
+    ),
+    (
+        "residual_drift_right_no_pounding_m",
+        "the same without contact [m]",
+    ),
+    (
+        "energy_hysteretic_j",
+        "energy the yielding storeys dissipated [J]",
+    ),
     ("period_left_s", "left building's first period [s]"),
     ("period_right_s", "right building's first period [s]"),
     ("energy_input_j", "work of the ground on the buildings [J]"),
@@ -418,6 +454,8 @@ impl Context {
                 ctx.number(format!("period_{side}_s"), *t);
             }
         }
+        ctx.yielding(r, "");
+        ctx.number("energy_hysteretic_j", r.energy.hysteretic_j);
         ctx.number("energy_input_j", r.energy.input_j);
         ctx.number("energy_building_damping_j", r.energy.building_damping_j);
         ctx.number("energy_to_contact_j", r.energy.contact_j);
@@ -432,8 +470,25 @@ impl Context {
                 f.peak_displacement_m[1],
             );
             ctx.gaps(&assess(f));
+            ctx.yielding(f, "_no_pounding");
         }
         ctx
+    }
+
+    /// Each building's largest storey ductility demand and residual drift, names ending in
+    /// `suffix` (the run without contact's: `_no_pounding`).
+    fn yielding(&mut self, r: &BuildingResult, suffix: &str) {
+        for (side, name) in ["left", "right"].iter().enumerate() {
+            let largest = |v: &[f64]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+            self.number(
+                format!("ductility_demand_{name}{suffix}"),
+                largest(&r.ductility_demand[side]),
+            );
+            self.number(
+                format!("residual_drift_{name}{suffix}_m"),
+                largest(&r.residual_drift_m[side]),
+            );
+        }
     }
 
     fn gaps(&mut self, g: &GapAssessment) {

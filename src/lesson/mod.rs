@@ -43,6 +43,10 @@ pub const EMBEDDED: &[(&str, &str)] = &[
         "buildings-that-pound",
         include_str!("../../assets/lessons/buildings-that-pound.toml"),
     ),
+    (
+        "storeys-that-yield",
+        include_str!("../../assets/lessons/storeys-that-yield.toml"),
+    ),
 ];
 
 /// A lesson: what it is for, and its steps in order.

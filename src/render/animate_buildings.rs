@@ -93,7 +93,9 @@ impl BuildingAnimation {
         crate::export::plot::register_font();
         let root = BitMapBackend::with_buffer(rgb, self.size).into_drawing_area();
         let px = |v: f64| self.px(v);
-        heading(&root, &px, &self.title, &format!("t = {t:.2} s"))?;
+        // The buildings' own drawing carries the time stamp: the heading only the title.
+        let _ = t;
+        heading(&root, &px, &self.title, "")?;
         // The slabs' colour saturates at the run's peak pounding force over the slab's area.
         let sc = &self.drawing.setup.scenario;
         let areas: Vec<f64> = [&sc.left, &sc.right]
