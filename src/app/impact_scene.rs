@@ -75,15 +75,25 @@ impl ImpactCore {
             .y_axis_label("force [kN]")
             .link_axis(egui::Id::unique("bar-plots"), [true, false])
             .show(ui, |p| {
-                for (name, pts) in &lines {
+                // Sears on top: the curves that lie on it (FE, a stiff contact's wave theory)
+                // are dashed beneath it.
+                let mut order: Vec<&(String, Vec<[f64; 2]>)> = lines.iter().collect();
+                order.sort_by_key(|(name, _)| name == "sears");
+                for (name, pts) in order {
                     // Wave theory jumps (repeated times): no band aggregation, which would fill them.
-                    p.line(
-                        Line::new(name.as_str(), pts.clone())
-                            .allow_band(false)
-                            .width(width),
-                    );
+                    let mut line = Line::new(name.as_str(), pts.clone())
+                        .allow_band(false)
+                        .width(width);
+                    if let Some(st) = crate::export::palette::style_of(name) {
+                        line = line.color(egui::Color32::from_rgb(st.rgb[0], st.rgb[1], st.rgb[2]));
+                        if st.dashed {
+                            line = line.style(egui_plot::LineStyle::dashed_loose());
+                        }
+                    }
+                    p.line(line);
                 }
-                p.vline(VLine::new("t", t_ms));
+                // The time line in grey: no model's colour.
+                p.vline(VLine::new("t", t_ms).color(egui::Color32::GRAY));
             });
         let b = response.transform.bounds();
         self.shown_force = ShownPlot {

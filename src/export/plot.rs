@@ -234,7 +234,11 @@ impl LinePlot {
                     .draw()
                     .map_err(draw_failed)?;
                 for (i, s) in self.series.iter().enumerate() {
-                    let colour = PALETTE[i % PALETTE.len()];
+                    // A model's curve keeps its colour in every figure.
+                    let colour = super::palette::style_of(&s.name)
+                        .map_or(PALETTE[i % PALETTE.len()], |st| {
+                            RGBColor(st.rgb[0], st.rgb[1], st.rgb[2])
+                        });
                     let pts: Vec<(f64, f64)> = s
                         .points
                         .iter()
