@@ -16,7 +16,7 @@ fn plot(scale: f64) -> LinePlot {
             "time [ms]",
             "force [kN]",
             vec![Series {
-                name: "sears".into(),
+                name: "force".into(),
                 points: (0..200)
                     .map(|i| {
                         let t = i as f64 / 199.0;
@@ -88,7 +88,7 @@ fn svg_is_well_formed_and_carries_title_axes_with_units_and_legend() {
     assert_eq!(root.attribute("width"), Some("800"));
     assert_eq!(root.attribute("height"), Some("500"));
     let texts: Vec<&str> = doc.descendants().filter_map(|n| n.text()).collect();
-    for want in ["Contact force", "time [ms]", "force [kN]", "sears"] {
+    for want in ["Contact force", "time [ms]", "force [kN]", "force"] {
         assert!(
             texts.iter().any(|t| t.contains(want)),
             "no text {want}: {texts:?}"
@@ -109,4 +109,93 @@ fn svg_is_well_formed_and_carries_title_axes_with_units_and_legend() {
 fn an_unknown_extension_is_refused_with_the_allowed_ones() {
     let e = plot(1.0).write(&temp("p.jpg")).unwrap_err().to_string();
     assert!(e.contains(".svg or .png") && e.contains("p.jpg"), "{e}");
+}
+
+/// The gaps between the inked column runs of rows `rows` of a PNG: how far apart its glyphs are.
+fn glyph_gaps(path: &std::path::Path, rows: std::ops::Range<usize>) -> Vec<usize> {
+    let (width, _, channels, buf) = common::read_png(path);
+    let w = width as usize;
+    let inked = |x: usize| {
+        rows.clone().any(|y| {
+            let i = (y * w + x) * channels;
+            buf[i..i + 3].iter().map(|&c| u32::from(c)).sum::<u32>() < 3 * 160
+        })
+    };
+    let mut gaps = vec![];
+    let (mut seen_ink, mut run) = (false, 0);
+    for x in 0..w {
+        if inked(x) {
+            if seen_ink && run > 0 {
+                gaps.push(run);
+            }
+            seen_ink = true;
+            run = 0;
+        } else {
+            run += 1;
+        }
+    }
+    gaps
+}
+
+/// The gaps between the ink of consecutive glyphs of `text` set in the font figures use, at
+/// `size` px, from the font's own metrics: each glyph's outline box at its pen position, the pen
+/// moved by advances and kerning.
+fn font_gaps(text: &str, size: f32) -> Vec<f32> {
+    use ab_glyph::{Font, ScaleFont};
+    let font = ab_glyph::FontRef::try_from_slice(epaint_default_fonts::UBUNTU_LIGHT).unwrap();
+    let scaled = font.as_scaled(size);
+    let (mut pen, mut prev) = (0f32, None);
+    let mut boxes = vec![];
+    for c in text.chars() {
+        let id = scaled.glyph_id(c);
+        if let Some(p) = prev {
+            pen += scaled.kern(p, id);
+        }
+        prev = Some(id);
+        let glyph = id.with_scale_and_position(size, ab_glyph::point(pen, 0.0));
+        if let Some(o) = scaled.outline_glyph(glyph) {
+            let b = o.px_bounds();
+            boxes.push((b.min.x, b.max.x));
+        }
+        pen += scaled.h_advance(id);
+    }
+    boxes.windows(2).map(|w| w[1].0 - w[0].1).collect()
+}
+
+#[test]
+fn exported_text_sets_each_glyph_where_the_font_places_it() {
+    // "time [ms]" drawn without each glyph's own left offset read "tim e [m s]": letters with
+    // wide side bearings crowded or parted their neighbours by pixels.
+    let mut p = LinePlot::new(
+        "",
+        "time [ms]",
+        "",
+        vec![Series {
+            name: "a".into(),
+            points: vec![(0.0, 0.0), (1.0, 1.0)],
+        }],
+    );
+    p.size = (960, 540);
+    let path = temp("kerning.png");
+    p.write(&path).unwrap();
+    // The axis description's band, below the tick labels, at 16 px.
+    let drawn = glyph_gaps(&path, 508..532);
+    let want = font_gaps("time [ms]", 16.0);
+    assert_eq!(drawn.len(), want.len(), "drawn {drawn:?}, font {want:?}");
+    // The ink threshold moves every edge alike: each drawn gap differs from the font's by the
+    // same offset, give or take the one pixel a glyph's position rounds to. Glyphs set without
+    // their left offsets differ by up to three (drawn [2, 1, 3, 5, 1, 3, 1] against the font's
+    // [0, 2, 1, 4, 0, 1, 0]).
+    let offsets: Vec<f32> = drawn
+        .iter()
+        .zip(&want)
+        .map(|(d, w)| *d as f32 - w)
+        .collect();
+    let spread = offsets.iter().cloned().fold(f32::MIN, f32::max)
+        - offsets.iter().cloned().fold(f32::MAX, f32::min);
+    assert!(
+        spread <= 1.0,
+        "drawn {drawn:?} against the font's {want:?}: offsets {offsets:?}"
+    );
+    let _ = std::fs::remove_file(&path);
 }

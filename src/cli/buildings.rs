@@ -108,6 +108,7 @@ fn write_animation(
 
 /// The frames' range around one impact (`strongest`, or K from 1): twice its duration before
 /// and after it, at least 20 ms a side, within the run.
+#[cfg(feature = "gui")]
 fn around(
     result: &pounding::model::building::BuildingResult,
     which: &str,

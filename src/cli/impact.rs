@@ -68,6 +68,7 @@ pub struct AnimateArgs {
 impl AnimateArgs {
     /// The frames' time range within a run of `0..=end` seconds: `--animate-from` and
     /// `--animate-to` where given (checked against the run), else `default`.
+    #[cfg(feature = "gui")]
     pub fn range(&self, default: (f64, f64), end: f64) -> anyhow::Result<(f64, f64)> {
         let from = self.animate_from.unwrap_or(default.0);
         let to = self.animate_to.unwrap_or(default.1);

@@ -2,6 +2,7 @@
 //! the x-t diagram.
 
 pub mod animation;
+pub mod bitmap;
 pub mod palette;
 pub mod plot;
 pub mod xt;

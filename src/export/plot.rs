@@ -81,6 +81,30 @@ const PALETTE: [RGBColor; 8] = [
     RGBColor(23, 190, 207),
 ];
 
+/// An RGB image `k` times smaller, each pixel the mean of its k x k block.
+fn downsample(rgb: &[u8], (w, h): (u32, u32), k: u32) -> Vec<u8> {
+    if k == 1 {
+        return rgb.to_vec();
+    }
+    let (ow, oh) = (w / k, h / k);
+    let mut out = vec![0u8; (ow * oh * 3) as usize];
+    for y in 0..oh {
+        for x in 0..ow {
+            for c in 0..3 {
+                let mut sum = 0u32;
+                for dy in 0..k {
+                    for dx in 0..k {
+                        let i = (((y * k + dy) * w + x * k + dx) * 3 + c) as usize;
+                        sum += u32::from(rgb[i]);
+                    }
+                }
+                out[((y * ow + x) * 3 + c) as usize] = ((sum + k * k / 2) / (k * k)) as u8;
+            }
+        }
+    }
+    out
+}
+
 /// A tick label: three significant digits, exponent form outside [1e-3, 1e4).
 pub fn tick_label(x: f64) -> String {
     if x == 0.0 || !x.is_finite() {
@@ -160,10 +184,25 @@ impl LinePlot {
 
     /// PNG through a pixel buffer and the png crate (plotters' own encoder brings a second
     /// image crate along).
+    ///
+    /// Drawn at twice the size and averaged down (where that fits in a few tens of megabytes):
+    /// plotters' bitmap draws lines and glyph positions without anti-aliasing, so a curve is
+    /// jagged and a glyph's advance rounds to whole pixels ("tim e") at the size asked for.
     fn write_png(&self, path: &Path) -> Result<(), Failure> {
         let (w, h) = self.size;
-        let mut rgb = vec![255u8; (w * h * 3) as usize];
-        self.draw(BitMapBackend::with_buffer(&mut rgb, self.size).into_drawing_area())?;
+        let k = if u64::from(w) * u64::from(h) <= 4_000_000 && self.scale <= 4.0 {
+            2
+        } else {
+            1
+        };
+        let big = LinePlot {
+            size: (w * k, h * k),
+            scale: self.scale * f64::from(k),
+            ..self.clone()
+        };
+        let mut rgb = vec![255u8; (w * k * h * k * 3) as usize];
+        big.draw(super::bitmap::Bitmap::with_buffer(&mut rgb, big.size).into_drawing_area())?;
+        let rgb = downsample(&rgb, (w * k, h * k), k);
         write_png(path, (w, h), png::ColorType::Rgb, &rgb)?;
         Ok(())
     }

@@ -103,7 +103,7 @@ impl XtImage<'_> {
         // plotting area plotters reports.
         let area_px;
         {
-            let root = BitMapBackend::with_buffer(&mut rgb, (w, h)).into_drawing_area();
+            let root = super::bitmap::Bitmap::with_buffer(&mut rgb, (w, h)).into_drawing_area();
             let (main, _) = root.split_horizontally(w.saturating_sub(bar_width));
             let mut chart = ChartBuilder::on(&main)
                 .caption(&self.title, ("sans-serif", px(22.0)))
@@ -165,7 +165,7 @@ impl XtImage<'_> {
             }
         }
         {
-            let root = BitMapBackend::with_buffer(&mut rgb, (w, h)).into_drawing_area();
+            let root = super::bitmap::Bitmap::with_buffer(&mut rgb, (w, h)).into_drawing_area();
             let style = ("sans-serif", px(13.0)).into_font().color(&BLACK);
             let label = |v: f64| format!("{:+.3}", v * factor);
             let (top, bottom, mid) = (yr.start, yr.end, (yr.start + yr.end) / 2);

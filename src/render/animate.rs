@@ -179,7 +179,7 @@ impl ImpactAnimation {
     /// Axes, title, time stamp, time line and colour bar over the fields.
     fn overlay(&self, rgb: &mut [u8], t: f64) -> Result<(), String> {
         crate::export::plot::register_font();
-        let root = BitMapBackend::with_buffer(rgb, self.size).into_drawing_area();
+        let root = crate::export::bitmap::Bitmap::with_buffer(rgb, self.size).into_drawing_area();
         let (bars_rect, xt_rect) = self.panels();
         let l = &self.layout;
         let font = |size: f64| ("sans-serif", self.px(size)).into_font().color(&BLACK);
@@ -265,13 +265,13 @@ impl ImpactAnimation {
     /// A chart whose plotting area is exactly `rect`, x over the world's [left, right].
     fn chart<'a, 'b>(
         &self,
-        root: &'a DrawingArea<BitMapBackend<'b>, Shift>,
+        root: &'a DrawingArea<crate::export::bitmap::Bitmap<'b>, Shift>,
         rect: PixelRect,
         y: (f64, f64),
     ) -> Result<
         ChartContext<
             'a,
-            BitMapBackend<'b>,
+            crate::export::bitmap::Bitmap<'b>,
             Cartesian2d<
                 plotters::coord::types::RangedCoordf64,
                 plotters::coord::types::RangedCoordf64,
@@ -310,7 +310,7 @@ impl ImpactAnimation {
 
 /// The title (top left) and the time stamp (top right, large) of a frame.
 pub(crate) fn heading(
-    root: &DrawingArea<BitMapBackend<'_>, Shift>,
+    root: &DrawingArea<crate::export::bitmap::Bitmap<'_>, Shift>,
     px: &dyn Fn(f64) -> u32,
     title: &str,
     stamp: &str,
@@ -331,7 +331,7 @@ pub(crate) fn heading(
 /// The colour bar at the right edge, from `top` to `bottom` (pixels): `ends` label the
 /// values that saturate the map (tension at the top, compression at the bottom).
 pub(crate) fn colour_bar(
-    root: &DrawingArea<BitMapBackend<'_>, Shift>,
+    root: &DrawingArea<crate::export::bitmap::Bitmap<'_>, Shift>,
     px: &dyn Fn(f64) -> u32,
     [top, bottom]: [u32; 2],
     name: &str,

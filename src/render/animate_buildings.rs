@@ -91,7 +91,7 @@ impl BuildingAnimation {
 
     fn overlay(&self, rgb: &mut [u8], t: f64) -> Result<(), String> {
         crate::export::plot::register_font();
-        let root = BitMapBackend::with_buffer(rgb, self.size).into_drawing_area();
+        let root = crate::export::bitmap::Bitmap::with_buffer(rgb, self.size).into_drawing_area();
         let px = |v: f64| self.px(v);
         // The buildings' own drawing carries the time stamp: the heading only the title.
         let _ = t;
