@@ -69,8 +69,9 @@ pub(super) struct Grid {
     pub read_every: usize,
     /// The spacing of the recorded samples inside contacts [s].
     pub contact_sample_s: f64,
-    /// Fine steps a planned piece of free motion takes at most where storeys yield.
-    pub yield_piece: usize,
+    /// Where storeys yield: how far a storey's correction may depart from the line a piece of
+    /// free motion takes it on, relative to the storey's force scale ([`Stepper::plan_piece`]).
+    pub yield_departure: f64,
     /// The most forces each Sears slab keeps for drawing its waves (its part of
     /// [`SLAB_MEMORY_BUDGET`](super::super::solve::SLAB_MEMORY_BUDGET)).
     pub slab_share: usize,
@@ -404,8 +405,11 @@ pub(super) struct Stepper<'a> {
     /// a step: the level's contact steps on the grid after a contact step, with the level in
     /// contact, are the single level's (`contact/single.rs`).
     single_level: bool,
-    /// The next free step is one fine step (yielding storeys near or past their yield point).
+    /// The next free step is a planned piece (yielding storeys near or past their yield point).
     single_step: bool,
+    /// Its length in fine steps, and the length the next one tries first.
+    piece: usize,
+    piece_guess: usize,
     /// Each level's largest closing motion is followed: in a run without contact, where it is
     /// the gap that avoids contact (a run with contact reports none).
     follow_closing: bool,
@@ -583,6 +587,8 @@ impl<'a> Stepper<'a> {
             tall,
             single_level,
             single_step: false,
+            piece: 1,
+            piece_guess: 1,
             follow_closing: sc.contact == ContactModel::None,
             scratch: Some(Box::default()),
             contact_scratch: Some(contact_scratch),
@@ -707,14 +713,22 @@ impl<'a> Stepper<'a> {
             }
             self.single_step = self.yields() && !self.plan_stretch();
             if self.single_step {
-                // A storey's law changing branch inside the piece: up to there first.
+                // A storey's law changing branch inside the piece: up to there first, the whole
+                // fine steps before it as a piece of their own (a step off the grid is checked
+                // at its end only, and a Sears slab's onset only on the grid).
                 let planned = self.planned_piece();
-                let piece = self.step_to_first_event(planned);
-                if piece < planned {
-                    if let Some(level) = self.free_partial(piece)? {
-                        self.onset_in_partial(level, piece)?;
+                let first = self.first_storey_event(planned);
+                if first < planned {
+                    let whole = (first / self.grid.h + 1e-9) as usize;
+                    if whole == 0 {
+                        self.plan_free(first);
+                        if let Some(level) = self.free_partial(first)? {
+                            self.onset_in_partial(level, first)?;
+                        }
+                        continue;
                     }
-                    continue;
+                    self.piece = whole;
+                    self.plan_free(whole as f64 * self.grid.h);
                 }
             }
             match self.free_step()? {

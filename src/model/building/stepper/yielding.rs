@@ -18,6 +18,11 @@ use crate::model::hysteresis::{Hysteresis, StoreyLaw, StoreyState};
 /// The most passes of the fixed point over one step.
 pub(super) const MAX_PASSES: usize = 60;
 
+/// A piece longer than a fine step whose fixed point takes more passes than this is shortened:
+/// the map's contraction goes as the square of the piece, so a shorter one settles sooner and
+/// costs less.
+const PIECE_PASSES: usize = 12;
+
 /// An event closer than this share of its step to either end is left inside the step: a piece
 /// that short would cost a step and change nothing the law can tell.
 const EVENT_PIECE: f64 = 1e-6;
@@ -193,6 +198,45 @@ impl Storeys {
         }
     }
 
+    /// How far the corrections a step's plan reaches at a point `theta` of its way (a length
+    /// `len` in) depart from the line between its ends, each storey's departure over
+    /// `allowed` times its force scale (its correction at either end, or the share of its yield
+    /// force it may correct, or of its elastic force where that is less): the largest, where
+    /// storey j stands at the drift and rate `at(j)` there. Infinite where a state is not
+    /// finite. The ends' corrections are those [`Storeys::end_loads`] left.
+    fn departure(
+        &self,
+        at: impl Fn(usize) -> (f64, f64),
+        len: f64,
+        theta: f64,
+        allowed: f64,
+    ) -> f64 {
+        let c1 = self.c1.borrow();
+        if c1.len() != self.laws.len() {
+            return f64::INFINITY;
+        }
+        let mut worst = 0.0f64;
+        for (j, law) in self.laws.iter().enumerate() {
+            let (u, r) = at(j);
+            if !u.is_finite() || !r.is_finite() {
+                return f64::INFINITY;
+            }
+            let mut s = self.state[j];
+            let reach = s.drift_m.abs().max(u.abs());
+            Self::follow(law, &mut s, self.rate[j], (u, r), len);
+            let c = Self::correction(law, &s);
+            let (a, b) = (self.c0[j], c1[j]);
+            let line = a + theta * (b - a);
+            let own = (1.0 - law.hardening) * law.yield_force_n.min(law.stiffness_n_m * reach);
+            let scale = a.abs().max(b.abs()).max(own);
+            let off = (c - line).abs();
+            if off > 0.0 {
+                worst = worst.max(off / (allowed * scale));
+            }
+        }
+        worst
+    }
+
     /// Storey j's shear force now [N].
     pub fn shear_n(&self, j: usize) -> f64 {
         self.laws[j].force_n(&self.state[j])
@@ -314,7 +358,17 @@ fn first_event(
             let edge = if u1 > hi { hi } else { lo };
             events[0] = Some(bracket(|x| at(j, x, false) - edge, 0.0, len, tol).second_side);
         }
-        if r0 != 0.0 && (r0 > 0.0) != (r1 > 0.0) {
+        // A bilinear storey's turn changes its law's course only where it flows into the turn
+        // (one that yields before it is cut there first); inside its elastic range the turn
+        // leaves the state as it was.
+        let flowing = || match st.laws[j].elastic_range_m(&st.state[j]) {
+            Some((lo, hi)) => {
+                let edge = 1e-9 * (hi - lo);
+                (r0 > 0.0 && u0 >= hi - edge) || (r0 < 0.0 && u0 <= lo + edge)
+            }
+            None => true,
+        };
+        if r0 != 0.0 && (r0 > 0.0) != (r1 > 0.0) && flowing() {
             events[1] = Some(bracket(|x| at(j, x, true), 0.0, len, tol).mid());
         }
         for tau in events.into_iter().flatten().filter(|&t| inside(t)) {
@@ -367,9 +421,70 @@ impl Stepper<'_> {
             st.stays_elastic(&env, span)
         });
         if !whole {
-            self.plan_free(len.min(g.yield_piece) as f64 * g.h);
+            self.piece = self.plan_piece(len);
         }
         whole
+    }
+
+    /// Plans a piece of free motion of at most `most` fine steps from a grid point: the longest
+    /// whose corrections stay within [`Grid::yield_departure`] of their line, found from the
+    /// length the last piece suggested (the departure goes as the square of the length). Its
+    /// length in fine steps.
+    fn plan_piece(&mut self, most: usize) -> usize {
+        let h = self.grid.h;
+        let mut steps = self.piece_guess.clamp(1, most);
+        loop {
+            let passes = self.plan_free(steps as f64 * h);
+            if steps == 1 {
+                self.piece_guess = 2;
+                return 1;
+            }
+            let ratio = if passes <= PIECE_PASSES {
+                self.piece_departure(steps)
+            } else {
+                f64::INFINITY
+            };
+            let factor = if ratio > 0.0 {
+                0.9 / ratio.sqrt()
+            } else {
+                2.0
+            };
+            if ratio <= 1.0 {
+                let next = ((steps as f64 * factor.min(2.0)) as usize).max(1);
+                // A piece cut short by the free step's end says nothing against a longer one.
+                self.piece_guess = if steps == most {
+                    self.piece_guess.max(next)
+                } else {
+                    next
+                };
+                return steps;
+            }
+            steps = ((steps as f64 * factor.clamp(0.1, 0.5)) as usize).max(1);
+        }
+    }
+
+    /// The planned piece's largest departure of a correction from its line, at the fine step
+    /// nearest its middle, over what a piece may leave ([`Storeys::departure`]); `steps` fine
+    /// steps long, at least two.
+    fn piece_departure(&self, steps: usize) -> f64 {
+        let mid = steps / 2;
+        let theta = mid as f64 / steps as f64;
+        let mut worst = 0.0f64;
+        for side in &self.sides {
+            let Some(st) = side.storeys.as_ref() else {
+                continue;
+            };
+            let (q, v): (Vec<f64>, Vec<f64>) = side
+                .maps(mid)
+                .iter()
+                .zip(&st.plan.y0)
+                .map(|(p, y)| p.apply(y))
+                .unzip();
+            let at = |j: usize| (st.drift_of(j, &q), st.drift_of(j, &v));
+            let d = st.departure(at, mid as f64 * self.grid.h, theta, self.grid.yield_departure);
+            worst = worst.max(d);
+        }
+        worst
     }
 
     /// The length of the piece of free motion planned now [s].
@@ -388,9 +503,11 @@ impl Stepper<'_> {
     }
 
     /// Plans a free step of length `len` from now: each side's corrections at its end, by the
-    /// fixed point over the exact step with the corrections linear in time.
-    pub(super) fn plan_free(&mut self, len: f64) {
+    /// fixed point over the exact step with the corrections linear in time. The most passes a
+    /// side took, [`MAX_PASSES`] + 1 where one did not settle.
+    pub(super) fn plan_free(&mut self, len: f64) -> usize {
         let ground = self.ground(self.time());
+        let mut most = 0;
         for s in 0..2 {
             let Some(st) = self.sides[s].storeys.as_mut() else {
                 continue;
@@ -408,7 +525,8 @@ impl Stepper<'_> {
                     .map(|k| propagator(side.omega[k], side.zeta[k], len))
                     .collect()
             });
-            for _ in 0..MAX_PASSES {
+            let mut passes = MAX_PASSES + 1;
+            for pass in 1..=MAX_PASSES {
                 self.initial_on(s, ground, &mut y0);
                 let props = own
                     .as_deref()
@@ -423,20 +541,24 @@ impl Stepper<'_> {
                 let change = st.end_loads(end, len, &mut load1);
                 st.load1 = load1;
                 if change <= 1e-13 {
+                    passes = pass;
                     break;
                 }
             }
+            most = most.max(passes);
             let st = self.sides[s].storeys.as_mut().expect("checked");
             st.plan = Plan { y0, q1, v1 };
         }
+        most
     }
 
     /// Where a storey's law changes branch inside a planned free step of length `len`, that
     /// instant is located on the exact motion and the step re-planned to end there, as a
     /// contact onset is: a bilinear storey reaching the edge of its elastic range (yield), or
     /// any yielding storey's drift turning (unload: the straight drift path of a step would
-    /// cut the turn's excursion short). The length of the step to take.
-    pub(super) fn step_to_first_event(&mut self, len: f64) -> f64 {
+    /// cut the turn's excursion short). Where the first is, or `len` where there is none; the
+    /// plan stays the whole step's.
+    pub(super) fn first_storey_event(&mut self, len: f64) -> f64 {
         let ground = self.ground(self.time());
         let mut first = len;
         for s in 0..2 {
@@ -453,6 +575,13 @@ impl Stepper<'_> {
             }
             self.sides[s].storeys.as_mut().expect("checked").plan = plan;
         }
+        first
+    }
+
+    /// [`Stepper::first_storey_event`], with the step re-planned to end there where it is
+    /// inside. The length of the step to take.
+    pub(super) fn step_to_first_event(&mut self, len: f64) -> f64 {
+        let first = self.first_storey_event(len);
         if first < len {
             self.plan_free(first);
         }
