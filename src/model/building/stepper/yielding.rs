@@ -35,6 +35,9 @@ pub(super) struct Storeys {
     pub state: Vec<StoreyState>,
     /// `drift[j][k]`: storey j's drift per unit of mode k.
     drift: Vec<Vec<f64>>,
+    /// `by_mode[k][j]`: the same, mode by mode, so that a mode's load from the corrections
+    /// reads consecutive memory.
+    by_mode: Vec<Vec<f64>>,
     /// The corrections now [N], and their load on each mode.
     c0: Vec<f64>,
     pub load0: Vec<f64>,
@@ -72,10 +75,14 @@ impl Storeys {
             })
             .collect();
         let modes = shapes.len();
+        let by_mode = (0..modes)
+            .map(|k| drift.iter().map(|d| d[k]).collect())
+            .collect();
         Storeys {
             laws,
             state: vec![StoreyState::default(); n],
             drift,
+            by_mode,
             c0: vec![0.0; n],
             load0: vec![0.0; modes],
             load1: vec![0.0; modes],
@@ -124,11 +131,7 @@ impl Storeys {
 
     /// Storey j's drift with the modes at q + dq [m].
     fn drift_after(&self, j: usize, q: &[f64], dq: &[f64]) -> f64 {
-        self.drift[j]
-            .iter()
-            .zip(q.iter().zip(dq))
-            .map(|(d, (q, dq))| d * (q + dq))
-            .sum()
+        dotv(&self.drift[j], q) + dotv(&self.drift[j], dq)
     }
 
     /// Mode k's load over the planned free step: its value now and its rate.
@@ -146,17 +149,10 @@ impl Storeys {
         law.stiffness_n_m * s.drift_m - law.force_n(s)
     }
 
-    /// Each mode's load from corrections `c` on storeys of drift rows `drift`, into `out`.
-    fn loads(drift: &[Vec<f64>], c: &[f64], out: &mut Vec<f64>) {
+    /// Each mode's load from corrections `c` on storeys of drift columns `by_mode`, into `out`.
+    fn loads(by_mode: &[Vec<f64>], c: &[f64], out: &mut Vec<f64>) {
         out.clear();
-        out.resize(drift.first().map_or(0, Vec::len), 0.0);
-        for (cj, dj) in c.iter().zip(drift) {
-            if *cj != 0.0 {
-                for (o, d) in out.iter_mut().zip(dj) {
-                    *o += cj * d;
-                }
-            }
-        }
+        out.extend(by_mode.iter().map(|d| dotv(d, c)));
     }
 
     /// The loads at the end of a step of length `len` that brings storey j to the drift and
@@ -178,15 +174,10 @@ impl Storeys {
             scale = scale.max(c.abs()).max(self.c0[j].abs());
             c1.push(c);
         }
-        // Mode by mode, in the storeys' order (as `loads` sums), comparing as it writes.
+        // Mode by mode, as `loads` sums, comparing as it writes.
         let (mut change, mut load_scale) = (0.0f64, 0.0f64);
-        for (k, o) in out.iter_mut().enumerate() {
-            let mut load = 0.0;
-            for (cj, dj) in c1.iter().zip(&self.drift) {
-                if *cj != 0.0 {
-                    load += cj * dj[k];
-                }
-            }
+        for (o, d) in out.iter_mut().zip(&self.by_mode) {
+            let load = dotv(d, &c1);
             change = change.max((load - *o).abs());
             load_scale = load_scale.max(load.abs()).max(o.abs());
             *o = load;
@@ -270,7 +261,7 @@ impl Storeys {
             self.rate[j] = r;
             self.c0[j] = Self::correction(&self.laws[j], &self.state[j]);
         }
-        Self::loads(&self.drift, &self.c0, &mut self.load0);
+        Self::loads(&self.by_mode, &self.c0, &mut self.load0);
     }
 
     /// Whether every storey provably stays inside its elastic range over a stretch of length
