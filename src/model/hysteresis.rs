@@ -228,10 +228,14 @@ impl StoreyLaw {
 
 /// w^n, by multiplications where n is a small whole number (the usual exponents).
 fn power(w: f64, n: f64) -> f64 {
-    if n == n.round() && n <= 64.0 {
-        w.powi(n as i32)
-    } else {
-        w.powf(n)
+    // A cast, not `round`: without SSE4.1 that is a call.
+    let whole = n as i32;
+    match whole {
+        1 if n == 1.0 => w,
+        2 if n == 2.0 => w * w,
+        3 if n == 3.0 => w * w * w,
+        _ if f64::from(whole) == n && whole <= 64 => w.powi(whole),
+        _ => w.powf(n),
     }
 }
 

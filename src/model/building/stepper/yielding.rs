@@ -129,11 +129,6 @@ impl Storeys {
         dotv(&self.drift[j], q)
     }
 
-    /// Storey j's drift with the modes at q + dq [m].
-    fn drift_after(&self, j: usize, q: &[f64], dq: &[f64]) -> f64 {
-        dotv(&self.drift[j], q) + dotv(&self.drift[j], dq)
-    }
-
     /// Mode k's load over the planned free step: its value now and its rate.
     pub fn pseudo(&self, k: usize) -> (f64, f64) {
         let rate = if self.len > 0.0 {
@@ -173,6 +168,21 @@ impl Storeys {
             let c = Self::correction(law, &s);
             scale = scale.max(c.abs()).max(self.c0[j].abs());
             c1.push(c);
+        }
+        // Where no correction moved (every storey elastic over the step), the loads are the
+        // ones now, to the bit: `loads` made them from the same corrections.
+        if c1.iter().zip(&self.c0).all(|(a, b)| a == b) && out.len() == self.load0.len() {
+            let (mut change, mut load_scale) = (0.0f64, 0.0f64);
+            for (o, l) in out.iter_mut().zip(&self.load0) {
+                change = change.max((l - *o).abs());
+                load_scale = load_scale.max(l.abs()).max(o.abs());
+                *o = *l;
+            }
+            return if scale == 0.0 || load_scale == 0.0 {
+                0.0
+            } else {
+                change / load_scale
+            };
         }
         // Mode by mode, as `loads` sums, comparing as it writes.
         let (mut change, mut load_scale) = (0.0f64, 0.0f64);
@@ -236,6 +246,7 @@ impl Storeys {
     /// Moves every storey to the drifts of the modes at q (their rates at v), along their paths
     /// from where they stand, over the step from `t0` to `t1`.
     pub fn commit(&mut self, q: &[f64], v: &[f64], t0: f64, t1: f64) {
+        let mut moved = false;
         for j in 0..self.laws.len() {
             let u = self.drift_of(j, q);
             let r = self.drift_of(j, v);
@@ -259,9 +270,14 @@ impl Storeys {
                 t1 - t0,
             );
             self.rate[j] = r;
-            self.c0[j] = Self::correction(&self.laws[j], &self.state[j]);
+            let c = Self::correction(&self.laws[j], &self.state[j]);
+            moved |= c != self.c0[j];
+            self.c0[j] = c;
         }
-        Self::loads(&self.by_mode, &self.c0, &mut self.load0);
+        // Unmoved corrections keep their loads, to the bit.
+        if moved || self.load0.len() != self.by_mode.len() {
+            Self::loads(&self.by_mode, &self.c0, &mut self.load0);
+        }
     }
 
     /// Whether every storey provably stays inside its elastic range over a stretch of length
@@ -603,9 +619,11 @@ impl Stepper<'_> {
             let side = &self.sides[s];
             if let Some(st) = side.storeys.as_ref() {
                 // Newmark's (trapezoidal) velocity: the end rate is 2 du / h less the start's.
+                // The storeys stand where the modes do (each commit moves both), so the end
+                // drift is the step's change on top of theirs.
                 let end = |j: usize| {
                     let u0 = st.state[j].drift_m;
-                    let u1 = st.drift_after(j, &side.q, &dq[s]);
+                    let u1 = u0 + st.drift_of(j, &dq[s]);
                     (u1, 2.0 * (u1 - u0) / hh - st.rate[j])
                 };
                 worst = worst.max(st.end_loads(end, hh, &mut load1[s]));
