@@ -683,16 +683,26 @@ impl<'a> Stepper<'a> {
         let end = self.grid.total;
         let mut looked_at = 0;
         let mut looked_steps = 0;
+        // A step where storeys yield also moves every storey of its side: it costs about as
+        // many elastic steps as the side has storeys, so the control is looked at as often in
+        // time (a tall yielding pair streams its progress as an elastic one does).
+        let storeys = self
+            .sides
+            .iter()
+            .filter_map(|s| s.storeys.as_ref().map(Storeys::count))
+            .max()
+            .unwrap_or(1);
+        let every = (CHECK_EVERY / storeys.max(1)).max(16);
         while self.n < end {
-            // Look every CHECK_EVERY steps taken, and every CHECK_EVERY free stretches' worth
-            // of the grid, whichever comes first.
+            // Look every `every` steps taken, and every CHECK_EVERY free stretches' worth of
+            // the grid, whichever comes first.
             if self.n >= looked_at || self.steps >= looked_steps {
                 control.report(self.n as f64 / end.max(1) as f64)?;
                 self.check_bounded()?;
                 self.check_memory()?;
                 watch(self);
                 looked_at = self.n + CHECK_EVERY * self.grid.per_free_step;
-                looked_steps = self.steps + CHECK_EVERY;
+                looked_steps = self.steps + every;
             }
             if self.points.iter().any(|p| p.force > 0.0) {
                 self.contact_step()?;

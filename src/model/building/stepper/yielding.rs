@@ -98,6 +98,11 @@ impl Storeys {
         }
     }
 
+    /// How many storeys.
+    pub fn count(&self) -> usize {
+        self.laws.len()
+    }
+
     /// Each storey's drift rate taken from modal velocities v (the start, or a velocity jump).
     pub fn set_rates(&mut self, v: &[f64]) {
         for j in 0..self.laws.len() {
