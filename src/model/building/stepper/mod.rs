@@ -659,9 +659,12 @@ impl<'a> Stepper<'a> {
             .map(|p| p.element.stored_energy(p.delta))
             .sum();
         let l = self.ledger;
-        let storeys = self.sides.iter().filter_map(|s| s.storeys.as_ref());
-        let (hysteretic, stored_less_elastic) = storeys.fold((0.0, 0.0), |(h, e), st| {
-            (h + st.dissipated_j(), e + st.stored_less_elastic_j())
+        let storeys = self
+            .sides
+            .iter()
+            .filter_map(|s| s.storeys.as_ref().map(|st| (st, &s.q)));
+        let (hysteretic, stored_less_elastic) = storeys.fold((0.0, 0.0), |(h, e), (st, q)| {
+            (h + st.dissipated_j(), e + st.stored_less_elastic_j(q))
         });
         BuildingEnergy {
             initial_j: l.initial_j,
@@ -708,6 +711,8 @@ impl<'a> Stepper<'a> {
                 self.contact_step()?;
                 continue;
             }
+            // The free motion's plans and commits follow the storeys from where they stand.
+            self.sync_storeys();
             self.close_batch();
             if self.offset > 0.0 {
                 // Back onto the grid after an event inside a step.

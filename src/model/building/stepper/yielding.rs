@@ -48,6 +48,13 @@ pub(super) struct Storeys {
     pub first_yield_s: Vec<Option<f64>>,
     /// Each storey's drift rate where the current time stands [m/s].
     rate: Vec<f64>,
+    /// The storeys' drifts and rates (`state`, `rate`) lag the modes: contact steps over which
+    /// every storey provably stayed elastic left them (and the corrections, unchanged) alone.
+    /// They were last moved with the modes at `synced` (displacements, velocities).
+    pub stale: bool,
+    synced: [Vec<f64>; 2],
+    /// Each storey's drift per unit of modal displacement at most: the length of its row.
+    reach: Vec<f64>,
     /// Buffers a step's planning reuses: the modes' augmented states, their ends, and the
     /// corrections at the end (a fine step is planned hundreds of thousands of times a run).
     plan: Plan,
@@ -78,7 +85,14 @@ impl Storeys {
         let by_mode = (0..modes)
             .map(|k| drift.iter().map(|d| d[k]).collect())
             .collect();
+        let reach = drift
+            .iter()
+            .map(|d| d.iter().map(|x| x * x).sum::<f64>().sqrt())
+            .collect();
         Storeys {
+            stale: false,
+            synced: [Vec::new(), Vec::new()],
+            reach,
             laws,
             state: vec![StoreyState::default(); n],
             drift,
@@ -95,6 +109,81 @@ impl Storeys {
                 v1: vec![0.0; modes],
             },
             c1: std::cell::RefCell::new(Vec::with_capacity(n)),
+        }
+    }
+
+    /// Whether a contact step from the modes at `q`, `v` (where the storeys stand, or where
+    /// they stood when they went stale) that moves them by `dq` to velocities `v1` leaves every
+    /// storey inside its elastic range, turn included: then no correction moves and the laws
+    /// need not be followed. Only bilinear storeys have a range. A bound, by the rows' lengths
+    /// and the distance from where the storeys last stood: no drift is summed.
+    pub fn quiet(&self, q: &[f64], v: &[f64], dq: &[f64], v1: &[f64], hh: f64) -> bool {
+        if self.laws.first().map(|l| l.kind) != Some(Hysteresis::Bilinear) {
+            return false;
+        }
+        let (q0, v0) = if self.stale {
+            (&self.synced[0][..], &self.synced[1][..])
+        } else {
+            (q, v)
+        };
+        let (mut start, mut end, mut speed) = (0.0f64, 0.0f64, 0.0f64);
+        for k in 0..q.len() {
+            let off = q[k] - q0[k];
+            start += off * off;
+            end += (off + dq[k]) * (off + dq[k]);
+            speed = speed.max((v[k] - v0[k]).abs()).max((v1[k] - v0[k]).abs());
+        }
+        // Velocities by their largest change (any norm bounds the sum's rows with the
+        // dimension's root).
+        let dim = (q.len() as f64).sqrt();
+        let moved = start.max(end).sqrt();
+        for (j, law) in self.laws.iter().enumerate() {
+            let Some((lo, hi)) = law.elastic_range_m(&self.state[j]) else {
+                return false;
+            };
+            let u = self.state[j].drift_m;
+            let rate = self.rate[j].abs() + self.reach[j] * dim * speed;
+            // The path between the step's ends is the cubic through their drifts and rates:
+            // within 4/27 of the step times each end's rate of the line between them.
+            let spread = self.reach[j] * moved + 0.3 * hh * rate;
+            let margin = 1e-9 * (hi - lo);
+            if !(u - spread > lo + margin && u + spread < hi - margin) {
+                return false;
+            }
+        }
+        true
+    }
+
+    /// The storeys left where they stand while the modes move on from `q`, `v` (a quiet
+    /// contact step, [`Storeys::quiet`]).
+    pub fn go_stale(&mut self, q: &[f64], v: &[f64]) {
+        if !self.stale {
+            self.synced[0].clone_from(&q.to_vec());
+            self.synced[1].clone_from(&v.to_vec());
+            self.stale = true;
+        }
+    }
+
+    /// The storeys brought to the modes at `q`, `v` after quiet contact steps: inside its
+    /// elastic range a bilinear storey's state is its drift's alone, so the steps it skipped
+    /// would have left it just so.
+    pub fn sync(&mut self, q: &[f64], v: &[f64]) {
+        if !self.stale {
+            return;
+        }
+        for j in 0..self.laws.len() {
+            self.state[j].drift_m = self.drift_of(j, q);
+            self.rate[j] = self.drift_of(j, v);
+        }
+        self.stale = false;
+    }
+
+    /// Storey j's drift with the modes at `q` where the storeys lag them, its own otherwise.
+    fn drift_now(&self, j: usize, q: &[f64]) -> f64 {
+        if self.stale {
+            self.drift_of(j, q)
+        } else {
+            self.state[j].drift_m
         }
     }
 
@@ -158,7 +247,13 @@ impl Storeys {
     /// The loads at the end of a step of length `len` that brings storey j to the drift and
     /// rate `end(j)` (each storey along its path, [`Storeys::follow`]), into `out`; the largest
     /// change of a load from what `out` held, relative to the largest load before or after.
-    fn end_loads(&self, end: impl Fn(usize) -> (f64, f64), len: f64, out: &mut [f64]) -> f64 {
+    fn end_loads(
+        &self,
+        end: impl Fn(usize) -> (f64, f64),
+        start: impl Fn(usize) -> (f64, f64),
+        len: f64,
+        out: &mut [f64],
+    ) -> f64 {
         let mut c1 = self.c1.borrow_mut();
         c1.clear();
         let mut scale = 0.0f64;
@@ -168,8 +263,12 @@ impl Storeys {
                 // No end state to follow (a trial that failed): the loads stay as they were.
                 return 0.0;
             }
-            let mut s = self.state[j];
-            Self::follow(law, &mut s, self.rate[j], (u, r), len);
+            let (u0, r0) = start(j);
+            let mut s = StoreyState {
+                drift_m: u0,
+                ..self.state[j]
+            };
+            Self::follow(law, &mut s, r0, (u, r), len);
             let c = Self::correction(law, &s);
             scale = scale.max(c.abs()).max(self.c0[j].abs());
             c1.push(c);
@@ -243,9 +342,13 @@ impl Storeys {
         worst
     }
 
-    /// Storey j's shear force now [N].
-    pub fn shear_n(&self, j: usize) -> f64 {
-        self.laws[j].force_n(&self.state[j])
+    /// Storey j's shear force now [N], the modes at `q`.
+    pub fn shear_n(&self, j: usize, q: &[f64]) -> f64 {
+        let s = StoreyState {
+            drift_m: self.drift_now(j, q),
+            ..self.state[j]
+        };
+        self.laws[j].force_n(&s)
     }
 
     /// Moves every storey to the drifts of the modes at q (their rates at v), along their paths
@@ -317,13 +420,20 @@ impl Storeys {
         self.state.iter().map(|s| s.dissipated_j).sum()
     }
 
-    /// What the storeys store by their laws less what the modes count for them (1/2 k u^2) [J]:
-    /// added to the modes' energy, the buildings' true energy.
-    pub fn stored_less_elastic_j(&self) -> f64 {
+    /// What the storeys store by their laws less what the modes count for them (1/2 k u^2) [J],
+    /// the modes at `q`: added to the modes' energy, the buildings' true energy.
+    pub fn stored_less_elastic_j(&self, q: &[f64]) -> f64 {
         self.laws
             .iter()
             .zip(&self.state)
-            .map(|(l, s)| l.stored_energy_j(s) - 0.5 * l.stiffness_n_m * s.drift_m * s.drift_m)
+            .enumerate()
+            .map(|(j, (l, s))| {
+                let s = StoreyState {
+                    drift_m: self.drift_now(j, q),
+                    ..*s
+                };
+                l.stored_energy_j(&s) - 0.5 * l.stiffness_n_m * s.drift_m * s.drift_m
+            })
             .sum()
     }
 }
@@ -550,7 +660,8 @@ impl Stepper<'_> {
                 let st = self.sides[s].storeys.as_mut().expect("checked");
                 let mut load1 = std::mem::take(&mut st.load1);
                 let end = |j: usize| (st.drift_of(j, &q1), st.drift_of(j, &v1));
-                let change = st.end_loads(end, len, &mut load1);
+                let start = |j: usize| (st.state[j].drift_m, st.rate[j]);
+                let change = st.end_loads(end, start, len, &mut load1);
                 st.load1 = load1;
                 if change <= 1e-13 {
                     passes = pass;
@@ -600,6 +711,16 @@ impl Stepper<'_> {
         first
     }
 
+    /// Every side's storeys brought to where the modes stand, where quiet contact steps left
+    /// them behind.
+    pub(super) fn sync_storeys(&mut self) {
+        for side in self.sides.iter_mut() {
+            if let Some(st) = side.storeys.as_mut() {
+                st.sync(&side.q, &side.v);
+            }
+        }
+    }
+
     /// Every side's storeys moved to where the modes stand at the end of the step just
     /// committed, from `t0` to `t1`.
     pub(super) fn commit_storeys(&mut self, t0: f64, t1: f64) {
@@ -624,14 +745,21 @@ impl Stepper<'_> {
             let side = &self.sides[s];
             if let Some(st) = side.storeys.as_ref() {
                 // Newmark's (trapezoidal) velocity: the end rate is 2 du / h less the start's.
-                // The storeys stand where the modes do (each commit moves both), so the end
+                // Where the storeys stand where the modes do (each commit moves both), the end
                 // drift is the step's change on top of theirs.
-                let end = |j: usize| {
-                    let u0 = st.state[j].drift_m;
-                    let u1 = u0 + st.drift_of(j, &dq[s]);
-                    (u1, 2.0 * (u1 - u0) / hh - st.rate[j])
+                let start = |j: usize| {
+                    if st.stale {
+                        (st.drift_of(j, &side.q), st.drift_of(j, &side.v))
+                    } else {
+                        (st.state[j].drift_m, st.rate[j])
+                    }
                 };
-                worst = worst.max(st.end_loads(end, hh, &mut load1[s]));
+                let end = |j: usize| {
+                    let (u0, r0) = start(j);
+                    let u1 = u0 + st.drift_of(j, &dq[s]);
+                    (u1, 2.0 * (u1 - u0) / hh - r0)
+                };
+                worst = worst.max(st.end_loads(end, start, hh, &mut load1[s]));
             }
         }
         worst
