@@ -438,8 +438,15 @@ impl Storeys {
     }
 }
 
-/// The first yield or turn of a storey of `side` strictly inside a step of length `len` from
-/// the augmented modal states `y0` (the planned loads in them), if any.
+/// The first yield of a bilinear storey of `side` strictly inside a step of length `len` from
+/// the augmented modal states `y0` (the planned loads in them), if any: the corner where its
+/// correction starts to move, a jump in the correction's slope that a line across it would
+/// smear over the whole step.
+///
+/// A turn needs no locating: the drift's rate is zero there, so the correction's slope is
+/// continuous through it (only its curvature jumps, an error of the order of the line's own
+/// that the piece's departure check bounds), and the law follows the turn on the cubic through
+/// the step's ends ([`Storeys::follow`]).
 fn first_event(
     side: &Side,
     st: &Storeys,
@@ -447,6 +454,9 @@ fn first_event(
     len: f64,
     maps: Option<&[Propagator]>,
 ) -> Option<f64> {
+    if st.laws.first().map(|l| l.kind) != Some(Hysteresis::Bilinear) {
+        return None;
+    }
     let Plan { y0, q1, v1 } = plan;
     // Whole fine steps (the usual case) have their maps made once for the run.
     for k in 0..side.modes() {
@@ -455,12 +465,12 @@ fn first_event(
             None => propagator(side.omega[k], side.zeta[k], len).apply(&y0[k]),
         };
     }
-    // Storey j's drift (or its rate) tau into the step, on the exact motion.
-    let at = |j: usize, tau: f64, rate: bool| -> f64 {
+    // Storey j's drift tau into the step, on the exact motion.
+    let at = |j: usize, tau: f64| -> f64 {
         (0..side.modes())
             .map(|k| {
-                let (q, v) = propagator(side.omega[k], side.zeta[k], tau).apply(&y0[k]);
-                st.drift[j][k] * if rate { v } else { q }
+                let (q, _) = propagator(side.omega[k], side.zeta[k], tau).apply(&y0[k]);
+                st.drift[j][k] * q
             })
             .sum()
     };
@@ -468,9 +478,7 @@ fn first_event(
     let inside = |tau: f64| tau > EVENT_PIECE * len && tau < (1.0 - EVENT_PIECE) * len;
     let mut first: Option<f64> = None;
     for j in 0..st.laws.len() {
-        let (u0, r0) = (st.drift_of(j, &side.q), st.drift_of(j, &side.v));
-        let (u1, r1) = (st.drift_of(j, q1), st.drift_of(j, v1));
-        let mut events = [None, None];
+        let (u0, u1) = (st.drift_of(j, &side.q), st.drift_of(j, q1));
         if let Some((lo, hi)) = st.laws[j].elastic_range_m(&st.state[j])
             && u0 > lo
             && u0 < hi
@@ -478,23 +486,10 @@ fn first_event(
         {
             // Just past the edge: the law yields from the next step on.
             let edge = if u1 > hi { hi } else { lo };
-            events[0] = Some(bracket(|x| at(j, x, false) - edge, 0.0, len, tol).second_side);
-        }
-        // A bilinear storey's turn changes its law's course only where it flows into the turn
-        // (one that yields before it is cut there first); inside its elastic range the turn
-        // leaves the state as it was.
-        let flowing = || match st.laws[j].elastic_range_m(&st.state[j]) {
-            Some((lo, hi)) => {
-                let edge = 1e-9 * (hi - lo);
-                (r0 > 0.0 && u0 >= hi - edge) || (r0 < 0.0 && u0 <= lo + edge)
+            let tau = bracket(|x| at(j, x) - edge, 0.0, len, tol).second_side;
+            if inside(tau) {
+                first = Some(first.map_or(tau, |f: f64| f.min(tau)));
             }
-            None => true,
-        };
-        if r0 != 0.0 && (r0 > 0.0) != (r1 > 0.0) && flowing() {
-            events[1] = Some(bracket(|x| at(j, x, true), 0.0, len, tol).mid());
-        }
-        for tau in events.into_iter().flatten().filter(|&t| inside(t)) {
-            first = Some(first.map_or(tau, |f: f64| f.min(tau)));
         }
     }
     first
@@ -675,12 +670,10 @@ impl Stepper<'_> {
         most
     }
 
-    /// Where a storey's law changes branch inside a planned free step of length `len`, that
-    /// instant is located on the exact motion and the step re-planned to end there, as a
-    /// contact onset is: a bilinear storey reaching the edge of its elastic range (yield), or
-    /// any yielding storey's drift turning (unload: the straight drift path of a step would
-    /// cut the turn's excursion short). Where the first is, or `len` where there is none; the
-    /// plan stays the whole step's.
+    /// Where a bilinear storey reaches the edge of its elastic range (yields) inside a planned
+    /// free step of length `len`, that instant is located on the exact motion, as a contact
+    /// onset is ([`first_event`]). Where the first is, or `len` where there is none; the plan
+    /// stays the whole step's.
     pub(super) fn first_storey_event(&mut self, len: f64) -> f64 {
         let ground = self.ground(self.time());
         let mut first = len;
