@@ -281,11 +281,7 @@ fn loading_branch(w0: f64, x: f64, n: f64) -> (f64, f64) {
         let f = if s > 0.0 { one_less_wn / s } else { n };
         (f, w * (1.0 - one_less_wn))
     };
-    let mut sigma = if w0 < 1.0 {
-        -(-w0).ln_1p()
-    } else {
-        SATURATED
-    };
+    let mut sigma = if w0 < 1.0 { -(-w0).ln_1p() } else { SATURATED };
     let (mut left, mut dissipated) = (x, 0.0);
     while left > 0.0 && sigma < SATURATED {
         let (f1, d1) = rates(sigma);

@@ -158,7 +158,7 @@ fn plan(
     // piece measures ([`Grid::yield_departure`]); held to a share of the tolerance it refines
     // with the tolerance, and halves the pieces of a run refined twofold (the estimate's
     // companion), as the line's error goes as the square of the piece.
-    let yield_departure = std::env::var("YD").ok().and_then(|v| v.parse().ok()).unwrap_or(YIELD_DEPARTURE) * sc.tolerance / f64::from(refine * refine);
+    let yield_departure = YIELD_DEPARTURE * sc.tolerance / f64::from(refine * refine);
     let slab_share = slab_share(slabs);
     // The peaks' proofs look at the signals once a batch of contact steps: at most a third of
     // the contact's time scale (steps per scale, not the step: the companion's batches are as

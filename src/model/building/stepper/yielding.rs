@@ -7,9 +7,22 @@
 //! corrections as one more load on the modes.
 //!
 //! Over a step the correction is taken linear in time between its values at both ends, and the
-//! value at the end comes from the storey's law along the straight drift path of the step: a
-//! fixed point, since the end drift depends on the correction. Over a fine step the map is a
-//! strong contraction (its factor is about (w h)^2 / 6), so it settles in two or three passes.
+//! value at the end comes from the storey's law along the drift path of the step: a fixed
+//! point, since the end drift depends on the correction. The map is a contraction of factor
+//! about (w L)^2 / 6 over a step of length L, so it settles in a few passes.
+//!
+//! How long a piece of free motion may be is the correction's to say, not the building's
+//! highest mode: the line's error in the response is the correction's departure from it, so
+//! each piece measures that departure in its middle (following the laws there) and is as long
+//! as keeps it within a share of the tolerance of the storey's force. Where the storeys are
+//! quiet (the correction hardly moves, as in a tall building whose top modes barely stir its
+//! storeys) the pieces run to the free step's end; where one flows they shorten to what its
+//! drift's curvature allows. A bilinear storey's yield is a corner of the correction and is
+//! located; a turn is not (see [`first_event`]).
+//!
+//! In contact steps a bilinear storey that provably stays inside its elastic range over the
+//! step (a bound, [`Storeys::quiet`]) is left where it stands, its correction unchanged: no
+//! drift is summed for it until a step is not quiet or the free motion resumes.
 
 use super::*;
 use crate::model::bound::{Envelope, envelope};
@@ -41,6 +54,8 @@ pub(super) struct Storeys {
     /// The corrections now [N], and their load on each mode.
     c0: Vec<f64>,
     pub load0: Vec<f64>,
+    /// How fast each mode's load moved over the last step committed [N/s].
+    trend: Vec<f64>,
     /// The planned free step: each mode's load at its end, and its length.
     pub load1: Vec<f64>,
     pub len: f64,
@@ -99,6 +114,7 @@ impl Storeys {
             by_mode,
             c0: vec![0.0; n],
             load0: vec![0.0; modes],
+            trend: vec![0.0; modes],
             load1: vec![0.0; modes],
             len: 0.0,
             first_yield_s: vec![None; n],
@@ -384,7 +400,14 @@ impl Storeys {
         }
         // Unmoved corrections keep their loads, to the bit.
         if moved || self.load0.len() != self.by_mode.len() {
+            let before = std::mem::take(&mut self.load0);
             Self::loads(&self.by_mode, &self.c0, &mut self.load0);
+            let len = t1 - t0;
+            for ((r, now), was) in self.trend.iter_mut().zip(&self.load0).zip(&before) {
+                *r = if len > 0.0 { (now - was) / len } else { 0.0 };
+            }
+        } else {
+            self.trend.fill(0.0);
         }
     }
 
@@ -513,8 +536,9 @@ impl Stepper<'_> {
 
     /// Plans the next free step from a grid point: where every yielding storey provably stays
     /// elastic over the whole stretch to the next free-step boundary, its corrections are
-    /// constant and the stretch is taken whole, as an elastic run's; otherwise one fine step,
-    /// with the corrections planned by the fixed point. Whether the stretch is whole.
+    /// constant and the stretch is taken whole, as an elastic run's; otherwise a piece
+    /// ([`Stepper::plan_piece`]), with the corrections planned by the fixed point. Whether the
+    /// stretch is whole.
     pub(super) fn plan_stretch(&mut self) -> bool {
         let g = self.grid;
         let len = (g.per_free_step - self.n % g.per_free_step).min(g.total - self.n);
@@ -561,11 +585,7 @@ impl Stepper<'_> {
             } else {
                 f64::INFINITY
             };
-            let factor = if ratio > 0.0 {
-                0.9 / ratio.sqrt()
-            } else {
-                2.0
-            };
+            let factor = if ratio > 0.0 { 0.9 / ratio.sqrt() } else { 2.0 };
             if ratio <= 1.0 {
                 let next = ((steps as f64 * factor.min(2.0)) as usize).max(1);
                 // A piece cut short by the free step's end says nothing against a longer one.
@@ -582,24 +602,27 @@ impl Stepper<'_> {
 
     /// The planned piece's largest departure of a correction from its line, at the fine step
     /// nearest its middle, over what a piece may leave ([`Storeys::departure`]); `steps` fine
-    /// steps long, at least two.
-    fn piece_departure(&self, steps: usize) -> f64 {
+    /// steps long, at least two. The plan's end states serve as buffers (the event search makes
+    /// them again).
+    fn piece_departure(&mut self, steps: usize) -> f64 {
         let mid = steps / 2;
         let theta = mid as f64 / steps as f64;
+        let (h, allowed) = (self.grid.h, self.grid.yield_departure);
         let mut worst = 0.0f64;
-        for side in &self.sides {
-            let Some(st) = side.storeys.as_ref() else {
+        for side in self.sides.iter_mut() {
+            let Some(mut plan) = side.storeys.as_mut().map(|st| std::mem::take(&mut st.plan))
+            else {
                 continue;
             };
-            let (q, v): (Vec<f64>, Vec<f64>) = side
-                .maps(mid)
-                .iter()
-                .zip(&st.plan.y0)
-                .map(|(p, y)| p.apply(y))
-                .unzip();
-            let at = |j: usize| (st.drift_of(j, &q), st.drift_of(j, &v));
-            let d = st.departure(at, mid as f64 * self.grid.h, theta, self.grid.yield_departure);
-            worst = worst.max(d);
+            let Plan { y0, q1, v1 } = &mut plan;
+            for (k, p) in side.maps(mid).iter().enumerate() {
+                (q1[k], v1[k]) = p.apply(&y0[k]);
+            }
+            let st = side.storeys.as_mut().expect("checked");
+            st.plan = plan;
+            let (q, v) = (&st.plan.q1, &st.plan.v1);
+            let at = |j: usize| (st.drift_of(j, q), st.drift_of(j, v));
+            worst = worst.max(st.departure(at, mid as f64 * h, theta, allowed));
         }
         worst
     }
@@ -629,7 +652,11 @@ impl Stepper<'_> {
             let Some(st) = self.sides[s].storeys.as_mut() else {
                 continue;
             };
-            st.load1.clone_from(&st.load0);
+            // The fixed point starts from the loads' last trend: a pass or two fewer where the
+            // storeys flow.
+            st.load1.clear();
+            st.load1
+                .extend(st.load0.iter().zip(&st.trend).map(|(l, r)| l + r * len));
             st.len = len;
             let Plan {
                 mut y0,
