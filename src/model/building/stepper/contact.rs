@@ -77,6 +77,9 @@ pub(super) struct Scratch {
     /// ([`Storeys::quiet`](super::yielding::Storeys::quiet)): the laws are not followed and
     /// the corrections stay.
     quiet: bool,
+    /// The trial's storeys were followed to its end ([`Stepper::contact_end_loads`]) with the
+    /// modes it moved: its commit takes their ends as they are.
+    followed: bool,
     /// Per point, its slabs' predictions for the step, made by the trial, read by the commit
     /// (a live slab's, of every point the step reads: a point far out of reach has no live
     /// slab).
@@ -472,11 +475,12 @@ impl Stepper<'_> {
         }
         for s in 0..2 {
             match &self.sides[s].storeys {
-                Some(st) => cs.pseudo1[s].clone_from(&st.load0),
+                Some(st) => st.guess_into(hh.max(0.0), &mut cs.pseudo1[s]),
                 None => cs.pseudo1[s].clear(),
             }
         }
         cs.quiet = false;
+        cs.followed = false;
         // A step of no length (the release search's end point) has no end state to correct.
         if hh <= 0.0 {
             return self.trial_once(hh, cs);
@@ -491,6 +495,7 @@ impl Stepper<'_> {
             let change = self.contact_end_loads(&cs.trial.dq, hh, &mut pseudo1);
             cs.pseudo1 = pseudo1;
             if change <= 1e-13 {
+                cs.followed = true;
                 break;
             }
         }
@@ -921,7 +926,11 @@ impl Stepper<'_> {
         self.advance(hh);
         if self.yields() && !cs.quiet {
             let t1 = self.time();
-            self.commit_storeys(t1 - hh, t1);
+            if cs.followed {
+                self.commit_storeys_from_trial(&cs.pseudo1, t1 - hh, t1);
+            } else {
+                self.commit_storeys(t1 - hh, t1);
+            }
         }
         // A level asleep has no live slab: it fell asleep with its slabs quiet (a live one's
         // ringing has no bound), and only a level the step pushes revives them.

@@ -74,6 +74,9 @@ pub(super) struct Storeys {
     /// corrections at the end (a fine step is planned hundreds of thousands of times a run).
     plan: Plan,
     c1: std::cell::RefCell<Vec<f64>>,
+    /// Each storey's state, drift and rate at the end of the step [`Storeys::end_loads`] last
+    /// followed: what committing that step makes of them ([`Storeys::commit_ends`]).
+    ends: std::cell::RefCell<Vec<(StoreyState, f64, f64)>>,
 }
 
 /// The planning's buffers.
@@ -125,16 +128,20 @@ impl Storeys {
                 v1: vec![0.0; modes],
             },
             c1: std::cell::RefCell::new(Vec::with_capacity(n)),
+            ends: std::cell::RefCell::new(Vec::with_capacity(n)),
         }
     }
 
     /// Whether a contact step from the modes at `q`, `v` (where the storeys stand, or where
-    /// they stood when they went stale) that moves them by `dq` to velocities `v1` leaves every
-    /// storey inside its elastic range, turn included: then no correction moves and the laws
-    /// need not be followed. Only bilinear storeys have a range. A bound, by the rows' lengths
+    /// they stood when they went stale) that moves them by `dq` to velocities `v1`, made with
+    /// the loads as they are, leaves every storey inside its elastic range, turn included: then
+    /// no correction moves and the laws need not be followed. Only bilinear storeys have a range. A bound, by the rows' lengths
     /// and the distance from where the storeys last stood: no drift is summed.
     pub fn quiet(&self, q: &[f64], v: &[f64], dq: &[f64], v1: &[f64], hh: f64) -> bool {
-        if self.laws.first().map(|l| l.kind) != Some(Hysteresis::Bilinear) {
+        // A trial made with loads on the move ([`Storeys::guess_into`]) is not the quiet one.
+        if self.laws.first().map(|l| l.kind) != Some(Hysteresis::Bilinear)
+            || self.trend.iter().any(|r| *r != 0.0)
+        {
             return false;
         }
         let (q0, v0) = if self.stale {
@@ -201,6 +208,13 @@ impl Storeys {
         } else {
             self.state[j].drift_m
         }
+    }
+
+    /// Where the fixed point over a step of length `len` starts: the loads moved on at their
+    /// last trend (a pass or two fewer where the storeys flow), into `out`.
+    pub fn guess_into(&self, len: f64, out: &mut Vec<f64>) {
+        out.clear();
+        out.extend(self.load0.iter().zip(&self.trend).map(|(l, r)| l + r * len));
     }
 
     /// How many storeys.
@@ -272,6 +286,8 @@ impl Storeys {
     ) -> f64 {
         let mut c1 = self.c1.borrow_mut();
         c1.clear();
+        let mut ends = self.ends.borrow_mut();
+        ends.clear();
         let mut scale = 0.0f64;
         for (j, law) in self.laws.iter().enumerate() {
             let (u, r) = end(j);
@@ -288,6 +304,7 @@ impl Storeys {
             let c = Self::correction(law, &s);
             scale = scale.max(c.abs()).max(self.c0[j].abs());
             c1.push(c);
+            ends.push((s, u, r));
         }
         // Where no correction moved (every storey elastic over the step), the loads are the
         // ones now, to the bit: `loads` made them from the same corrections.
@@ -375,17 +392,7 @@ impl Storeys {
             let u = self.drift_of(j, q);
             let r = self.drift_of(j, v);
             let before = self.state[j].drift_m;
-            let uy = self.laws[j].yield_drift_m();
-            if self.first_yield_s[j].is_none() && u.abs() >= uy {
-                // Within the step, where the straight drift path reaches the yield drift.
-                let target = uy.copysign(u);
-                let share = if u != before {
-                    ((target - before) / (u - before)).clamp(0.0, 1.0)
-                } else {
-                    1.0
-                };
-                self.first_yield_s[j] = Some(t0 + share * (t1 - t0));
-            }
+            self.note_first_yield(j, before, u, t0, t1);
             Self::follow(
                 &self.laws[j],
                 &mut self.state[j],
@@ -408,6 +415,55 @@ impl Storeys {
             }
         } else {
             self.trend.fill(0.0);
+        }
+    }
+
+    /// [`Storeys::commit`] for the step [`Storeys::end_loads`] last followed, from `t0` to `t1`,
+    /// whose loads at the end it wrote into `load`: its ends taken as they are, without summing
+    /// the drifts again (a contact step's trial ends where the step does). False, and nothing
+    /// done, where that step has no ends (a state that was not finite).
+    pub fn commit_ends(&mut self, load: &[f64], t0: f64, t1: f64) -> bool {
+        let ends = std::mem::take(&mut *self.ends.borrow_mut());
+        if ends.len() != self.laws.len() || load.len() != self.load0.len() {
+            *self.ends.borrow_mut() = ends;
+            return false;
+        }
+        let mut moved = false;
+        for (j, &(s, u, r)) in ends.iter().enumerate() {
+            let before = self.state[j].drift_m;
+            self.note_first_yield(j, before, u, t0, t1);
+            self.state[j] = s;
+            self.rate[j] = r;
+            let c = Self::correction(&self.laws[j], &s);
+            moved |= c != self.c0[j];
+            self.c0[j] = c;
+        }
+        if moved {
+            let len = t1 - t0;
+            for ((r, now), was) in self.trend.iter_mut().zip(load).zip(&self.load0) {
+                *r = if len > 0.0 { (now - was) / len } else { 0.0 };
+            }
+            self.load0.copy_from_slice(load);
+        } else {
+            self.trend.fill(0.0);
+        }
+        *self.ends.borrow_mut() = ends;
+        true
+    }
+
+    /// Records when storey j's drift first reaches its yield drift, on the straight path from
+    /// `before` to `u` over the step from `t0` to `t1`.
+    fn note_first_yield(&mut self, j: usize, before: f64, u: f64, t0: f64, t1: f64) {
+        let uy = self.laws[j].yield_drift_m();
+        if self.first_yield_s[j].is_none() && u.abs() >= uy {
+            // Within the step, where the straight drift path reaches the yield drift.
+            let target = uy.copysign(u);
+            let share = if u != before {
+                ((target - before) / (u - before)).clamp(0.0, 1.0)
+            } else {
+                1.0
+            };
+            self.first_yield_s[j] = Some(t0 + share * (t1 - t0));
         }
     }
 
@@ -652,11 +708,9 @@ impl Stepper<'_> {
             let Some(st) = self.sides[s].storeys.as_mut() else {
                 continue;
             };
-            // The fixed point starts from the loads' last trend: a pass or two fewer where the
-            // storeys flow.
-            st.load1.clear();
-            st.load1
-                .extend(st.load0.iter().zip(&st.trend).map(|(l, r)| l + r * len));
+            let mut load1 = std::mem::take(&mut st.load1);
+            st.guess_into(len, &mut load1);
+            st.load1 = load1;
             st.len = len;
             let Plan {
                 mut y0,
@@ -729,6 +783,20 @@ impl Stepper<'_> {
             self.plan_free(first);
         }
         first
+    }
+
+    /// Every side's storeys moved through the contact step the last trial made, from `t0` to
+    /// `t1`, from its ends and its loads at the end (`load`, per side); where a side's trial
+    /// left none, as [`Stepper::commit_storeys`].
+    pub(super) fn commit_storeys_from_trial(&mut self, load: &[Vec<f64>; 2], t0: f64, t1: f64) {
+        for (side, load) in self.sides.iter_mut().zip(load) {
+            if let Some(st) = side.storeys.as_mut() {
+                if !st.commit_ends(load, t0, t1) {
+                    st.commit(&side.q, &side.v, t0, t1);
+                }
+                st.len = 0.0;
+            }
+        }
     }
 
     /// Every side's storeys brought to where the modes stand, where quiet contact steps left
