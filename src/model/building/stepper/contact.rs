@@ -509,6 +509,10 @@ impl Stepper<'_> {
             let Some(st) = side.storeys.as_ref() else {
                 return true;
             };
+            // A trial made with loads on the move (`Storeys::guess_into`) is not the quiet one.
+            if cs.pseudo1[s] != st.load0 {
+                return false;
+            }
             let n = side.modes();
             let dq = &cs.trial.dq[s];
             let v1: Vec<f64> = (0..n)

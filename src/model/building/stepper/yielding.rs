@@ -138,10 +138,7 @@ impl Storeys {
     /// no correction moves and the laws need not be followed. Only bilinear storeys have a range. A bound, by the rows' lengths
     /// and the distance from where the storeys last stood: no drift is summed.
     pub fn quiet(&self, q: &[f64], v: &[f64], dq: &[f64], v1: &[f64], hh: f64) -> bool {
-        // A trial made with loads on the move ([`Storeys::guess_into`]) is not the quiet one.
-        if self.laws.first().map(|l| l.kind) != Some(Hysteresis::Bilinear)
-            || self.trend.iter().any(|r| *r != 0.0)
-        {
+        if self.laws.first().map(|l| l.kind) != Some(Hysteresis::Bilinear) {
             return false;
         }
         let (q0, v0) = if self.stale {
@@ -214,7 +211,17 @@ impl Storeys {
     /// last trend (a pass or two fewer where the storeys flow), into `out`.
     pub fn guess_into(&self, len: f64, out: &mut Vec<f64>) {
         out.clear();
-        out.extend(self.load0.iter().zip(&self.trend).map(|(l, r)| l + r * len));
+        // Bilinear storeys inside their elastic ranges keep their corrections: their trend is
+        // round-off, and the loads as they are let a contact step be found quiet.
+        let inside = |(law, s): (&StoreyLaw, &StoreyState)| {
+            law.elastic_range_m(s)
+                .is_some_and(|(lo, hi)| s.drift_m > lo && s.drift_m < hi)
+        };
+        if self.stale || self.laws.iter().zip(&self.state).all(inside) {
+            out.extend_from_slice(&self.load0);
+        } else {
+            out.extend(self.load0.iter().zip(&self.trend).map(|(l, r)| l + r * len));
+        }
     }
 
     /// How many storeys.
