@@ -247,6 +247,7 @@ fn yielding_against_elastic(c: &mut Criterion) {
 criterion_group! {
     name = benches;
     config = Criterion::default().sample_size(20).warm_up_time(std::time::Duration::from_secs(1)).measurement_time(std::time::Duration::from_secs(3));
-    targets = el_centro_8s, three_against_five, whole_run, whole_run_side_by_side, gaps_20_records, yielding_against_elastic
+    targets = el_centro_8s, three_against_five, whole_run, whole_run_side_by_side, gaps_20_records,
+        yielding_against_elastic
 }
 criterion_main!(benches);

@@ -265,8 +265,8 @@ const SATURATED: f64 = 40.0;
 /// It is integrated in sigma = -ln(1 - w), where dsigma/dx = (1 - w^n) / (1 - w) lies between 1
 /// and n and tends to n at saturation: the equation is not stiff there, however short u_y, and
 /// its derivatives fall as 1 - w does, so the steps grow as the branch saturates (the error
-/// they leave in w goes as (1 - w)^2 dsigma^5) and about thirty of them take any start to
-/// saturation. Near w = 0, sigma = w to round-off, so a branch that hardly yields keeps the
+/// they leave in the dissipation goes as (1 - w) dsigma^5, in w as (1 - w)^2 dsigma^5) and
+/// about eighty of them take any start to saturation. Near w = 0, sigma = w to round-off, so a branch that hardly yields keeps the
 /// elastic drift exactly.
 fn loading_branch(w0: f64, x: f64, n: f64) -> (f64, f64) {
     // (1 - w^n) / (1 - w) and w^(n + 1) from sigma, without cancellation at either end.
@@ -286,8 +286,8 @@ fn loading_branch(w0: f64, x: f64, n: f64) -> (f64, f64) {
     while left > 0.0 && sigma < SATURATED {
         let (f1, d1) = rates(sigma);
         // A sixteenth in sigma where the branch bends most, as the knee needs, and longer steps
-        // as it flattens.
-        let reach = ((0.4 * sigma).exp() / 16.0).min(4.0);
+        // as it flattens: the dissipation's error goes as (1 - w) dsigma^5.
+        let reach = ((0.2 * sigma).exp() / 16.0).min(4.0);
         let h = left.min(reach / f1);
         let (f2, d2) = rates(sigma + 0.5 * h * f1);
         let (f3, d3) = rates(sigma + 0.5 * h * f2);
@@ -443,6 +443,48 @@ mod tests {
             "work {w} against {total}"
         );
         assert!(s.dissipated_j > 0.0);
+    }
+
+    #[test]
+    fn a_long_bouc_wen_path_ends_where_the_same_path_in_short_pieces_does() {
+        let uy = FY / K;
+        let scale = (1.0 - B) * K;
+        for n in [1.0, 2.0, 7.5, 100.0] {
+            let l = law(Hysteresis::BoucWen, n);
+            // From z = -u_y: unloading over 2 u_y, then the loading branch to saturation.
+            let start = StoreyState {
+                drift_m: 0.0,
+                inner_m: -uy,
+                dissipated_j: 0.0,
+            };
+            let x = 40.0;
+            let mut long = start;
+            l.advance(&mut long, x * uy);
+            let mut short = start;
+            let pieces = (x * 64.0 * n) as usize;
+            for i in 1..=pieces {
+                l.advance(&mut short, x * uy * i as f64 / pieces as f64);
+            }
+            assert!(
+                (long.inner_m - short.inner_m).abs() < 1e-9 * uy,
+                "n = {n}: z {} against {}",
+                long.inner_m,
+                short.inner_m
+            );
+            let rel = (long.dissipated_j - short.dissipated_j).abs() / short.dissipated_j;
+            assert!(rel < 1e-8, "n = {n}: dissipated off by {rel:e}");
+            // Far past saturation: z stays at u_y and the rest of the path dissipates
+            // (1 - b) k u_y per unit of drift.
+            let mut far = long;
+            l.advance(&mut far, 1e6 * uy);
+            assert_eq!(far.inner_m, uy, "n = {n}");
+            let more = far.dissipated_j - long.dissipated_j;
+            let want = scale * uy * (1e6 - x) * uy;
+            assert!(
+                (more - want).abs() < 1e-12 * want,
+                "n = {n}: {more} against {want}"
+            );
+        }
     }
 
     #[test]

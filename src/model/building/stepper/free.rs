@@ -144,7 +144,8 @@ impl Stepper<'_> {
         self.newmark = false;
         let g = self.grid;
         // To the next stretch's end (a sample of the record, or a free step's end where a stretch
-        // is one); the planned piece where storeys yield (their corrections are planned piece by piece).
+        // is one); the planned piece where storeys yield (their corrections are planned piece
+        // by piece).
         let len = (g.per_stretch - self.n % g.per_stretch).min(g.total - self.n);
         let len = if self.single_step {
             len.min(self.piece)

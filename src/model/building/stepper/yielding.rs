@@ -135,8 +135,9 @@ impl Storeys {
     /// Whether a contact step from the modes at `q`, `v` (where the storeys stand, or where
     /// they stood when they went stale) that moves them by `dq` to velocities `v1`, made with
     /// the loads as they are, leaves every storey inside its elastic range, turn included: then
-    /// no correction moves and the laws need not be followed. Only bilinear storeys have a range. A bound, by the rows' lengths
-    /// and the distance from where the storeys last stood: no drift is summed.
+    /// no correction moves and the laws need not be followed. Only bilinear storeys have a
+    /// range. A bound, by the rows' lengths and the distance from where the storeys last
+    /// stood: no drift is summed.
     pub fn quiet(&self, q: &[f64], v: &[f64], dq: &[f64], v1: &[f64], hh: f64) -> bool {
         if self.laws.first().map(|l| l.kind) != Some(Hysteresis::Bilinear) {
             return false;
@@ -178,8 +179,10 @@ impl Storeys {
     /// contact step, [`Storeys::quiet`]).
     pub fn go_stale(&mut self, q: &[f64], v: &[f64]) {
         if !self.stale {
-            self.synced[0].clone_from(&q.to_vec());
-            self.synced[1].clone_from(&v.to_vec());
+            self.synced[0].clear();
+            self.synced[0].extend_from_slice(q);
+            self.synced[1].clear();
+            self.synced[1].extend_from_slice(v);
             self.stale = true;
         }
     }
