@@ -1,7 +1,8 @@
 //! Criterion benchmarks of the building runs on 8 s of the shipped El Centro 1940 record: each
 //! contact element at the default tolerance (the paper's one-storey pair), the 3- against
 //! 5-storey pair, the whole run `pounding buildings` makes (the run, its error estimate and the
-//! run without contact), and the gap that avoids pounding over 20 records.
+//! run without contact), the gap that avoids pounding over 20 records, and yielding storeys
+//! against elastic ones.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use pounding::io::building_settings::BuildingSetup;
@@ -195,9 +196,58 @@ fn gaps_20_records(c: &mut Criterion) {
     g.finish();
 }
 
+/// The yielding preset with `settings` (as `--set`) applied, and its record.
+fn yielding_setup(settings: &[&str]) -> (BuildingScenario, GroundMotion) {
+    let mut setup: BuildingSetup =
+        preset::load_for("paper-buildings-yielding", "buildings").expect("a shipped preset");
+    for s in settings {
+        setup.apply_assignment(s).expect("a shipped key");
+    }
+    let motion = pounding::io::motion::load(&setup.motion).expect("its record");
+    (setup.scenario, motion)
+}
+
+/// What yielding storeys cost against elastic ones, the same run otherwise: the paper's pair
+/// (its yielding preset's record with settling) elastic, bilinear and Bouc-Wen (at the preset's
+/// yield forces and at the smallest accepted, 1e-3 N, where the law saturates at once), and a
+/// 10- against 10-storey pair. Its instruction counts come from `examples/building_loop` under
+/// callgrind with the same settings (README, "Yielding storeys").
+fn yielding_against_elastic(c: &mut Criterion) {
+    let mut g = c.benchmark_group("yielding");
+    g.sample_size(10);
+    let laws = |law: &str| {
+        [
+            format!("left.hysteresis={law}"),
+            format!("right.hysteresis={law}"),
+        ]
+    };
+    let mut cases: Vec<(String, Vec<String>)> = Vec::new();
+    for law in ["elastic", "bilinear", "bouc-wen"] {
+        cases.push((format!("paper_{law}"), laws(law).to_vec()));
+        let mut tall = laws(law).to_vec();
+        tall.extend(["left.storeys=10".into(), "right.storeys=10".into()]);
+        cases.push((format!("10_10_{law}"), tall));
+    }
+    let mut small = laws("bouc-wen").to_vec();
+    small.push("left.yield_forces=1e-3".into());
+    cases.push(("paper_bouc_wen_fy_1e-3_linear".into(), small));
+    for (name, settings) in cases {
+        let refs: Vec<&str> = settings.iter().map(String::as_str).collect();
+        let (mut sc, motion) = yielding_setup(&refs);
+        if name.ends_with("_linear") {
+            sc.contact = ContactModel::Linear;
+        }
+        g.bench_function(name, |b| {
+            b.iter(|| solve(black_box(&sc), black_box(&motion)).expect("solves"))
+        });
+    }
+    g.finish();
+}
+
 criterion_group! {
     name = benches;
     config = Criterion::default().sample_size(20).warm_up_time(std::time::Duration::from_secs(1)).measurement_time(std::time::Duration::from_secs(3));
-    targets = el_centro_8s, three_against_five, whole_run, whole_run_side_by_side, gaps_20_records
+    targets = el_centro_8s, three_against_five, whole_run, whole_run_side_by_side, gaps_20_records,
+        yielding_against_elastic
 }
 criterion_main!(benches);

@@ -187,42 +187,120 @@ impl StoreyLaw {
         }
     }
 
-    /// Runge-Kutta in the drift, in pieces short enough to resolve the knee (its width is about
-    /// u_y / n), with the dissipation (1 - b) k z (du - dz) integrated alongside.
+    /// The law on a straight drift path, in the normalised hysteretic drift w = z sgn(du) / u_y
+    /// and the path's length x = |du| / u_y: first the unloading branch (w < 0, dw/dx = 1, no
+    /// dissipation) up to w = 0, then the loading one, dw/dx = 1 - w^n, which saturates at w = 1
+    /// ([`loading_branch`]). The cost is bounded whatever the path's length against u_y: once w
+    /// is 1 to round-off, the rest of the path is the saturated line.
     fn advance_bouc_wen(&self, s: &mut StoreyState, drift_m: f64) {
         let du_total = drift_m - s.drift_m;
         if du_total == 0.0 {
             return;
         }
         let uy = self.yield_drift_m();
-        let piece = uy / (16.0 * self.bouc_wen_n.max(1.0));
-        // A path many yield drifts long (a yield force near zero) saturates z within its first
-        // pieces: 256 of them resolve the knee of any path up to 16 u_y / n, and beyond that z
-        // sits at its bound, where the clamp below keeps it.
-        let pieces = (du_total.abs() / piece).ceil().clamp(1.0, 256.0) as usize;
-        let du = du_total / pieces as f64;
-        let dir = du.signum();
-        let scale = (1.0 - self.hardening) * self.stiffness_n_m;
-        // y = (z, dissipated / scale): dz/du = g(z), d(e)/du = z (1 - g(z)).
-        let rate = |z: f64| {
-            let g = self.dz_du(z, dir);
-            (g, z * (1.0 - g))
-        };
-        let (mut z, mut e) = (s.inner_m, 0.0);
-        for _ in 0..pieces {
-            let (k1, e1) = rate(z);
-            let (k2, e2) = rate(z + 0.5 * du * k1);
-            let (k3, e3) = rate(z + 0.5 * du * k2);
-            let (k4, e4) = rate(z + du * k3);
-            z += du / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
-            e += du / 6.0 * (e1 + 2.0 * e2 + 2.0 * e3 + e4);
-            // z cannot pass u_y: dz/du vanishes there.
-            z = z.clamp(-uy, uy);
+        let dir = du_total.signum();
+        let mut x = du_total.abs() / uy;
+        let mut w = (dir * s.inner_m / uy).clamp(-1.0, 1.0);
+        if w < 0.0 {
+            let back = x.min(-w);
+            w += back;
+            x -= back;
+            if x <= 0.0 {
+                // Still on the unloading line: z moved with u.
+                s.inner_m = dir * uy * w;
+                s.drift_m = drift_m;
+                return;
+            }
+            w = w.max(0.0);
         }
-        s.inner_m = z;
-        s.dissipated_j += scale * e.max(0.0);
+        let n = self.bouc_wen_n;
+        let (w1, dissipated) = if x <= 1.0 / (16.0 * n.max(1.0)) {
+            short_loading(w, x, n)
+        } else {
+            loading_branch(w, x, n)
+        };
+        let scale = (1.0 - self.hardening) * self.stiffness_n_m;
+        s.inner_m = dir * uy * w1;
+        s.dissipated_j += scale * uy * uy * dissipated.max(0.0);
         s.drift_m = drift_m;
     }
+}
+
+/// w^n, by multiplications where n is a small whole number (the usual exponents).
+fn power(w: f64, n: f64) -> f64 {
+    // A cast, not `round`: without SSE4.1 that is a call.
+    let whole = n as i32;
+    match whole {
+        1 if n == 1.0 => w,
+        2 if n == 2.0 => w * w,
+        3 if n == 3.0 => w * w * w,
+        _ if f64::from(whole) == n && whole <= 64 => w.powi(whole),
+        _ => w.powf(n),
+    }
+}
+
+/// [`loading_branch`] over a path short against the knee (at most u_y / (16 n)): one
+/// Runge-Kutta step in w itself, where the knee is resolved and the step is well inside the
+/// stability bound (its rate's slope is at most n), without the transcendental functions the
+/// long paths' variable takes.
+fn short_loading(w0: f64, x: f64, n: f64) -> (f64, f64) {
+    let rates = |w: f64| {
+        let wn = power(w.clamp(0.0, 1.0), n);
+        (1.0 - wn, w * wn)
+    };
+    let (k1, d1) = rates(w0);
+    let (k2, d2) = rates(w0 + 0.5 * x * k1);
+    let (k3, d3) = rates(w0 + 0.5 * x * k2);
+    let (k4, d4) = rates(w0 + x * k3);
+    let w = w0 + x / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+    (w.min(1.0), x / 6.0 * (d1 + 2.0 * d2 + 2.0 * d3 + d4))
+}
+
+/// Past this, 1 - w = e^-sigma is below half an ulp of 1: the branch is saturated to round-off.
+const SATURATED: f64 = 40.0;
+
+/// Bouc-Wen's loading branch dw/dx = 1 - w^n from w0 in [0, 1] over a path of length x: the end
+/// w and the dissipation integral, of w (1 - dw/dx) = w^(n + 1) over the path.
+///
+/// It is integrated in sigma = -ln(1 - w), where dsigma/dx = (1 - w^n) / (1 - w) lies between 1
+/// and n and tends to n at saturation: the equation is not stiff there, however short u_y, and
+/// its derivatives fall as 1 - w does, so the steps grow as the branch saturates (the error
+/// they leave in the dissipation goes as (1 - w) dsigma^5, in w as (1 - w)^2 dsigma^5) and
+/// about eighty of them take any start to saturation. Near w = 0, sigma = w to round-off, so a branch that hardly yields keeps the
+/// elastic drift exactly.
+fn loading_branch(w0: f64, x: f64, n: f64) -> (f64, f64) {
+    // (1 - w^n) / (1 - w) and w^(n + 1) from sigma, without cancellation at either end.
+    let rates = |sigma: f64| {
+        let s = (-sigma).exp();
+        let w = -(-sigma).exp_m1();
+        let one_less_wn = if s > 0.0 {
+            -(n * (-s).ln_1p()).exp_m1()
+        } else {
+            1.0
+        };
+        let f = if s > 0.0 { one_less_wn / s } else { n };
+        (f, w * (1.0 - one_less_wn))
+    };
+    let mut sigma = if w0 < 1.0 { -(-w0).ln_1p() } else { SATURATED };
+    let (mut left, mut dissipated) = (x, 0.0);
+    while left > 0.0 && sigma < SATURATED {
+        let (f1, d1) = rates(sigma);
+        // A sixteenth in sigma where the branch bends most, as the knee needs, and longer steps
+        // as it flattens: the dissipation's error goes as (1 - w) dsigma^5.
+        let reach = ((0.2 * sigma).exp() / 16.0).min(4.0);
+        let h = left.min(reach / f1);
+        let (f2, d2) = rates(sigma + 0.5 * h * f1);
+        let (f3, d3) = rates(sigma + 0.5 * h * f2);
+        let (f4, d4) = rates(sigma + h * f3);
+        sigma += h / 6.0 * (f1 + 2.0 * f2 + 2.0 * f3 + f4);
+        dissipated += h / 6.0 * (d1 + 2.0 * d2 + 2.0 * d3 + d4);
+        left -= h;
+    }
+    if sigma >= SATURATED {
+        // On the saturated line w = 1, where all the work is dissipated.
+        return (1.0, dissipated + left.max(0.0));
+    }
+    (-(-sigma).exp_m1(), dissipated)
 }
 
 #[cfg(test)]
@@ -365,6 +443,48 @@ mod tests {
             "work {w} against {total}"
         );
         assert!(s.dissipated_j > 0.0);
+    }
+
+    #[test]
+    fn a_long_bouc_wen_path_ends_where_the_same_path_in_short_pieces_does() {
+        let uy = FY / K;
+        let scale = (1.0 - B) * K;
+        for n in [1.0, 2.0, 7.5, 100.0] {
+            let l = law(Hysteresis::BoucWen, n);
+            // From z = -u_y: unloading over 2 u_y, then the loading branch to saturation.
+            let start = StoreyState {
+                drift_m: 0.0,
+                inner_m: -uy,
+                dissipated_j: 0.0,
+            };
+            let x = 40.0;
+            let mut long = start;
+            l.advance(&mut long, x * uy);
+            let mut short = start;
+            let pieces = (x * 64.0 * n) as usize;
+            for i in 1..=pieces {
+                l.advance(&mut short, x * uy * i as f64 / pieces as f64);
+            }
+            assert!(
+                (long.inner_m - short.inner_m).abs() < 1e-9 * uy,
+                "n = {n}: z {} against {}",
+                long.inner_m,
+                short.inner_m
+            );
+            let rel = (long.dissipated_j - short.dissipated_j).abs() / short.dissipated_j;
+            assert!(rel < 1e-8, "n = {n}: dissipated off by {rel:e}");
+            // Far past saturation: z stays at u_y and the rest of the path dissipates
+            // (1 - b) k u_y per unit of drift.
+            let mut far = long;
+            l.advance(&mut far, 1e6 * uy);
+            assert_eq!(far.inner_m, uy, "n = {n}");
+            let more = far.dissipated_j - long.dissipated_j;
+            let want = scale * uy * (1e6 - x) * uy;
+            assert!(
+                (more - want).abs() < 1e-12 * want,
+                "n = {n}: {more} against {want}"
+            );
+        }
     }
 
     #[test]

@@ -19,6 +19,12 @@ use std::time::Instant;
 /// The most fine steps one free step spans (its exact sub-steps are precomputed).
 pub(super) const MAX_FREE_STEP: usize = 4096;
 
+/// How far a yielding storey's correction may depart from the line a piece of free motion takes
+/// it on, in its middle, relative to the tolerance and to the storey's force scale: the
+/// line's error in the response goes as that departure (a load error of that share of the
+/// storey's force), and so does the energy ledger's gap.
+const YIELD_DEPARTURE: f64 = 0.01;
+
 /// Memory the Sears slabs' forces, kept for drawing their waves, may take [bytes]: 8 bytes a
 /// force, shared out equally between the slabs. A slab keeps every grid point's force while they
 /// fit in its share and every second one of those each time they outgrow it, so that this memory
@@ -147,13 +153,12 @@ fn plan(
         .flat_map(|m| m.omega_rad_s.iter())
         .fold(0.0f64, |a, &w| a.max(w));
     let check = ((2.4 / w_max / h).floor() as usize).clamp(1, per_stretch);
-    // Where storeys yield, a piece of free motion takes the correction linear in time: its error
-    // goes as (w dt)^2 (and the energy ledger's gap with it), so a piece is held to
-    // w_max dt <= 0.3 sqrt(tolerance) (a balance within 1e-7 on the paper's pair), and refines
-    // with the tolerance.
-    let yield_piece = ((0.3 * sc.tolerance.sqrt() / w_max / f64::from(refine) / h).floor()
-        as usize)
-        .clamp(1, per_free_step);
+    // Where storeys yield, a piece of free motion takes the correction linear in time: its
+    // error goes as the correction's departure from that line over the piece, which each
+    // piece measures ([`Grid::yield_departure`]); held to a share of the tolerance it refines
+    // with the tolerance, and halves the pieces of a run refined twofold (the estimate's
+    // companion), as the line's error goes as the square of the piece.
+    let yield_departure = YIELD_DEPARTURE * sc.tolerance / f64::from(refine * refine);
     let slab_share = slab_share(slabs);
     // The peaks' proofs look at the signals once a batch of contact steps: at most a third of
     // the contact's time scale (steps per scale, not the step: the companion's batches are as
@@ -170,7 +175,7 @@ fn plan(
             per_stretch,
             total,
             check,
-            yield_piece,
+            yield_departure,
             contact_sample_s: (scale / CONTACT_SAMPLES_PER_SCALE)
                 .max(h)
                 .max(duration / CONTACT_SAMPLE_BUDGET),

@@ -73,6 +73,13 @@ pub(super) struct Scratch {
     closing_step: Vec<usize>,
     /// Yielding storeys: each side's load of their corrections at the trial's end, per mode.
     pseudo1: [Vec<f64>; 2],
+    /// The trial leaves every yielding storey inside its elastic range
+    /// ([`Storeys::quiet`](super::yielding::Storeys::quiet)): the laws are not followed and
+    /// the corrections stay.
+    quiet: bool,
+    /// The trial's storeys were followed to its end ([`Stepper::contact_end_loads`]) with the
+    /// modes it moved: its commit takes their ends as they are.
+    followed: bool,
     /// Per point, its slabs' predictions for the step, made by the trial, read by the commit
     /// (a live slab's, of every point the step reads: a point far out of reach has no live
     /// slab).
@@ -468,23 +475,51 @@ impl Stepper<'_> {
         }
         for s in 0..2 {
             match &self.sides[s].storeys {
-                Some(st) => cs.pseudo1[s].clone_from(&st.load0),
+                Some(st) => st.guess_into(hh.max(0.0), &mut cs.pseudo1[s]),
                 None => cs.pseudo1[s].clear(),
             }
         }
+        cs.quiet = false;
+        cs.followed = false;
         // A step of no length (the release search's end point) has no end state to correct.
         if hh <= 0.0 {
             return self.trial_once(hh, cs);
         }
-        for _ in 0..MAX_PASSES {
+        for pass in 0..MAX_PASSES {
             self.trial_once(hh, cs);
+            if pass == 0 && self.trial_is_quiet(hh, cs) {
+                cs.quiet = true;
+                return;
+            }
             let mut pseudo1 = std::mem::take(&mut cs.pseudo1);
             let change = self.contact_end_loads(&cs.trial.dq, hh, &mut pseudo1);
             cs.pseudo1 = pseudo1;
             if change <= 1e-13 {
+                cs.followed = true;
                 break;
             }
         }
+    }
+
+    /// Whether the trial just made, with the corrections as they are, leaves every yielding
+    /// storey of both sides inside its elastic range.
+    fn trial_is_quiet(&self, hh: f64, cs: &Scratch) -> bool {
+        (0..2).all(|s| {
+            let side = &self.sides[s];
+            let Some(st) = side.storeys.as_ref() else {
+                return true;
+            };
+            // A trial made with loads on the move (`Storeys::guess_into`) is not the quiet one.
+            if cs.pseudo1[s] != st.load0 {
+                return false;
+            }
+            let n = side.modes();
+            let dq = &cs.trial.dq[s];
+            let v1: Vec<f64> = (0..n)
+                .map(|k| lanes::newmark_end(dq[k], side.v[k], side.a[k], hh).0)
+                .collect();
+            st.quiet(&side.q, &side.v, dq, &v1, hh)
+        })
     }
 
     /// The contact step of length hh with the storeys' corrections at its end as in
@@ -877,12 +912,29 @@ impl Stepper<'_> {
         for &i in &cs.awake {
             self.keep_closing_before(i, &mut cs.u_before, &cs.closing_step, n);
         }
+        if self.yields() {
+            // A quiet step leaves the storeys where they stand; any other follows them from
+            // where the modes stand now.
+            for side in self.sides.iter_mut() {
+                if let Some(st) = side.storeys.as_mut() {
+                    if cs.quiet {
+                        st.go_stale(&side.q, &side.v);
+                    } else {
+                        st.sync(&side.q, &side.v);
+                    }
+                }
+            }
+        }
         let sizes = self.commit_modes(cs, n);
         let tr = &cs.trial;
         self.advance(hh);
-        if self.yields() {
+        if self.yields() && !cs.quiet {
             let t1 = self.time();
-            self.commit_storeys(t1 - hh, t1);
+            if cs.followed {
+                self.commit_storeys_from_trial(&cs.pseudo1, t1 - hh, t1);
+            } else {
+                self.commit_storeys(t1 - hh, t1);
+            }
         }
         // A level asleep has no live slab: it fell asleep with its slabs quiet (a live one's
         // ringing has no bound), and only a level the step pushes revives them.

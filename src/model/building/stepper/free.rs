@@ -144,10 +144,11 @@ impl Stepper<'_> {
         self.newmark = false;
         let g = self.grid;
         // To the next stretch's end (a sample of the record, or a free step's end where a stretch
-        // is one); one fine step where storeys yield (their corrections are planned step by step).
+        // is one); the planned piece where storeys yield (their corrections are planned piece
+        // by piece).
         let len = (g.per_stretch - self.n % g.per_stretch).min(g.total - self.n);
         let len = if self.single_step {
-            len.min(self.grid.yield_piece)
+            len.min(self.piece)
         } else {
             len
         };

@@ -69,8 +69,9 @@ pub(super) struct Grid {
     pub read_every: usize,
     /// The spacing of the recorded samples inside contacts [s].
     pub contact_sample_s: f64,
-    /// Fine steps a planned piece of free motion takes at most where storeys yield.
-    pub yield_piece: usize,
+    /// Where storeys yield: how far a storey's correction may depart from the line a piece of
+    /// free motion takes it on, relative to the storey's force scale ([`Stepper::plan_piece`]).
+    pub yield_departure: f64,
     /// The most forces each Sears slab keeps for drawing its waves (its part of
     /// [`SLAB_MEMORY_BUDGET`](super::super::solve::SLAB_MEMORY_BUDGET)).
     pub slab_share: usize,
@@ -404,8 +405,11 @@ pub(super) struct Stepper<'a> {
     /// a step: the level's contact steps on the grid after a contact step, with the level in
     /// contact, are the single level's (`contact/single.rs`).
     single_level: bool,
-    /// The next free step is one fine step (yielding storeys near or past their yield point).
+    /// The next free step is a planned piece (yielding storeys near or past their yield point).
     single_step: bool,
+    /// Its length in fine steps, and the length the next one tries first.
+    piece: usize,
+    piece_guess: usize,
     /// Each level's largest closing motion is followed: in a run without contact, where it is
     /// the gap that avoids contact (a run with contact reports none).
     follow_closing: bool,
@@ -583,6 +587,8 @@ impl<'a> Stepper<'a> {
             tall,
             single_level,
             single_step: false,
+            piece: 1,
+            piece_guess: 1,
             follow_closing: sc.contact == ContactModel::None,
             scratch: Some(Box::default()),
             contact_scratch: Some(contact_scratch),
@@ -653,9 +659,12 @@ impl<'a> Stepper<'a> {
             .map(|p| p.element.stored_energy(p.delta))
             .sum();
         let l = self.ledger;
-        let storeys = self.sides.iter().filter_map(|s| s.storeys.as_ref());
-        let (hysteretic, stored_less_elastic) = storeys.fold((0.0, 0.0), |(h, e), st| {
-            (h + st.dissipated_j(), e + st.stored_less_elastic_j())
+        let storeys = self
+            .sides
+            .iter()
+            .filter_map(|s| s.storeys.as_ref().map(|st| (st, &s.q)));
+        let (hysteretic, stored_less_elastic) = storeys.fold((0.0, 0.0), |(h, e), (st, q)| {
+            (h + st.dissipated_j(), e + st.stored_less_elastic_j(q))
         });
         BuildingEnergy {
             initial_j: l.initial_j,
@@ -677,21 +686,33 @@ impl<'a> Stepper<'a> {
         let end = self.grid.total;
         let mut looked_at = 0;
         let mut looked_steps = 0;
+        // A step where storeys yield also moves every storey of its side: it costs about as
+        // many elastic steps as the side has storeys, so the control is looked at as often in
+        // time (a tall yielding pair streams its progress as an elastic one does).
+        let storeys = self
+            .sides
+            .iter()
+            .filter_map(|s| s.storeys.as_ref().map(Storeys::count))
+            .max()
+            .unwrap_or(1);
+        let every = (CHECK_EVERY / storeys.max(1)).max(16);
         while self.n < end {
-            // Look every CHECK_EVERY steps taken, and every CHECK_EVERY free stretches' worth
-            // of the grid, whichever comes first.
+            // Look every `every` steps taken, and every CHECK_EVERY free stretches' worth of
+            // the grid, whichever comes first.
             if self.n >= looked_at || self.steps >= looked_steps {
                 control.report(self.n as f64 / end.max(1) as f64)?;
                 self.check_bounded()?;
                 self.check_memory()?;
                 watch(self);
                 looked_at = self.n + CHECK_EVERY * self.grid.per_free_step;
-                looked_steps = self.steps + CHECK_EVERY;
+                looked_steps = self.steps + every;
             }
             if self.points.iter().any(|p| p.force > 0.0) {
                 self.contact_step()?;
                 continue;
             }
+            // The free motion's plans and commits follow the storeys from where they stand.
+            self.sync_storeys();
             self.close_batch();
             if self.offset > 0.0 {
                 // Back onto the grid after an event inside a step.
@@ -707,14 +728,22 @@ impl<'a> Stepper<'a> {
             }
             self.single_step = self.yields() && !self.plan_stretch();
             if self.single_step {
-                // A storey's law changing branch inside the piece: up to there first.
+                // A storey's law changing branch inside the piece: up to there first, the whole
+                // fine steps before it as a piece of their own (a step off the grid is checked
+                // at its end only, and a Sears slab's onset only on the grid).
                 let planned = self.planned_piece();
-                let piece = self.step_to_first_event(planned);
-                if piece < planned {
-                    if let Some(level) = self.free_partial(piece)? {
-                        self.onset_in_partial(level, piece)?;
+                let first = self.first_storey_event(planned);
+                if first < planned {
+                    let whole = (first / self.grid.h + 1e-9) as usize;
+                    if whole == 0 {
+                        self.plan_free(first);
+                        if let Some(level) = self.free_partial(first)? {
+                            self.onset_in_partial(level, first)?;
+                        }
+                        continue;
                     }
-                    continue;
+                    self.piece = whole;
+                    self.plan_free(whole as f64 * self.grid.h);
                 }
             }
             match self.free_step()? {

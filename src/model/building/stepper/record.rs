@@ -596,7 +596,7 @@ impl Stepper<'_> {
             rec.roof_a[s].push(roof_a + ground);
             if let Some(st) = &side.storeys {
                 for (j, column) in rec.storey_shear[s].iter_mut().enumerate() {
-                    column.push(st.shear_n(j));
+                    column.push(st.shear_n(j, &side.q));
                 }
             }
         }

@@ -7,9 +7,22 @@
 //! corrections as one more load on the modes.
 //!
 //! Over a step the correction is taken linear in time between its values at both ends, and the
-//! value at the end comes from the storey's law along the straight drift path of the step: a
-//! fixed point, since the end drift depends on the correction. Over a fine step the map is a
-//! strong contraction (its factor is about (w h)^2 / 6), so it settles in two or three passes.
+//! value at the end comes from the storey's law along the drift path of the step: a fixed
+//! point, since the end drift depends on the correction. The map is a contraction of factor
+//! about (w L)^2 / 6 over a step of length L, so it settles in a few passes.
+//!
+//! How long a piece of free motion may be is the correction's to say, not the building's
+//! highest mode: the line's error in the response is the correction's departure from it, so
+//! each piece measures that departure in its middle (following the laws there) and is as long
+//! as keeps it within a share of the tolerance of the storey's force. Where the storeys are
+//! quiet (the correction hardly moves, as in a tall building whose top modes barely stir its
+//! storeys) the pieces run to the free step's end; where one flows they shorten to what its
+//! drift's curvature allows. A bilinear storey's yield is a corner of the correction and is
+//! located; a turn is not (see [`first_event`]).
+//!
+//! In contact steps a bilinear storey that provably stays inside its elastic range over the
+//! step (a bound, [`Storeys::quiet`]) is left where it stands, its correction unchanged: no
+//! drift is summed for it until a step is not quiet or the free motion resumes.
 
 use super::*;
 use crate::model::bound::{Envelope, envelope};
@@ -17,6 +30,11 @@ use crate::model::hysteresis::{Hysteresis, StoreyLaw, StoreyState};
 
 /// The most passes of the fixed point over one step.
 pub(super) const MAX_PASSES: usize = 60;
+
+/// A piece longer than a fine step whose fixed point takes more passes than this is shortened:
+/// the map's contraction goes as the square of the piece, so a shorter one settles sooner and
+/// costs less.
+const PIECE_PASSES: usize = 12;
 
 /// An event closer than this share of its step to either end is left inside the step: a piece
 /// that short would cost a step and change nothing the law can tell.
@@ -30,9 +48,14 @@ pub(super) struct Storeys {
     pub state: Vec<StoreyState>,
     /// `drift[j][k]`: storey j's drift per unit of mode k.
     drift: Vec<Vec<f64>>,
+    /// `by_mode[k][j]`: the same, mode by mode, so that a mode's load from the corrections
+    /// reads consecutive memory.
+    by_mode: Vec<Vec<f64>>,
     /// The corrections now [N], and their load on each mode.
     c0: Vec<f64>,
     pub load0: Vec<f64>,
+    /// How fast each mode's load moved over the last step committed [N/s].
+    trend: Vec<f64>,
     /// The planned free step: each mode's load at its end, and its length.
     pub load1: Vec<f64>,
     pub len: f64,
@@ -40,10 +63,20 @@ pub(super) struct Storeys {
     pub first_yield_s: Vec<Option<f64>>,
     /// Each storey's drift rate where the current time stands [m/s].
     rate: Vec<f64>,
+    /// The storeys' drifts and rates (`state`, `rate`) lag the modes: contact steps over which
+    /// every storey provably stayed elastic left them (and the corrections, unchanged) alone.
+    /// They were last moved with the modes at `synced` (displacements, velocities).
+    pub stale: bool,
+    synced: [Vec<f64>; 2],
+    /// Each storey's drift per unit of modal displacement at most: the length of its row.
+    reach: Vec<f64>,
     /// Buffers a step's planning reuses: the modes' augmented states, their ends, and the
     /// corrections at the end (a fine step is planned hundreds of thousands of times a run).
     plan: Plan,
     c1: std::cell::RefCell<Vec<f64>>,
+    /// Each storey's state, drift and rate at the end of the step [`Storeys::end_loads`] last
+    /// followed: what committing that step makes of them ([`Storeys::commit_ends`]).
+    ends: std::cell::RefCell<Vec<(StoreyState, f64, f64)>>,
 }
 
 /// The planning's buffers.
@@ -67,12 +100,24 @@ impl Storeys {
             })
             .collect();
         let modes = shapes.len();
+        let by_mode = (0..modes)
+            .map(|k| drift.iter().map(|d| d[k]).collect())
+            .collect();
+        let reach = drift
+            .iter()
+            .map(|d| d.iter().map(|x| x * x).sum::<f64>().sqrt())
+            .collect();
         Storeys {
+            stale: false,
+            synced: [Vec::new(), Vec::new()],
+            reach,
             laws,
             state: vec![StoreyState::default(); n],
             drift,
+            by_mode,
             c0: vec![0.0; n],
             load0: vec![0.0; modes],
+            trend: vec![0.0; modes],
             load1: vec![0.0; modes],
             len: 0.0,
             first_yield_s: vec![None; n],
@@ -83,7 +128,108 @@ impl Storeys {
                 v1: vec![0.0; modes],
             },
             c1: std::cell::RefCell::new(Vec::with_capacity(n)),
+            ends: std::cell::RefCell::new(Vec::with_capacity(n)),
         }
+    }
+
+    /// Whether a contact step from the modes at `q`, `v` (where the storeys stand, or where
+    /// they stood when they went stale) that moves them by `dq` to velocities `v1`, made with
+    /// the loads as they are, leaves every storey inside its elastic range, turn included: then
+    /// no correction moves and the laws need not be followed. Only bilinear storeys have a
+    /// range. A bound, by the rows' lengths and the distance from where the storeys last
+    /// stood: no drift is summed.
+    pub fn quiet(&self, q: &[f64], v: &[f64], dq: &[f64], v1: &[f64], hh: f64) -> bool {
+        if self.laws.first().map(|l| l.kind) != Some(Hysteresis::Bilinear) {
+            return false;
+        }
+        let (q0, v0) = if self.stale {
+            (&self.synced[0][..], &self.synced[1][..])
+        } else {
+            (q, v)
+        };
+        let (mut start, mut end, mut speed) = (0.0f64, 0.0f64, 0.0f64);
+        for k in 0..q.len() {
+            let off = q[k] - q0[k];
+            start += off * off;
+            end += (off + dq[k]) * (off + dq[k]);
+            speed = speed.max((v[k] - v0[k]).abs()).max((v1[k] - v0[k]).abs());
+        }
+        // Velocities by their largest change (any norm bounds the sum's rows with the
+        // dimension's root).
+        let dim = (q.len() as f64).sqrt();
+        let moved = start.max(end).sqrt();
+        for (j, law) in self.laws.iter().enumerate() {
+            let Some((lo, hi)) = law.elastic_range_m(&self.state[j]) else {
+                return false;
+            };
+            let u = self.state[j].drift_m;
+            let rate = self.rate[j].abs() + self.reach[j] * dim * speed;
+            // The path between the step's ends is the cubic through their drifts and rates:
+            // within 4/27 of the step times each end's rate of the line between them.
+            let spread = self.reach[j] * moved + 0.3 * hh * rate;
+            let margin = 1e-9 * (hi - lo);
+            if !(u - spread > lo + margin && u + spread < hi - margin) {
+                return false;
+            }
+        }
+        true
+    }
+
+    /// The storeys left where they stand while the modes move on from `q`, `v` (a quiet
+    /// contact step, [`Storeys::quiet`]).
+    pub fn go_stale(&mut self, q: &[f64], v: &[f64]) {
+        if !self.stale {
+            self.synced[0].clear();
+            self.synced[0].extend_from_slice(q);
+            self.synced[1].clear();
+            self.synced[1].extend_from_slice(v);
+            self.stale = true;
+        }
+    }
+
+    /// The storeys brought to the modes at `q`, `v` after quiet contact steps: inside its
+    /// elastic range a bilinear storey's state is its drift's alone, so the steps it skipped
+    /// would have left it just so.
+    pub fn sync(&mut self, q: &[f64], v: &[f64]) {
+        if !self.stale {
+            return;
+        }
+        for j in 0..self.laws.len() {
+            self.state[j].drift_m = self.drift_of(j, q);
+            self.rate[j] = self.drift_of(j, v);
+        }
+        self.stale = false;
+    }
+
+    /// Storey j's drift with the modes at `q` where the storeys lag them, its own otherwise.
+    fn drift_now(&self, j: usize, q: &[f64]) -> f64 {
+        if self.stale {
+            self.drift_of(j, q)
+        } else {
+            self.state[j].drift_m
+        }
+    }
+
+    /// Where the fixed point over a step of length `len` starts: the loads moved on at their
+    /// last trend (a pass or two fewer where the storeys flow), into `out`.
+    pub fn guess_into(&self, len: f64, out: &mut Vec<f64>) {
+        out.clear();
+        // Bilinear storeys inside their elastic ranges keep their corrections: their trend is
+        // round-off, and the loads as they are let a contact step be found quiet.
+        let inside = |(law, s): (&StoreyLaw, &StoreyState)| {
+            law.elastic_range_m(s)
+                .is_some_and(|(lo, hi)| s.drift_m > lo && s.drift_m < hi)
+        };
+        if self.stale || self.laws.iter().zip(&self.state).all(inside) {
+            out.extend_from_slice(&self.load0);
+        } else {
+            out.extend(self.load0.iter().zip(&self.trend).map(|(l, r)| l + r * len));
+        }
+    }
+
+    /// How many storeys.
+    pub fn count(&self) -> usize {
+        self.laws.len()
     }
 
     /// Each storey's drift rate taken from modal velocities v (the start, or a velocity jump).
@@ -117,15 +263,6 @@ impl Storeys {
         dotv(&self.drift[j], q)
     }
 
-    /// Storey j's drift with the modes at q + dq [m].
-    fn drift_after(&self, j: usize, q: &[f64], dq: &[f64]) -> f64 {
-        self.drift[j]
-            .iter()
-            .zip(q.iter().zip(dq))
-            .map(|(d, (q, dq))| d * (q + dq))
-            .sum()
-    }
-
     /// Mode k's load over the planned free step: its value now and its rate.
     pub fn pseudo(&self, k: usize) -> (f64, f64) {
         let rate = if self.len > 0.0 {
@@ -141,25 +278,26 @@ impl Storeys {
         law.stiffness_n_m * s.drift_m - law.force_n(s)
     }
 
-    /// Each mode's load from corrections `c` on storeys of drift rows `drift`, into `out`.
-    fn loads(drift: &[Vec<f64>], c: &[f64], out: &mut Vec<f64>) {
+    /// Each mode's load from corrections `c` on storeys of drift columns `by_mode`, into `out`.
+    fn loads(by_mode: &[Vec<f64>], c: &[f64], out: &mut Vec<f64>) {
         out.clear();
-        out.resize(drift.first().map_or(0, Vec::len), 0.0);
-        for (cj, dj) in c.iter().zip(drift) {
-            if *cj != 0.0 {
-                for (o, d) in out.iter_mut().zip(dj) {
-                    *o += cj * d;
-                }
-            }
-        }
+        out.extend(by_mode.iter().map(|d| dotv(d, c)));
     }
 
     /// The loads at the end of a step of length `len` that brings storey j to the drift and
     /// rate `end(j)` (each storey along its path, [`Storeys::follow`]), into `out`; the largest
     /// change of a load from what `out` held, relative to the largest load before or after.
-    fn end_loads(&self, end: impl Fn(usize) -> (f64, f64), len: f64, out: &mut [f64]) -> f64 {
+    fn end_loads(
+        &self,
+        end: impl Fn(usize) -> (f64, f64),
+        start: impl Fn(usize) -> (f64, f64),
+        len: f64,
+        out: &mut [f64],
+    ) -> f64 {
         let mut c1 = self.c1.borrow_mut();
         c1.clear();
+        let mut ends = self.ends.borrow_mut();
+        ends.clear();
         let mut scale = 0.0f64;
         for (j, law) in self.laws.iter().enumerate() {
             let (u, r) = end(j);
@@ -167,21 +305,36 @@ impl Storeys {
                 // No end state to follow (a trial that failed): the loads stay as they were.
                 return 0.0;
             }
-            let mut s = self.state[j];
-            Self::follow(law, &mut s, self.rate[j], (u, r), len);
+            let (u0, r0) = start(j);
+            let mut s = StoreyState {
+                drift_m: u0,
+                ..self.state[j]
+            };
+            Self::follow(law, &mut s, r0, (u, r), len);
             let c = Self::correction(law, &s);
             scale = scale.max(c.abs()).max(self.c0[j].abs());
             c1.push(c);
+            ends.push((s, u, r));
         }
-        // Mode by mode, in the storeys' order (as `loads` sums), comparing as it writes.
-        let (mut change, mut load_scale) = (0.0f64, 0.0f64);
-        for (k, o) in out.iter_mut().enumerate() {
-            let mut load = 0.0;
-            for (cj, dj) in c1.iter().zip(&self.drift) {
-                if *cj != 0.0 {
-                    load += cj * dj[k];
-                }
+        // Where no correction moved (every storey elastic over the step), the loads are the
+        // ones now, to the bit: `loads` made them from the same corrections.
+        if c1.iter().zip(&self.c0).all(|(a, b)| a == b) && out.len() == self.load0.len() {
+            let (mut change, mut load_scale) = (0.0f64, 0.0f64);
+            for (o, l) in out.iter_mut().zip(&self.load0) {
+                change = change.max((l - *o).abs());
+                load_scale = load_scale.max(l.abs()).max(o.abs());
+                *o = *l;
             }
+            return if scale == 0.0 || load_scale == 0.0 {
+                0.0
+            } else {
+                change / load_scale
+            };
+        }
+        // Mode by mode, as `loads` sums, comparing as it writes.
+        let (mut change, mut load_scale) = (0.0f64, 0.0f64);
+        for (o, d) in out.iter_mut().zip(&self.by_mode) {
+            let load = dotv(d, &c1);
             change = change.max((load - *o).abs());
             load_scale = load_scale.max(load.abs()).max(o.abs());
             *o = load;
@@ -193,29 +346,63 @@ impl Storeys {
         }
     }
 
-    /// Storey j's shear force now [N].
-    pub fn shear_n(&self, j: usize) -> f64 {
-        self.laws[j].force_n(&self.state[j])
+    /// How far the corrections a step's plan reaches at a point `theta` of its way (a length
+    /// `len` in) depart from the line between its ends, each storey's departure over
+    /// `allowed` times its force scale (its correction at either end, or the share of its yield
+    /// force it may correct, or of its elastic force where that is less): the largest, where
+    /// storey j stands at the drift and rate `at(j)` there. Infinite where a state is not
+    /// finite. The ends' corrections are those [`Storeys::end_loads`] left.
+    fn departure(
+        &self,
+        at: impl Fn(usize) -> (f64, f64),
+        len: f64,
+        theta: f64,
+        allowed: f64,
+    ) -> f64 {
+        let c1 = self.c1.borrow();
+        if c1.len() != self.laws.len() {
+            return f64::INFINITY;
+        }
+        let mut worst = 0.0f64;
+        for (j, law) in self.laws.iter().enumerate() {
+            let (u, r) = at(j);
+            if !u.is_finite() || !r.is_finite() {
+                return f64::INFINITY;
+            }
+            let mut s = self.state[j];
+            let reach = s.drift_m.abs().max(u.abs());
+            Self::follow(law, &mut s, self.rate[j], (u, r), len);
+            let c = Self::correction(law, &s);
+            let (a, b) = (self.c0[j], c1[j]);
+            let line = a + theta * (b - a);
+            let own = (1.0 - law.hardening) * law.yield_force_n.min(law.stiffness_n_m * reach);
+            let scale = a.abs().max(b.abs()).max(own);
+            let off = (c - line).abs();
+            if off > 0.0 {
+                worst = worst.max(off / (allowed * scale));
+            }
+        }
+        worst
+    }
+
+    /// Storey j's shear force now [N], the modes at `q`.
+    pub fn shear_n(&self, j: usize, q: &[f64]) -> f64 {
+        let s = StoreyState {
+            drift_m: self.drift_now(j, q),
+            ..self.state[j]
+        };
+        self.laws[j].force_n(&s)
     }
 
     /// Moves every storey to the drifts of the modes at q (their rates at v), along their paths
     /// from where they stand, over the step from `t0` to `t1`.
     pub fn commit(&mut self, q: &[f64], v: &[f64], t0: f64, t1: f64) {
+        let mut moved = false;
         for j in 0..self.laws.len() {
             let u = self.drift_of(j, q);
             let r = self.drift_of(j, v);
             let before = self.state[j].drift_m;
-            let uy = self.laws[j].yield_drift_m();
-            if self.first_yield_s[j].is_none() && u.abs() >= uy {
-                // Within the step, where the straight drift path reaches the yield drift.
-                let target = uy.copysign(u);
-                let share = if u != before {
-                    ((target - before) / (u - before)).clamp(0.0, 1.0)
-                } else {
-                    1.0
-                };
-                self.first_yield_s[j] = Some(t0 + share * (t1 - t0));
-            }
+            self.note_first_yield(j, before, u, t0, t1);
             Self::follow(
                 &self.laws[j],
                 &mut self.state[j],
@@ -224,9 +411,70 @@ impl Storeys {
                 t1 - t0,
             );
             self.rate[j] = r;
-            self.c0[j] = Self::correction(&self.laws[j], &self.state[j]);
+            let c = Self::correction(&self.laws[j], &self.state[j]);
+            moved |= c != self.c0[j];
+            self.c0[j] = c;
         }
-        Self::loads(&self.drift, &self.c0, &mut self.load0);
+        // Unmoved corrections keep their loads, to the bit.
+        if moved || self.load0.len() != self.by_mode.len() {
+            let before = std::mem::take(&mut self.load0);
+            Self::loads(&self.by_mode, &self.c0, &mut self.load0);
+            let len = t1 - t0;
+            for ((r, now), was) in self.trend.iter_mut().zip(&self.load0).zip(&before) {
+                *r = if len > 0.0 { (now - was) / len } else { 0.0 };
+            }
+        } else {
+            self.trend.fill(0.0);
+        }
+    }
+
+    /// [`Storeys::commit`] for the step [`Storeys::end_loads`] last followed, from `t0` to `t1`,
+    /// whose loads at the end it wrote into `load`: its ends taken as they are, without summing
+    /// the drifts again (a contact step's trial ends where the step does). False, and nothing
+    /// done, where that step has no ends (a state that was not finite).
+    pub fn commit_ends(&mut self, load: &[f64], t0: f64, t1: f64) -> bool {
+        let ends = std::mem::take(&mut *self.ends.borrow_mut());
+        if ends.len() != self.laws.len() || load.len() != self.load0.len() {
+            *self.ends.borrow_mut() = ends;
+            return false;
+        }
+        let mut moved = false;
+        for (j, &(s, u, r)) in ends.iter().enumerate() {
+            let before = self.state[j].drift_m;
+            self.note_first_yield(j, before, u, t0, t1);
+            self.state[j] = s;
+            self.rate[j] = r;
+            let c = Self::correction(&self.laws[j], &s);
+            moved |= c != self.c0[j];
+            self.c0[j] = c;
+        }
+        if moved {
+            let len = t1 - t0;
+            for ((r, now), was) in self.trend.iter_mut().zip(load).zip(&self.load0) {
+                *r = if len > 0.0 { (now - was) / len } else { 0.0 };
+            }
+            self.load0.copy_from_slice(load);
+        } else {
+            self.trend.fill(0.0);
+        }
+        *self.ends.borrow_mut() = ends;
+        true
+    }
+
+    /// Records when storey j's drift first reaches its yield drift, on the straight path from
+    /// `before` to `u` over the step from `t0` to `t1`.
+    fn note_first_yield(&mut self, j: usize, before: f64, u: f64, t0: f64, t1: f64) {
+        let uy = self.laws[j].yield_drift_m();
+        if self.first_yield_s[j].is_none() && u.abs() >= uy {
+            // Within the step, where the straight drift path reaches the yield drift.
+            let target = uy.copysign(u);
+            let share = if u != before {
+                ((target - before) / (u - before)).clamp(0.0, 1.0)
+            } else {
+                1.0
+            };
+            self.first_yield_s[j] = Some(t0 + share * (t1 - t0));
+        }
     }
 
     /// Whether every storey provably stays inside its elastic range over a stretch of length
@@ -261,19 +509,33 @@ impl Storeys {
         self.state.iter().map(|s| s.dissipated_j).sum()
     }
 
-    /// What the storeys store by their laws less what the modes count for them (1/2 k u^2) [J]:
-    /// added to the modes' energy, the buildings' true energy.
-    pub fn stored_less_elastic_j(&self) -> f64 {
+    /// What the storeys store by their laws less what the modes count for them (1/2 k u^2) [J],
+    /// the modes at `q`: added to the modes' energy, the buildings' true energy.
+    pub fn stored_less_elastic_j(&self, q: &[f64]) -> f64 {
         self.laws
             .iter()
             .zip(&self.state)
-            .map(|(l, s)| l.stored_energy_j(s) - 0.5 * l.stiffness_n_m * s.drift_m * s.drift_m)
+            .enumerate()
+            .map(|(j, (l, s))| {
+                let s = StoreyState {
+                    drift_m: self.drift_now(j, q),
+                    ..*s
+                };
+                l.stored_energy_j(&s) - 0.5 * l.stiffness_n_m * s.drift_m * s.drift_m
+            })
             .sum()
     }
 }
 
-/// The first yield or turn of a storey of `side` strictly inside a step of length `len` from
-/// the augmented modal states `y0` (the planned loads in them), if any.
+/// The first yield of a bilinear storey of `side` strictly inside a step of length `len` from
+/// the augmented modal states `y0` (the planned loads in them), if any: the corner where its
+/// correction starts to move, a jump in the correction's slope that a line across it would
+/// smear over the whole step.
+///
+/// A turn needs no locating: the drift's rate is zero there, so the correction's slope is
+/// continuous through it (only its curvature jumps, an error of the order of the line's own
+/// that the piece's departure check bounds), and the law follows the turn on the cubic through
+/// the step's ends ([`Storeys::follow`]).
 fn first_event(
     side: &Side,
     st: &Storeys,
@@ -281,6 +543,9 @@ fn first_event(
     len: f64,
     maps: Option<&[Propagator]>,
 ) -> Option<f64> {
+    if st.laws.first().map(|l| l.kind) != Some(Hysteresis::Bilinear) {
+        return None;
+    }
     let Plan { y0, q1, v1 } = plan;
     // Whole fine steps (the usual case) have their maps made once for the run.
     for k in 0..side.modes() {
@@ -289,12 +554,12 @@ fn first_event(
             None => propagator(side.omega[k], side.zeta[k], len).apply(&y0[k]),
         };
     }
-    // Storey j's drift (or its rate) tau into the step, on the exact motion.
-    let at = |j: usize, tau: f64, rate: bool| -> f64 {
+    // Storey j's drift tau into the step, on the exact motion.
+    let at = |j: usize, tau: f64| -> f64 {
         (0..side.modes())
             .map(|k| {
-                let (q, v) = propagator(side.omega[k], side.zeta[k], tau).apply(&y0[k]);
-                st.drift[j][k] * if rate { v } else { q }
+                let (q, _) = propagator(side.omega[k], side.zeta[k], tau).apply(&y0[k]);
+                st.drift[j][k] * q
             })
             .sum()
     };
@@ -302,9 +567,7 @@ fn first_event(
     let inside = |tau: f64| tau > EVENT_PIECE * len && tau < (1.0 - EVENT_PIECE) * len;
     let mut first: Option<f64> = None;
     for j in 0..st.laws.len() {
-        let (u0, r0) = (st.drift_of(j, &side.q), st.drift_of(j, &side.v));
-        let (u1, r1) = (st.drift_of(j, q1), st.drift_of(j, v1));
-        let mut events = [None, None];
+        let (u0, u1) = (st.drift_of(j, &side.q), st.drift_of(j, q1));
         if let Some((lo, hi)) = st.laws[j].elastic_range_m(&st.state[j])
             && u0 > lo
             && u0 < hi
@@ -312,13 +575,10 @@ fn first_event(
         {
             // Just past the edge: the law yields from the next step on.
             let edge = if u1 > hi { hi } else { lo };
-            events[0] = Some(bracket(|x| at(j, x, false) - edge, 0.0, len, tol).second_side);
-        }
-        if r0 != 0.0 && (r0 > 0.0) != (r1 > 0.0) {
-            events[1] = Some(bracket(|x| at(j, x, true), 0.0, len, tol).mid());
-        }
-        for tau in events.into_iter().flatten().filter(|&t| inside(t)) {
-            first = Some(first.map_or(tau, |f: f64| f.min(tau)));
+            let tau = bracket(|x| at(j, x) - edge, 0.0, len, tol).second_side;
+            if inside(tau) {
+                first = Some(first.map_or(tau, |f: f64| f.min(tau)));
+            }
         }
     }
     first
@@ -342,8 +602,9 @@ impl Stepper<'_> {
 
     /// Plans the next free step from a grid point: where every yielding storey provably stays
     /// elastic over the whole stretch to the next free-step boundary, its corrections are
-    /// constant and the stretch is taken whole, as an elastic run's; otherwise one fine step,
-    /// with the corrections planned by the fixed point. Whether the stretch is whole.
+    /// constant and the stretch is taken whole, as an elastic run's; otherwise a piece
+    /// ([`Stepper::plan_piece`]), with the corrections planned by the fixed point. Whether the
+    /// stretch is whole.
     pub(super) fn plan_stretch(&mut self) -> bool {
         let g = self.grid;
         let len = (g.per_free_step - self.n % g.per_free_step).min(g.total - self.n);
@@ -367,9 +628,69 @@ impl Stepper<'_> {
             st.stays_elastic(&env, span)
         });
         if !whole {
-            self.plan_free(len.min(g.yield_piece) as f64 * g.h);
+            self.piece = self.plan_piece(len);
         }
         whole
+    }
+
+    /// Plans a piece of free motion of at most `most` fine steps from a grid point: the longest
+    /// whose corrections stay within [`Grid::yield_departure`] of their line, found from the
+    /// length the last piece suggested (the departure goes as the square of the length). Its
+    /// length in fine steps.
+    fn plan_piece(&mut self, most: usize) -> usize {
+        let h = self.grid.h;
+        let mut steps = self.piece_guess.clamp(1, most);
+        loop {
+            let passes = self.plan_free(steps as f64 * h);
+            if steps == 1 {
+                self.piece_guess = 2;
+                return 1;
+            }
+            let ratio = if passes <= PIECE_PASSES {
+                self.piece_departure(steps)
+            } else {
+                f64::INFINITY
+            };
+            let factor = if ratio > 0.0 { 0.9 / ratio.sqrt() } else { 2.0 };
+            if ratio <= 1.0 {
+                let next = ((steps as f64 * factor.min(2.0)) as usize).max(1);
+                // A piece cut short by the free step's end says nothing against a longer one.
+                self.piece_guess = if steps == most {
+                    self.piece_guess.max(next)
+                } else {
+                    next
+                };
+                return steps;
+            }
+            steps = ((steps as f64 * factor.clamp(0.1, 0.5)) as usize).max(1);
+        }
+    }
+
+    /// The planned piece's largest departure of a correction from its line, at the fine step
+    /// nearest its middle, over what a piece may leave ([`Storeys::departure`]); `steps` fine
+    /// steps long, at least two. The plan's end states serve as buffers (the event search makes
+    /// them again).
+    fn piece_departure(&mut self, steps: usize) -> f64 {
+        let mid = steps / 2;
+        let theta = mid as f64 / steps as f64;
+        let (h, allowed) = (self.grid.h, self.grid.yield_departure);
+        let mut worst = 0.0f64;
+        for side in self.sides.iter_mut() {
+            let Some(mut plan) = side.storeys.as_mut().map(|st| std::mem::take(&mut st.plan))
+            else {
+                continue;
+            };
+            let Plan { y0, q1, v1 } = &mut plan;
+            for (k, p) in side.maps(mid).iter().enumerate() {
+                (q1[k], v1[k]) = p.apply(&y0[k]);
+            }
+            let st = side.storeys.as_mut().expect("checked");
+            st.plan = plan;
+            let (q, v) = (&st.plan.q1, &st.plan.v1);
+            let at = |j: usize| (st.drift_of(j, q), st.drift_of(j, v));
+            worst = worst.max(st.departure(at, mid as f64 * h, theta, allowed));
+        }
+        worst
     }
 
     /// The length of the piece of free motion planned now [s].
@@ -388,14 +709,18 @@ impl Stepper<'_> {
     }
 
     /// Plans a free step of length `len` from now: each side's corrections at its end, by the
-    /// fixed point over the exact step with the corrections linear in time.
-    pub(super) fn plan_free(&mut self, len: f64) {
+    /// fixed point over the exact step with the corrections linear in time. The most passes a
+    /// side took, [`MAX_PASSES`] + 1 where one did not settle.
+    pub(super) fn plan_free(&mut self, len: f64) -> usize {
         let ground = self.ground(self.time());
+        let mut most = 0;
         for s in 0..2 {
             let Some(st) = self.sides[s].storeys.as_mut() else {
                 continue;
             };
-            st.load1.clone_from(&st.load0);
+            let mut load1 = std::mem::take(&mut st.load1);
+            st.guess_into(len, &mut load1);
+            st.load1 = load1;
             st.len = len;
             let Plan {
                 mut y0,
@@ -408,7 +733,8 @@ impl Stepper<'_> {
                     .map(|k| propagator(side.omega[k], side.zeta[k], len))
                     .collect()
             });
-            for _ in 0..MAX_PASSES {
+            let mut passes = MAX_PASSES + 1;
+            for pass in 1..=MAX_PASSES {
                 self.initial_on(s, ground, &mut y0);
                 let props = own
                     .as_deref()
@@ -420,23 +746,26 @@ impl Stepper<'_> {
                 let st = self.sides[s].storeys.as_mut().expect("checked");
                 let mut load1 = std::mem::take(&mut st.load1);
                 let end = |j: usize| (st.drift_of(j, &q1), st.drift_of(j, &v1));
-                let change = st.end_loads(end, len, &mut load1);
+                let start = |j: usize| (st.state[j].drift_m, st.rate[j]);
+                let change = st.end_loads(end, start, len, &mut load1);
                 st.load1 = load1;
                 if change <= 1e-13 {
+                    passes = pass;
                     break;
                 }
             }
+            most = most.max(passes);
             let st = self.sides[s].storeys.as_mut().expect("checked");
             st.plan = Plan { y0, q1, v1 };
         }
+        most
     }
 
-    /// Where a storey's law changes branch inside a planned free step of length `len`, that
-    /// instant is located on the exact motion and the step re-planned to end there, as a
-    /// contact onset is: a bilinear storey reaching the edge of its elastic range (yield), or
-    /// any yielding storey's drift turning (unload: the straight drift path of a step would
-    /// cut the turn's excursion short). The length of the step to take.
-    pub(super) fn step_to_first_event(&mut self, len: f64) -> f64 {
+    /// Where a bilinear storey reaches the edge of its elastic range (yields) inside a planned
+    /// free step of length `len`, that instant is located on the exact motion, as a contact
+    /// onset is ([`first_event`]). Where the first is, or `len` where there is none; the plan
+    /// stays the whole step's.
+    pub(super) fn first_storey_event(&mut self, len: f64) -> f64 {
         let ground = self.ground(self.time());
         let mut first = len;
         for s in 0..2 {
@@ -453,10 +782,41 @@ impl Stepper<'_> {
             }
             self.sides[s].storeys.as_mut().expect("checked").plan = plan;
         }
+        first
+    }
+
+    /// [`Stepper::first_storey_event`], with the step re-planned to end there where it is
+    /// inside. The length of the step to take.
+    pub(super) fn step_to_first_event(&mut self, len: f64) -> f64 {
+        let first = self.first_storey_event(len);
         if first < len {
             self.plan_free(first);
         }
         first
+    }
+
+    /// Every side's storeys moved through the contact step the last trial made, from `t0` to
+    /// `t1`, from its ends and its loads at the end (`load`, per side); where a side's trial
+    /// left none, as [`Stepper::commit_storeys`].
+    pub(super) fn commit_storeys_from_trial(&mut self, load: &[Vec<f64>; 2], t0: f64, t1: f64) {
+        for (side, load) in self.sides.iter_mut().zip(load) {
+            if let Some(st) = side.storeys.as_mut() {
+                if !st.commit_ends(load, t0, t1) {
+                    st.commit(&side.q, &side.v, t0, t1);
+                }
+                st.len = 0.0;
+            }
+        }
+    }
+
+    /// Every side's storeys brought to where the modes stand, where quiet contact steps left
+    /// them behind.
+    pub(super) fn sync_storeys(&mut self) {
+        for side in self.sides.iter_mut() {
+            if let Some(st) = side.storeys.as_mut() {
+                st.sync(&side.q, &side.v);
+            }
+        }
     }
 
     /// Every side's storeys moved to where the modes stand at the end of the step just
@@ -483,12 +843,21 @@ impl Stepper<'_> {
             let side = &self.sides[s];
             if let Some(st) = side.storeys.as_ref() {
                 // Newmark's (trapezoidal) velocity: the end rate is 2 du / h less the start's.
-                let end = |j: usize| {
-                    let u0 = st.state[j].drift_m;
-                    let u1 = st.drift_after(j, &side.q, &dq[s]);
-                    (u1, 2.0 * (u1 - u0) / hh - st.rate[j])
+                // Where the storeys stand where the modes do (each commit moves both), the end
+                // drift is the step's change on top of theirs.
+                let start = |j: usize| {
+                    if st.stale {
+                        (st.drift_of(j, &side.q), st.drift_of(j, &side.v))
+                    } else {
+                        (st.state[j].drift_m, st.rate[j])
+                    }
                 };
-                worst = worst.max(st.end_loads(end, hh, &mut load1[s]));
+                let end = |j: usize| {
+                    let (u0, r0) = start(j);
+                    let u1 = u0 + st.drift_of(j, &dq[s]);
+                    (u1, 2.0 * (u1 - u0) / hh - r0)
+                };
+                worst = worst.max(st.end_loads(end, start, hh, &mut load1[s]));
             }
         }
         worst
