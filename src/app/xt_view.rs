@@ -186,6 +186,7 @@ impl XtDiagram<'_> {
         let painter = ui.painter_at(rect);
         let text = ui.visuals().text_color();
         self.time_axis(&painter, &frame, rect, text);
+        self.distance_axis(&painter, &frame, text);
         self.faces_and_zones(&painter, &frame, text);
         if options.characteristics {
             self.characteristic_lines(&painter, &frame);
@@ -234,6 +235,55 @@ impl XtDiagram<'_> {
             Pos2::new(rect.left() + 2.0, plot.center().y),
             egui::Align2::LEFT_CENTER,
             "t [ms]",
+            font,
+            text,
+        );
+    }
+
+    /// Each bar's distance from the contact in metres at round values, below the diagram, so a
+    /// front's speed reads off as a slope.
+    fn distance_axis(&self, painter: &egui::Painter, frame: &Frame, text: Color32) {
+        let plot = frame.vp.rect;
+        let font = egui::FontId::proportional(11.0);
+        let lengths: [f64; 2] = match self.waves() {
+            Some(w) => [w[0].length_m(), w[1].length_m()],
+            None => {
+                let b = &frame.layout.bars;
+                [0, 1].map(|i| f64::from(b[i].body_length + b[i].zone_length))
+            }
+        };
+        for (i, &length) in lengths.iter().enumerate() {
+            for d in super::plot_view::round_ticks(0.0, length, 3) {
+                let x = frame.vp.to_screen(frame.world(i, d), 0.0).x;
+                painter.line_segment(
+                    [
+                        Pos2::new(x, plot.bottom()),
+                        Pos2::new(x, plot.bottom() + 3.0),
+                    ],
+                    Stroke::new(1.0, text),
+                );
+                // One 0 between the two contact faces, not two side by side.
+                if d == 0.0 && i == 1 {
+                    continue;
+                }
+                let label = if d == 0.0 {
+                    "0".to_string()
+                } else {
+                    crate::export::plot::tick_label(d)
+                };
+                painter.text(
+                    Pos2::new(x, plot.bottom() + 3.0),
+                    egui::Align2::CENTER_TOP,
+                    label,
+                    font.clone(),
+                    text,
+                );
+            }
+        }
+        painter.text(
+            Pos2::new(plot.right(), plot.bottom() + 3.0),
+            egui::Align2::LEFT_TOP,
+            " m",
             font,
             text,
         );
