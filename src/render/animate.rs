@@ -19,6 +19,10 @@ pub enum AnimView {
     Both,
 }
 
+/// Tick labels' size on a 720-pixel-high frame: 14 px on a 960x540 slide, legible from the back
+/// of a hall.
+const TICK: f64 = 19.0;
+
 impl AnimView {
     pub const NAMES: &str = "bars|xt|both";
 
@@ -202,9 +206,9 @@ impl ImpactAnimation {
                 .disable_mesh()
                 .disable_y_axis()
                 .x_desc(if xt_rect.is_some() { "" } else { x_desc })
-                .x_labels(10)
-                .label_style(font(15.0))
-                .axis_desc_style(font(17.0))
+                .x_labels(8)
+                .label_style(font(TICK))
+                .axis_desc_style(font(TICK + 2.0))
                 .draw()
                 .map_err(|e| err(&e))?;
             let y = l.bars[0].y_top as f64 + 0.02;
@@ -232,9 +236,9 @@ impl ImpactAnimation {
                 .disable_mesh()
                 .x_desc(x_desc)
                 .y_desc("time [ms]")
-                .x_labels(10)
-                .label_style(font(15.0))
-                .axis_desc_style(font(17.0))
+                .x_labels(8)
+                .label_style(font(TICK))
+                .axis_desc_style(font(TICK + 2.0))
                 .draw()
                 .map_err(|e| err(&e))?;
             // The moving time line: black over a white halo, visible on any colour.
@@ -356,7 +360,7 @@ pub(crate) fn colour_bar(
         BLACK.stroke_width(1),
     ))
     .map_err(|e| err(&e))?;
-    let font = ("sans-serif", px(15.0)).into_font().color(&BLACK);
+    let font = ("sans-serif", px(TICK)).into_font().color(&BLACK);
     let tx = x1 + px(6.0) as i32;
     let line = px(17.0) as i32;
     let mid = (top + bottom) / 2;
