@@ -2,7 +2,7 @@
 //! accepts is honoured, every refusal is true and names what to change, and files that are not
 //! what they claim end in a named error, fast and in bounded memory.
 
-use common::{pounding, stderr, stdout};
+use common::{json, pounding, refused, stderr, stdout};
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
@@ -10,26 +10,7 @@ mod common;
 
 /// A scratch file unique to this test process.
 fn scratch(name: &str, bytes: &[u8]) -> PathBuf {
-    // Under the build's own scratch folder (cargo clean empties it), not the system's: these
-    // files are left for a failed test's reader.
-    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
-        .join(format!("pounding-hostile-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join(name);
-    std::fs::write(&path, bytes).unwrap();
-    path
-}
-
-fn refused(args: &[&str]) -> String {
-    let o = pounding(args);
-    assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stdout(&o));
-    stderr(&o)
-}
-
-fn json(args: &[&str]) -> serde_json::Value {
-    let o = pounding(args);
-    assert!(o.status.success(), "{args:?}: {}", stderr(&o));
-    serde_json::from_str(&stdout(&o)).expect("one JSON object")
+    common::scratch_file("pounding-hostile", name, bytes)
 }
 
 /// A short run of the paper buildings: the first second of El Centro.

@@ -2,7 +2,7 @@
 //! keys, animation flags and sweeps. Every value is honoured as given or refused with a message
 //! that is true and names what to change.
 
-use common::{pounding, stderr, stdout};
+use common::{json, pounding, refused, stderr, stdout};
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
@@ -10,24 +10,7 @@ mod common;
 
 /// A scratch file unique to this test process.
 fn scratch(name: &str, bytes: &[u8]) -> PathBuf {
-    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
-        .join(format!("pounding-surfaces-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join(name);
-    std::fs::write(&path, bytes).unwrap();
-    path
-}
-
-fn refused(args: &[&str]) -> String {
-    let o = pounding(args);
-    assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stdout(&o));
-    stderr(&o)
-}
-
-fn json(args: &[&str]) -> serde_json::Value {
-    let o = pounding(args);
-    assert!(o.status.success(), "{args:?}: {}", stderr(&o));
-    serde_json::from_str(&stdout(&o)).expect("one JSON object")
+    common::scratch_file("pounding-surfaces", name, bytes)
 }
 
 /// A one-step bar lesson whose step states `statement`, followed by `extra` TOML.

@@ -32,8 +32,17 @@ pub(super) fn scene_of(s: LessonScene) -> SceneKind {
     }
 }
 
-/// The keys whose value (as `--set` would write it) differs between two setups.
-fn changed<S>(registry: &Registry<S>, table: &'static [Setting], a: &S, b: &S) -> Vec<String> {
+/// The keys whose value (as `--set` would write it) differs between two setups: none at once
+/// where the setups are equal, as on nearly every frame.
+fn changed<S: PartialEq>(
+    registry: &Registry<S>,
+    table: &'static [Setting],
+    a: &S,
+    b: &S,
+) -> Vec<String> {
+    if a == b {
+        return vec![];
+    }
     concrete_keys(table)
         .into_iter()
         .filter(|k| registry.shown(a, k).map(|(_, v)| v) != registry.shown(b, k).map(|(_, v)| v))

@@ -4,7 +4,7 @@
 
 use super::impact_scene::ImpactScene;
 use super::lesson_gate::{scene_of, step_opens};
-use super::lesson_player::LessonPlayer;
+use super::lesson_player::{LessonPlayer, Progress};
 use super::visibility::{Lock, Visibility};
 use super::{PoundingApp, SceneKind};
 use crate::lesson::solve::SceneSetup;
@@ -254,132 +254,151 @@ impl PoundingApp {
 
     /// The lesson panel: the step's text, its prediction and task, and the way through.
     pub(super) fn lesson_ui(&mut self, ui: &mut egui::Ui) {
-        let mut turn = None;
-        let mut reset = false;
-        let mut close = false;
+        let teacher = self.teacher;
         let progress = &self.progress;
         let Some(p) = &mut self.lesson else { return };
-        let n = p.lesson.steps.len();
-        ui.horizontal_wrapped(|ui| {
-            ui.heading(&p.lesson.title);
-            if ui
-                .small_button("Leave")
-                .on_hover_text("Close the lesson: every panel and setting back")
-                .clicked()
-            {
-                close = true;
-            }
-        });
-        let done = progress
-            .0
-            .get(&p.lesson.name)
-            .map_or(0, |pr| pr.done(&p.lesson));
-        let where_ = format!("step {} of {n} ({done} done)", p.step + 1);
-        let score = progress
-            .0
-            .get(&p.lesson.name)
-            .map(|pr| pr.score(&p.lesson))
-            .unwrap_or(((0, 0), (0, 0)));
-        if done == 0 {
-            // An empty bar draws its rounded end over the text.
-            ui.label(where_);
-        } else {
-            ui.add(egui::ProgressBar::new(done as f32 / n as f32).text(where_));
-        }
-        let ((right, asked), (met, tasks)) = score;
-        if asked + tasks > 0 {
-            ui.label(format!(
-                "score: {right} of {asked} predictions right at the first try, {met} of {tasks} tasks met"
-            ));
-        }
-        ui.horizontal(|ui| {
-            if ui
-                .add_enabled(p.step > 0, egui::Button::new("< Back"))
-                .on_hover_text("PgUp")
-                .clicked()
-            {
-                turn = Some(p.step - 1);
-            }
-            if ui
-                .button("Reset step")
-                .on_hover_text("The step's settings as it began, the answer cleared")
-                .clicked()
-            {
-                reset = true;
-            }
-            if ui
-                .add_enabled(p.step + 1 < n, egui::Button::new("Next >"))
-                .on_hover_text("PgDn")
-                .clicked()
-            {
-                turn = Some(p.step + 1);
-            }
-        });
+        let way = way_ui(ui, p, progress);
         ui.separator();
-        let step = p.current().clone();
-        ui.label(RichText::new(&step.title).strong().size(17.0));
-        ui.label(reflow(&step.text));
-        if let Some(e) = &p.load_error {
-            ui.colored_label(BAD, format!("this step could not be loaded: {e}"));
-        }
-        // While the prediction waits it stands in the middle of the window, where the results
-        // will appear; once answered, its verdict stays here beside them.
-        if let Some(pred) = &step.prediction
-            && p.judged.is_some()
-        {
-            ui.separator();
-            prediction_ui(ui, p, pred);
-        }
-        if let Some(task) = &step.task {
-            ui.separator();
-            ui.label(RichText::new("Task").strong());
-            ui.label(reflow(&task.text));
-            match &p.task {
-                Some(Ok(true)) => {
-                    ui.colored_label(GOOD, "met");
-                }
-                Some(Ok(false)) | None => {
-                    ui.label("not yet met: change the unlocked settings below");
-                }
-                Some(Err(e)) => {
-                    ui.colored_label(BAD, format!("the task cannot be checked: {e}"));
-                }
-            }
-            if p.hint_shown {
-                ui.label(RichText::new(format!("Hint: {}", task.hint)).italics());
-            } else if ui.small_button("Hint").clicked() {
-                p.hint_shown = true;
-            }
-        }
+        step_ui(ui, p);
         // The notes answer some of the questions: only a teacher's screen shows them.
-        if self.teacher {
+        if teacher {
             ui.separator();
-            egui::CollapsingHeader::new("Teacher notes")
-                .id_salt("teacher-notes")
-                .default_open(true)
-                .show(ui, |ui| {
-                    ui.label(format!(
-                        "{} ({} min). Goals:",
-                        p.lesson.audience, p.lesson.duration_min
-                    ));
-                    for g in &p.lesson.goals {
-                        ui.label(format!("- {g}"));
-                    }
-                    ui.label(reflow(&p.lesson.teacher_notes));
-                });
+            teacher_notes_ui(ui, &p.lesson);
         }
-        if close {
-            self.close_lesson();
-        } else if reset {
-            // As it began: the answer cleared too (Back and Next give a step's answer back).
-            if let Some(p) = &mut self.lesson {
-                p.record(&mut self.progress);
-                p.reset_step();
+        match way {
+            Way::Stay => {}
+            Way::Leave => self.close_lesson(),
+            Way::Reset => {
+                // As it began: the answer cleared too (Back and Next give a step's answer back).
+                if let Some(p) = &mut self.lesson {
+                    p.record(&mut self.progress);
+                    p.reset_step();
+                }
             }
-        } else if let Some(k) = turn {
-            self.lesson_go_to(k);
+            Way::Turn(k) => self.lesson_go_to(k),
         }
     }
+}
+
+/// Where the student asked to go from the lesson panel.
+enum Way {
+    Stay,
+    Leave,
+    Reset,
+    Turn(usize),
+}
+
+/// The lesson's title and Leave, where the student is and their score, and Back, Reset step
+/// and Next.
+fn way_ui(ui: &mut egui::Ui, p: &LessonPlayer, progress: &Progress) -> Way {
+    let mut way = Way::Stay;
+    let n = p.lesson.steps.len();
+    ui.horizontal_wrapped(|ui| {
+        ui.heading(&p.lesson.title);
+        if ui
+            .small_button("Leave")
+            .on_hover_text("Close the lesson: every panel and setting back")
+            .clicked()
+        {
+            way = Way::Leave;
+        }
+    });
+    let own = progress.0.get(&p.lesson.name);
+    let done = own.map_or(0, |pr| pr.done(&p.lesson));
+    let where_ = format!("step {} of {n} ({done} done)", p.step + 1);
+    if done == 0 {
+        // An empty bar draws its rounded end over the text.
+        ui.label(where_);
+    } else {
+        ui.add(egui::ProgressBar::new(done as f32 / n as f32).text(where_));
+    }
+    let ((right, asked), (met, tasks)) = own
+        .map(|pr| pr.score(&p.lesson))
+        .unwrap_or(((0, 0), (0, 0)));
+    if asked + tasks > 0 {
+        ui.label(format!(
+            "score: {right} of {asked} predictions right at the first try, {met} of {tasks} tasks met"
+        ));
+    }
+    ui.horizontal(|ui| {
+        if ui
+            .add_enabled(p.step > 0, egui::Button::new("< Back"))
+            .on_hover_text("PgUp")
+            .clicked()
+        {
+            way = Way::Turn(p.step - 1);
+        }
+        if ui
+            .button("Reset step")
+            .on_hover_text("The step's settings as it began, the answer cleared")
+            .clicked()
+        {
+            way = Way::Reset;
+        }
+        if ui
+            .add_enabled(p.step + 1 < n, egui::Button::new("Next >"))
+            .on_hover_text("PgDn")
+            .clicked()
+        {
+            way = Way::Turn(p.step + 1);
+        }
+    });
+    way
+}
+
+/// The step's title and text, its answered prediction and its task.
+fn step_ui(ui: &mut egui::Ui, p: &mut LessonPlayer) {
+    let step = p.current().clone();
+    ui.label(RichText::new(&step.title).strong().size(17.0));
+    ui.label(reflow(&step.text));
+    if let Some(e) = &p.load_error {
+        ui.colored_label(BAD, format!("this step could not be loaded: {e}"));
+    }
+    // While the prediction waits it stands in the middle of the window, where the results
+    // will appear; once answered, its verdict stays here beside them.
+    if let Some(pred) = &step.prediction
+        && p.judged.is_some()
+    {
+        ui.separator();
+        prediction_ui(ui, p, pred);
+    }
+    let Some(task) = &step.task else { return };
+    ui.separator();
+    ui.label(RichText::new("Task").strong());
+    ui.label(reflow(&task.text));
+    match &p.task {
+        Some(Ok(true)) => {
+            ui.colored_label(GOOD, "met");
+        }
+        Some(Ok(false)) | None => {
+            ui.label("not yet met: change the unlocked settings below");
+        }
+        Some(Err(e)) => {
+            ui.colored_label(BAD, format!("the task cannot be checked: {e}"));
+        }
+    }
+    if p.hint_shown {
+        ui.label(RichText::new(format!("Hint: {}", task.hint)).italics());
+    } else if ui.small_button("Hint").clicked() {
+        p.hint_shown = true;
+    }
+}
+
+/// The lesson's audience, duration, goals and teacher notes.
+fn teacher_notes_ui(ui: &mut egui::Ui, lesson: &crate::lesson::Lesson) {
+    egui::CollapsingHeader::new("Teacher notes")
+        .id_salt("teacher-notes")
+        .default_open(true)
+        .show(ui, |ui| {
+            ui.label(format!(
+                "{} ({} min). Goals:",
+                lesson.audience, lesson.duration_min
+            ));
+            for g in &lesson.goals {
+                ui.label(format!("- {g}"));
+            }
+            ui.label(reflow(&lesson.teacher_notes));
+        });
 }
 
 /// A lesson's text as written in its file, re-flowed: single line breaks become spaces, a blank

@@ -114,17 +114,7 @@ pub struct PoundingApp {
 impl PoundingApp {
     pub fn new(cc: &eframe::CreationContext<'_>, launch: Launch) -> Self {
         let mut errors = vec![];
-        match cc.wgpu_render_state.as_ref() {
-            Some(rs) => {
-                if let Err(e) = crate::render::bars::install(rs) {
-                    errors.push(e);
-                }
-            }
-            None => errors.push("no wgpu renderer: the stress view is not drawn".into()),
-        }
-        let software = cc.wgpu_render_state.as_ref().is_some_and(|rs| {
-            rs.adapter.get_info().device_type == eframe::egui_wgpu::wgpu::DeviceType::Cpu
-        });
+        let software = install_renderer(cc, &mut errors);
         let storage = cc.storage;
         let fresh = launch.preset.is_some();
         let Start {
@@ -158,6 +148,7 @@ impl PoundingApp {
         let mut buildings = BuildingScene::new(ctx, building_setup);
         let mut bridge = BridgeScene::new(ctx, bridge_setup);
         if let Some(t) = launch.time_s {
+            // A launch time holds every scene's animation there, paused.
             for p in [
                 &mut bar.core.playback,
                 &mut compare.core.playback,
@@ -168,6 +159,8 @@ impl PoundingApp {
                 p.t = t;
             }
         }
+        let (preset_choice, building_preset, bridge_preset) =
+            launch_presets(&launch, building_launch);
         let mut study = study_scene::StudyScene::new(ctx, bar.core.setup);
         if let Some(text) = storage
             .and_then(|s| s.get_string(STUDY_KEY))
@@ -190,23 +183,9 @@ impl PoundingApp {
             study,
             dark,
             help: false,
-            preset_choice: launch
-                .preset
-                .clone()
-                .filter(|p| EMBEDDED.iter().any(|(n, _)| n == p))
-                .unwrap_or_else(|| preset::DEFAULT_PRESET.into()),
-            building_preset: building_launch
-                .filter(|p| EMBEDDED.iter().any(|(n, _)| n == p))
-                .unwrap_or_else(|| "paper-buildings".into()),
-            bridge_preset: launch
-                .preset
-                .clone()
-                .filter(|p| {
-                    EMBEDDED
-                        .iter()
-                        .any(|(n, t)| n == p && preset::scene(t) == "bridge")
-                })
-                .unwrap_or_else(|| "bridge-3-span".into()),
+            preset_choice,
+            building_preset,
+            bridge_preset,
             path: "scene.toml".into(),
             message: (!errors.is_empty()).then(|| (errors.join("; "), true)),
             exporter: export::Exporter::default(),
@@ -225,17 +204,23 @@ impl PoundingApp {
             drag: launch.drag.clone().map(drag::Drag::new),
             launch,
         };
-        if let Some(name) = app.launch.lesson.clone() {
-            // `--step K` counts from 1; without it the lesson resumes where it was left.
-            let step = match app.launch.lesson_step {
-                Some(k) => k.saturating_sub(1),
-                None => app.resume_step(&name),
-            };
-            if let Err(e) = app.open_lesson(&name, step) {
-                app.message = Some((e, true));
-            }
-        }
+        app.open_launch_lesson();
         app
+    }
+
+    /// Opens the lesson the launch asks for: `--step K` counts from 1; without it the lesson
+    /// resumes where it was left.
+    fn open_launch_lesson(&mut self) {
+        let Some(name) = self.launch.lesson.clone() else {
+            return;
+        };
+        let step = match self.launch.lesson_step {
+            Some(k) => k.saturating_sub(1),
+            None => self.resume_step(&name),
+        };
+        if let Err(e) = self.open_lesson(&name, step) {
+            self.message = Some((e, true));
+        }
     }
 
     /// The step a lesson was left at (from 0).
@@ -366,13 +351,10 @@ impl PoundingApp {
     }
 }
 
-impl eframe::App for PoundingApp {
-    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
-        let start = Instant::now();
-        let ctx = ui.ctx().clone();
-        self.keys(&ctx);
-        self.lesson_keys(&ctx);
-        let dt = ctx.input(|i| i.stable_dt) as f64;
+impl PoundingApp {
+    /// What arrived since the last frame: finished solves, a dragged setting, dropped files,
+    /// dialogs' answers and exports' outcomes.
+    fn take_arrivals(&mut self, ctx: &egui::Context) {
         self.bar.poll();
         self.compare.poll();
         self.buildings.poll();
@@ -389,7 +371,7 @@ impl eframe::App for PoundingApp {
         self.study.poll();
         self.drag_frame();
         if self.scene_locked() {
-            if building_scene::dropped_path(&ctx).is_some() {
+            if building_scene::dropped_path(ctx).is_some() {
                 self.message = Some((
                     "A lesson step decides its record: leave the lesson to open a dropped file"
                         .into(),
@@ -397,9 +379,9 @@ impl eframe::App for PoundingApp {
                 ));
             }
         } else if self.scene == SceneKind::Buildings {
-            self.buildings.take_dropped(&ctx);
+            self.buildings.take_dropped(ctx);
         } else if self.scene == SceneKind::Bridge
-            && let Some(path) = building_scene::dropped_path(&ctx)
+            && let Some(path) = building_scene::dropped_path(ctx)
         {
             self.bridge.load_motion(path);
         }
@@ -420,14 +402,11 @@ impl eframe::App for PoundingApp {
                 Err(e) => (e, true),
             });
         }
-        if self.lecture && !lecture::holds(&ctx) {
-            lecture::apply(&ctx, true, self.dark);
-        }
-        self.lesson_frame();
-        if self.lesson_held.is_none() {
-            self.hold_lesson_scene();
-        }
-        self.playback().advance(dt.min(0.1));
+    }
+
+    /// The top bar, the status bar, the settings (under a lesson's panel) and the scene, or the
+    /// prediction the scene waits for.
+    fn panels(&mut self, ui: &mut egui::Ui) {
         let side = self.panel_frame(egui::Frame::side_top_panel(ui.style()));
         egui::Panel::top("top")
             .frame(side)
@@ -457,43 +436,74 @@ impl eframe::App for PoundingApp {
             let (scene, exporter) = self.shown_mut();
             egui::ScrollArea::vertical().show(ui, |ui| scene.main_ui(ui, exporter));
         });
-        if self.help {
-            let mut open = true;
-            egui::Window::new("Help").open(&mut open).show(&ctx, |ui| {
-                ui.label("Space: play / pause    Right arrow: one step    R: restart    F1: this help");
-                ui.label("The bars are coloured by axial stress: blue compression, red tension, grey stress-free.");
-                ui.label("Fronts leave the contact, reflect at the free ends as tension and come back.");
-                ui.label("Vertical marks show Sears' compression zones d; arrows the bars' rigid-body velocities.");
-                ui.label("Typed values outside a field's range are refused and the range is shown.");
-            });
-            self.help = open;
-        }
+    }
+
+    fn help_window(&mut self, ctx: &egui::Context) {
+        let mut open = true;
+        egui::Window::new("Help").open(&mut open).show(ctx, |ui| {
+            ui.label("Space: play / pause    Right arrow: one step    R: restart    F1: this help");
+            ui.label("The bars are coloured by axial stress: blue compression, red tension, grey stress-free.");
+            ui.label("Fronts leave the contact, reflect at the free ends as tension and come back.");
+            ui.label("Vertical marks show Sears' compression zones d; arrows the bars' rigid-body velocities.");
+            ui.label("Typed values outside a field's range are refused and the range is shown.");
+        });
+        self.help = open;
+    }
+
+    /// Asks for the next frame while anything moves, and closes a launch that asked to end
+    /// after N frames (once its screenshot is written).
+    fn frame_end(&mut self, ctx: &egui::Context) {
         let busy = self.is_solving();
         // A launch that closes after N frames keeps frames coming even on a still scene.
         if self.playback().playing || busy || self.launch.exit_after_frames.is_some() {
             ctx.request_repaint();
         }
         self.frames += 1;
-        if self
+        if !self
             .launch
             .exit_after_frames
             .is_some_and(|n| self.frames >= n)
         {
-            // A requested screenshot arrives a frame later and is written off-thread: close
-            // only once it is on disk.
-            if let Some(path) = self.launch.screenshot.take() {
-                self.exporter.screenshot_to(&ctx, None, path);
-                self.screenshot_pending = true;
-            }
-            if self.screenshot_pending {
-                ctx.request_repaint();
-            } else {
-                if let Some(d) = self.drag.take() {
-                    eprintln!("{}", d.report());
-                }
-                ctx.send_viewport_cmd(egui::ViewportCommand::Close);
-            }
+            return;
         }
+        // A requested screenshot arrives a frame later and is written off-thread: close only
+        // once it is on disk.
+        if let Some(path) = self.launch.screenshot.take() {
+            self.exporter.screenshot_to(ctx, None, path);
+            self.screenshot_pending = true;
+        }
+        if self.screenshot_pending {
+            ctx.request_repaint();
+        } else {
+            if let Some(d) = self.drag.take() {
+                eprintln!("{}", d.report());
+            }
+            ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+        }
+    }
+}
+
+impl eframe::App for PoundingApp {
+    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        let start = Instant::now();
+        let ctx = ui.ctx().clone();
+        self.keys(&ctx);
+        self.lesson_keys(&ctx);
+        let dt = ctx.input(|i| i.stable_dt) as f64;
+        self.take_arrivals(&ctx);
+        if self.lecture && !lecture::holds(&ctx) {
+            lecture::apply(&ctx, true, self.dark);
+        }
+        self.lesson_frame();
+        if self.lesson_held.is_none() {
+            self.hold_lesson_scene();
+        }
+        self.playback().advance(dt.min(0.1));
+        self.panels(ui);
+        if self.help {
+            self.help_window(&ctx);
+        }
+        self.frame_end(&ctx);
         self.enforce_lesson_lock();
         // A change held for a run goes now, unless this frame's own change replaced it.
         self.bar.slot.flush();
@@ -523,6 +533,47 @@ impl eframe::App for PoundingApp {
 }
 
 /// Opens the window.
+/// Installs the stress views' pipelines on the window's renderer; whether that renderer is a
+/// software one (where lines start without anti-aliasing).
+fn install_renderer(cc: &eframe::CreationContext<'_>, errors: &mut Vec<String>) -> bool {
+    match cc.wgpu_render_state.as_ref() {
+        Some(rs) => {
+            if let Err(e) = crate::render::bars::install(rs) {
+                errors.push(e);
+            }
+            rs.adapter.get_info().device_type == eframe::egui_wgpu::wgpu::DeviceType::Cpu
+        }
+        None => {
+            errors.push("no wgpu renderer: the stress view is not drawn".into());
+            false
+        }
+    }
+}
+
+/// The preset each scene's top bar names at launch: the launch's own where it is a shipped one
+/// of that scene, else the scene's default.
+fn launch_presets(launch: &Launch, building: Option<String>) -> (String, String, String) {
+    let shipped = |p: &String| EMBEDDED.iter().any(|(n, _)| n == p);
+    let impact = launch
+        .preset
+        .clone()
+        .filter(shipped)
+        .unwrap_or_else(|| preset::DEFAULT_PRESET.into());
+    let building = building
+        .filter(shipped)
+        .unwrap_or_else(|| "paper-buildings".into());
+    let bridge = launch
+        .preset
+        .clone()
+        .filter(|p| {
+            EMBEDDED
+                .iter()
+                .any(|(n, t)| n == p && preset::scene(t) == "bridge")
+        })
+        .unwrap_or_else(|| "bridge-3-span".into());
+    (impact, building, bridge)
+}
+
 pub fn run(mut launch: Launch) -> Result<(), eframe::Error> {
     launch.background_by_clear = true;
     launch.plain_lines_on_software = true;

@@ -279,9 +279,25 @@ fn mm(xs: &[f64]) -> String {
 /// The readable summary.
 pub fn summary(setup: &BridgeSetup, preset: &str, motion: &GroundMotion, runs: &Runs) -> String {
     let report = BridgeReport::new(setup, preset, motion, runs);
-    let (r, base) = (runs.result, runs.baseline);
-    let sc = &setup.scenario;
     let mut o = String::new();
+    bridge_lines(&mut o, setup, preset, motion, runs, &report);
+    joint_table(&mut o, runs, &report);
+    result_lines(&mut o, runs);
+    cost_lines(&mut o, runs, &report);
+    o
+}
+
+/// The bridge, its record and each frame's periods, girder and round trip.
+fn bridge_lines(
+    o: &mut String,
+    setup: &BridgeSetup,
+    preset: &str,
+    motion: &GroundMotion,
+    runs: &Runs,
+    report: &BridgeReport,
+) {
+    let r = runs.result;
+    let sc = &setup.scenario;
     let _ = writeln!(
         o,
         "Pounding Lab bridge: contact {}, preset {preset}",
@@ -313,6 +329,11 @@ pub fn summary(setup: &BridgeSetup, preset: &str, motion: &GroundMotion, runs: &
             f.girder_round_trip_s * 1e3
         );
     }
+}
+
+/// Each joint's gap, the gap it needs, its opening against the seat, its force and impacts.
+fn joint_table(o: &mut String, runs: &Runs, report: &BridgeReport) {
+    let r = runs.result;
     let _ = writeln!(
         o,
         "joint  kind      gap [mm]  required [mm]  max opening [mm]  seat margin [mm]  max force [MN]  impacts"
@@ -330,6 +351,11 @@ pub fn summary(setup: &BridgeSetup, preset: &str, motion: &GroundMotion, runs: &
             report.max_force_by_joint_n[j] * 1e-6
         );
     }
+}
+
+/// The impacts, the peaks with and without pounding, and any unseating.
+fn result_lines(o: &mut String, runs: &Runs) {
+    let (r, base) = (runs.result, runs.baseline);
     let _ = writeln!(o, "results");
     let _ = writeln!(
         o,
@@ -359,6 +385,11 @@ pub fn summary(setup: &BridgeSetup, preset: &str, motion: &GroundMotion, runs: &
     for u in &r.unseating {
         let _ = writeln!(o, "  joint {} UNSEATED at {:.3} s", u.joint, u.time_s);
     }
+}
+
+/// Where the energy went, what the run cost, its error bounds and its warnings.
+fn cost_lines(o: &mut String, runs: &Runs, report: &BridgeReport) {
+    let r = runs.result;
     let e = &r.energy;
     let _ = writeln!(
         o,
@@ -397,5 +428,4 @@ pub fn summary(setup: &BridgeSetup, preset: &str, motion: &GroundMotion, runs: &
             let _ = writeln!(o, "  - {w}");
         }
     }
-    o
 }

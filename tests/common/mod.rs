@@ -222,3 +222,28 @@ pub fn middle_girder_struck_at_both_ends(v: f64) -> pounding::model::bridge::Bri
 pub fn girder_thrown_at_the_left_abutment() -> pounding::model::bridge::BridgeScenario {
     free_girders(vec![-1.0], vec![1e-3, 10.0])
 }
+
+/// A scratch file unique to this test process, under `folder` of the build's own scratch folder
+/// (cargo clean empties it; the files stay for a failed test's reader).
+pub fn scratch_file(folder: &str, name: &str, bytes: &[u8]) -> std::path::PathBuf {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("{folder}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(name);
+    std::fs::write(&path, bytes).unwrap();
+    path
+}
+
+/// The program's message for `args`, which it must refuse as bad input (status 2).
+pub fn refused(args: &[&str]) -> String {
+    let o = pounding(args);
+    assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stdout(&o));
+    stderr(&o)
+}
+
+/// The one JSON object the program prints for `args`, which must succeed.
+pub fn json(args: &[&str]) -> serde_json::Value {
+    let o = pounding(args);
+    assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+    serde_json::from_str(&stdout(&o)).expect("one JSON object")
+}

@@ -287,6 +287,23 @@ impl Stepper<'_> {
     #[inline(never)]
     fn prepare(&mut self, w: &mut Scratch, t0: f64, len: usize) {
         let span = len as f64 * self.grid.h;
+        self.start_states(w, t0, span);
+        self.accelerations(w, 0);
+        // A tall building's bounds come from its tables, a few modes' row by row (the same
+        // sums).
+        let tall = [0, 1].map(|s| self.sides[s].modes() >= TALL);
+        for s in (0..2).filter(|&s| tall[s]) {
+            let m = [&w.size[s][..], &w.m4[s], &w.m5[s], &w.m2[s]];
+            self.bound_rows.points[s].weigh(m, &mut w.point_bounds[s]);
+            self.bound_rows.signals[s].weigh(m, &mut w.signal_bounds[s]);
+        }
+        self.flag_points(w, span, tall);
+        self.flag_signals(w, t0, span, tall);
+    }
+
+    /// Each mode's state at the stretch's start, and its bounds over the stretch: its size, its
+    /// fourth and fifth derivatives, and (a tall building's) its second.
+    fn start_states(&self, w: &mut Scratch, t0: f64, span: f64) {
         for s in 0..2 {
             self.initial_into(s, t0, &mut w.y0[s]);
             let side = &self.sides[s];
@@ -312,25 +329,18 @@ impl Stepper<'_> {
                 w.v[s][k] = y[1];
             }
         }
-        self.accelerations(w, 0);
+    }
+
+    /// Which contact points the stretch may bring to their gap (onset) or to a new largest
+    /// closing, from their readings now and their bounds over the stretch.
+    fn flag_points(&self, w: &mut Scratch, span: f64, tall: [bool; 2]) {
         let contact = self.sc.contact != ContactModel::None;
-        let root = &mut w.root;
-        root.onset.clear();
-        root.closing.clear();
-        root.peak.clear();
-        root.points.clear();
-        root.signals.clear();
+        w.root.onset.clear();
+        w.root.closing.clear();
+        w.root.points.clear();
         w.prev.clear();
         w.point_m4.clear();
         w.point_m5.clear();
-        // A tall building's bounds come from its tables, a few modes' row by row (the same
-        // sums).
-        let tall = [0, 1].map(|s| self.sides[s].modes() >= TALL);
-        for s in (0..2).filter(|&s| tall[s]) {
-            let m = [&w.size[s][..], &w.m4[s], &w.m5[s], &w.m2[s]];
-            self.bound_rows.points[s].weigh(m, &mut w.point_bounds[s]);
-            self.bound_rows.signals[s].weigh(m, &mut w.signal_bounds[s]);
-        }
         for (j, p) in self.points.iter().enumerate() {
             let [c, cv, ca] = self.point_reading(
                 p,
@@ -384,11 +394,18 @@ impl Stepper<'_> {
                 closing &= reach >= below;
             }
             if onset || closing {
-                root.points.push(j);
+                w.root.points.push(j);
             }
-            root.onset.push(onset);
-            root.closing.push(closing);
+            w.root.onset.push(onset);
+            w.root.closing.push(closing);
         }
+    }
+
+    /// Which followed signals the stretch may bring past their peak; those it leaves alone are
+    /// marked stale.
+    fn flag_signals(&mut self, w: &mut Scratch, t0: f64, span: f64, tall: [bool; 2]) {
+        w.root.peak.clear();
+        w.root.signals.clear();
         w.signal_m4.clear();
         w.signal_m5.clear();
         w.signal_acc.clear();
@@ -397,7 +414,7 @@ impl Stepper<'_> {
             let Some(j) = self.bound_rows.row_of[i] else {
                 w.signal_m4.push(0.0);
                 w.signal_m5.push(0.0);
-                root.peak.push(false);
+                w.root.peak.push(false);
                 self.proof[i].stale = true;
                 w.signal_acc.push(0.0);
                 continue;
@@ -431,9 +448,9 @@ impl Stepper<'_> {
             };
             w.signal_m4.push(m4);
             w.signal_m5.push(m5);
-            root.peak.push(open);
+            w.root.peak.push(open);
             if open {
-                root.signals.push(i);
+                w.root.signals.push(i);
                 // Its last instant is this one (a stretch that left it alone did not keep it).
                 let (u, r) = now;
                 self.peaks.pass(i, t0, u, r);
@@ -545,20 +562,7 @@ impl Stepper<'_> {
         // A contact may start inside the part: what the free motion does after it does not
         // count, so nothing is taken from the part's end until the onset has been ruled out.
         if !may_touch {
-            // Every open point is open for its closing motion alone.
-            for &i in &now.points {
-                let [c, cv, ca] = now.values[i];
-                let [_, cv0, ca0] = w.prev[i];
-                if monotone([cv0, ca0], [cv, ca], l, w.point_m5[i]) {
-                    // Its largest value here is at an end, and the start was counted already.
-                    let p = &mut self.points[i];
-                    p.max_closing = p.max_closing.max(c);
-                    now.closing[i] = false;
-                }
-            }
-            let closing = &now.closing;
-            now.points.retain(|&i| closing[i]);
-            any = !now.points.is_empty();
+            any = self.close_monotone(now, &w.prev, &w.point_m5, l);
         }
         for &i in &parent.signals {
             let [u, r, a] = if end_read {
@@ -594,8 +598,26 @@ impl Stepper<'_> {
         (any, unbounded)
     }
 
+    /// Where no point can touch, every open point is open for its closing motion alone: one
+    /// whose closing is monotone over the part takes its largest value at an end (the start
+    /// counted already) and is closed. Whether any point stays open.
+    fn close_monotone(&mut self, now: &mut Depth, prev: &[[f64; 3]], m5: &[f64], l: f64) -> bool {
+        for &i in &now.points {
+            let [c, cv, ca] = now.values[i];
+            let [_, cv0, ca0] = prev[i];
+            if monotone([cv0, ca0], [cv, ca], l, m5[i]) {
+                let p = &mut self.points[i];
+                p.max_closing = p.max_closing.max(c);
+                now.closing[i] = false;
+            }
+        }
+        let closing = &now.closing;
+        now.points.retain(|&i| closing[i]);
+        !now.points.is_empty()
+    }
+
     /// Walks the part grid point by grid point for what [`Stepper::flag`] left open at depth
-    /// `d`, as the whole stretch used to be: the onset at the first grid point where the overlap
+    /// `d`: the onset at the first grid point where the overlap
     /// is positive, the largest closing motion and the peaks on the cubics between grid points.
     /// Returns the onset, if one was found (the slabs then stand at the grid point before it).
     fn walk(
