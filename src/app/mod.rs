@@ -459,10 +459,10 @@ impl PoundingApp {
             ctx.request_repaint();
         }
         self.frames += 1;
-        if !self
+        if self
             .launch
             .exit_after_frames
-            .is_some_and(|n| self.frames >= n)
+            .is_none_or(|n| self.frames < n)
         {
             return;
         }
