@@ -24,6 +24,24 @@ fn window(launch: Launch, size: egui::Vec2) -> Harness<'static, PoundingApp> {
     h
 }
 
+/// The window on lesson `name`, at its first step.
+fn lesson_window(name: &str, size: egui::Vec2) -> Harness<'static, PoundingApp> {
+    window(
+        Launch {
+            lesson: Some(name.to_string()),
+            lesson_step: Some(1),
+            ..Default::default()
+        },
+        size,
+    )
+}
+
+/// Turns to step `k` and waits for its solves.
+fn go_to(h: &mut Harness<'static, PoundingApp>, k: usize, at: &str) {
+    h.state_mut().lesson_go_to(k);
+    common::settle(h, at);
+}
+
 fn scene_of(s: LessonScene) -> SceneKind {
     match s {
         LessonScene::Bar => SceneKind::BarImpact,
@@ -61,18 +79,10 @@ fn every_lesson_step_loads_hides_results_until_predicted_and_its_task_is_met_by_
     }
     for name in lesson::builtin_names() {
         let lesson = lesson::builtin(name).expect("shipped lessons parse");
-        let mut h = window(
-            Launch {
-                lesson: Some(name.to_string()),
-                lesson_step: Some(1),
-                ..Default::default()
-            },
-            egui::vec2(1280.0, 900.0),
-        );
+        let mut h = lesson_window(name, egui::vec2(1280.0, 900.0));
         for (k, step) in lesson.steps.iter().enumerate() {
             let at = format!("{name} step {}", k + 1);
-            h.state_mut().lesson_go_to(k);
-            common::settle(&mut h, &at);
+            go_to(&mut h, k, &at);
             assert_eq!(player(&h).step, k, "{at}");
             assert!(
                 player(&h).load_error.is_none(),
@@ -192,18 +202,10 @@ fn every_step_holds_its_scene_and_locked_settings_against_tabs_presets_and_choic
     let labels = tempting_labels();
     for name in lesson::builtin_names() {
         let lesson = lesson::builtin(name).expect("shipped lessons parse");
-        let mut h = window(
-            Launch {
-                lesson: Some(name.to_string()),
-                lesson_step: Some(1),
-                ..Default::default()
-            },
-            egui::vec2(1600.0, 1000.0),
-        );
+        let mut h = lesson_window(name, egui::vec2(1600.0, 1000.0));
         for (k, step) in lesson.steps.iter().enumerate() {
             let at = format!("{name} step {}", k + 1);
-            h.state_mut().lesson_go_to(k);
-            common::settle(&mut h, &at);
+            go_to(&mut h, k, &at);
             if let Some(p) = &step.prediction {
                 answer(&mut h, p, name, k);
             }

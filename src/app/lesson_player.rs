@@ -285,7 +285,15 @@ pub fn results(progress: &Progress, load: impl Fn(&str) -> Option<Lesson>) -> Ve
     for (name, p) in &progress.0 {
         let Some(lesson) = load(name) else { continue };
         for (k, step) in lesson.steps.iter().enumerate() {
-            let time_utc = p.at_s.get(&k).map_or_else(String::new, |&t| utc(t));
+            let row = |kind, answer, right| ResultRow {
+                lesson: name.clone(),
+                step: k + 1,
+                title: step.title.clone(),
+                kind,
+                answer,
+                right,
+                time_utc: p.at_s.get(&k).map_or_else(String::new, |&t| utc(t)),
+            };
             if let Some(&right) = p.answered.get(&k) {
                 let given = p.answers.get(&k).cloned().unwrap_or_default();
                 let answer = match (&step.prediction, given.choice) {
@@ -294,26 +302,10 @@ pub fn results(progress: &Progress, load: impl Fn(&str) -> Option<Lesson>) -> Ve
                     }
                     _ => given.number,
                 };
-                rows.push(ResultRow {
-                    lesson: name.clone(),
-                    step: k + 1,
-                    title: step.title.clone(),
-                    kind: "prediction",
-                    answer,
-                    right,
-                    time_utc: time_utc.clone(),
-                });
+                rows.push(row("prediction", answer, right));
             }
             if step.task.is_some() && p.met.contains(&k) {
-                rows.push(ResultRow {
-                    lesson: name.clone(),
-                    step: k + 1,
-                    title: step.title.clone(),
-                    kind: "task",
-                    answer: "met".into(),
-                    right: true,
-                    time_utc,
-                });
+                rows.push(row("task", "met".into(), true));
             }
         }
     }
