@@ -8,7 +8,7 @@ use eframe::egui;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use pounding::app::{HIDE_TIMINGS, Launch, PoundingApp, SceneKind};
-use pounding::lesson::{self, LessonScene, Prediction};
+use pounding::lesson::{self, LessonScene};
 
 mod common;
 
@@ -54,24 +54,6 @@ fn player<'a>(h: &'a Harness<'static, PoundingApp>) -> &'a pounding::app::Lesson
     h.state().lesson_player().expect("a lesson is open")
 }
 
-/// Answers the step's prediction through its widgets: the first option, or the model's own
-/// number typed.
-fn answer(h: &mut Harness<'static, PoundingApp>, p: &Prediction, name: &str, k: usize) {
-    match p {
-        Prediction::Choice { options, .. } => {
-            h.get_by_label(&options[0]).click();
-        }
-        Prediction::Number { .. } => {
-            h.get_by_label("your answer").click();
-            h.run_steps(1);
-            h.get_by_label("your answer").type_text("1");
-        }
-    }
-    h.run_steps(2);
-    h.get_by_label("Answer").click();
-    common::settle(h, &format!("{name} step {}: answer", k + 1));
-}
-
 #[test]
 fn every_lesson_step_loads_hides_results_until_predicted_and_its_task_is_met_by_its_solution() {
     if common::adapter_or_skip().is_none() {
@@ -97,7 +79,7 @@ fn every_lesson_step_loads_hides_results_until_predicted_and_its_task_is_met_by_
                     "{at}: results before the answer"
                 );
                 h.get_by_label(WAITING);
-                answer(&mut h, p, name, k);
+                common::answer(&mut h, p, &format!("{name} step {}", k + 1));
                 let judged = player(&h).judged.clone();
                 assert!(matches!(judged, Some(Ok(_))), "{at}: judged {judged:?}");
                 assert!(
@@ -207,7 +189,7 @@ fn every_step_holds_its_scene_and_locked_settings_against_tabs_presets_and_choic
             let at = format!("{name} step {}", k + 1);
             go_to(&mut h, k, &at);
             if let Some(p) = &step.prediction {
-                answer(&mut h, p, name, k);
+                common::answer(&mut h, p, &format!("{name} step {}", k + 1));
             }
             let keys = concrete_keys(match step.scene {
                 LessonScene::Buildings => BUILDING_SETTINGS,

@@ -12,7 +12,7 @@ use pounding::app::{HIDE_TIMINGS, Launch, PoundingApp, SceneKind};
 
 mod common;
 
-const MAX_FAILED_PIXELS: usize = 100;
+use common::MAX_FAILED_PIXELS;
 
 fn snapshot(scene: SceneKind, time_s: f64, name: &str) {
     snapshot_sized(scene, time_s, name, 860.0);

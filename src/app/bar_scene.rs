@@ -166,8 +166,9 @@ impl BarScene {
         let Some((_, solved)) = &self.solved else {
             return;
         };
+        bar_view::caption(ui, solved, t);
         let (rect, _) = ui.allocate_exact_size(
-            egui::vec2(ui.available_width(), 190.0),
+            egui::vec2(ui.available_width(), super::fill::height(ui, 190.0, 70.0)),
             egui::Sense::hover(),
         );
         bar_view::draw(ui, rect, super::slots::BAR_VIEW, solved, t);
@@ -182,8 +183,13 @@ impl BarScene {
         self.core.xt.ui(ui);
         let title = xt_title(self.core.setup.model, solved);
         let options = self.core.xt;
-        let clicked =
-            xt_diagram(solved, span, &title).show(ui, super::slots::BAR_XT, 250.0, t, &options);
+        let clicked = xt_diagram(solved, span, &title).show(
+            ui,
+            super::slots::BAR_XT,
+            super::fill::height(ui, 250.0, 80.0),
+            t,
+            &options,
+        );
         let sc = &solved.setup.scenario;
         exporter.xt_buttons(
             ui,
@@ -210,21 +216,20 @@ impl BarScene {
         };
         let core = &mut self.core;
         let t_ms = core.playback.t * 1e3;
-        let h = plot_height(ui);
         let show = core.visibility.clone();
         let model = core.setup.model;
         if show.shows("force") {
             let line = force_line(*solved_model, &solved.result);
             let title = format!("Contact force: {}", model.name());
-            core.force_plot_ui(ui, exporter, h, t_ms, vec![line], title);
+            core.force_plot_ui(ui, exporter, plot_height(ui), t_ms, vec![line], title);
         }
         if show.shows("approach") {
-            self.shown_approach = approach_ui(ui, &solved.result, h, t_ms, model);
+            self.shown_approach = approach_ui(ui, &solved.result, plot_height(ui), t_ms, model);
             exporter.buttons(ui, &self.shown_approach, "approach");
         }
         // Where the energy goes, once the run of the model chosen has landed.
         if show.shows("energy") && *solved_model == model {
-            core.energy_ui(ui, exporter, (model, solved), h, t_ms);
+            core.energy_ui(ui, exporter, (model, solved), plot_height(ui), t_ms);
         }
     }
 
@@ -298,69 +303,82 @@ fn readouts_ui(
     solve_time: Duration,
     estimate: Option<&ErrorEstimate>,
 ) {
-    egui::Grid::new("readouts")
-        .num_columns(4)
-        .spacing([18.0, 4.0])
-        .show(ui, |ui| {
-            ui.label("peak force");
-            ui.label(
-                r.peak_force_n
-                    .map_or("none (instantaneous)".into(), |p| format!("{:.5e} N", p)),
-            );
-            ui.label("contact duration");
-            ui.label(format!("{:.5} ms", r.contact_duration_s * 1e3));
-            ui.end_row();
-            ui.label("restitution e");
-            ui.label(format!(
-                "{:.5} (first contact {:.5})",
+    use super::readouts::Readout;
+    use crate::model::settings::engineering;
+    let e = &r.energy;
+    // A hall reads what the lesson talks about; the checks on the run are the researcher's.
+    let lecture = super::lecture::on(ui.ctx());
+    let mut rows = vec![
+        Readout::new(
+            "peak force",
+            r.peak_force_n
+                .map_or("none (instantaneous)".into(), |p| engineering(p, "N")),
+        ),
+        Readout::new("contact duration", engineering(r.contact_duration_s, "s")),
+        Readout::new(
+            "restitution e",
+            format!(
+                "{:.4} (first contact {:.4})",
                 r.restitution, r.restitution_first_contact
-            ));
-            ui.label("contacts");
-            ui.label(format!("{}", r.contacts.len()));
-            ui.end_row();
-            let e = &r.energy;
-            ui.label("energy");
-            let j = |x: f64| crate::model::settings::engineering(x, "J");
-            ui.label(format!(
+            ),
+        ),
+        Readout::new("contacts", r.contacts.len().to_string()),
+        Readout::new(
+            "energy",
+            format!(
                 "rigid {}, vibration {}, dissipated {} of {}",
-                j(e.rigid_body_j),
-                j(e.vibration_j),
-                j(e.dissipated_j),
-                j(e.initial_j)
-            ));
-            ui.label("energy balance");
-            ui.label(format!("{:+.2e}", e.balance_error));
-            ui.end_row();
-            if let Some(d) = &r.sears {
-                ui.label("Sears reading");
-                ui.label(d.reading.name());
-                ui.label("validity a tau");
-                ui.label(format!("{:.4} ({})", d.a_tau, d.regime()));
-                ui.end_row();
-                if d.reading == Reading::Paper && d.creates_energy {
-                    ui.colored_label(
-                        Color32::from_rgb(220, 60, 50),
-                        "the paper reading created energy here",
-                    );
-                    ui.end_row();
-                }
-            }
-            ui.label("solve");
-            ui.label(format!(
+                engineering(e.rigid_body_j, "J"),
+                engineering(e.vibration_j, "J"),
+                engineering(e.dissipated_j, "J"),
+                engineering(e.initial_j, "J")
+            ),
+        ),
+    ];
+    if !lecture {
+        rows.push(Readout::new(
+            "energy balance",
+            format!("{:+.2e}", e.balance_error),
+        ));
+    }
+    if let Some(d) = &r.sears {
+        if !lecture {
+            rows.push(Readout::new("Sears reading", d.reading.name()));
+        }
+        rows.push(Readout::new(
+            "validity a tau",
+            format!("{:.4} ({})", d.a_tau, d.regime()),
+        ));
+        if d.reading == Reading::Paper && d.creates_energy {
+            rows.push(Readout::alarm("the paper reading created energy here"));
+        }
+    }
+    if !lecture {
+        rows.push(Readout::new(
+            "solve",
+            format!(
                 "{} steps of {}, {}",
                 r.stats.steps,
-                crate::model::settings::engineering(r.stats.dt_s, "s"),
+                engineering(r.stats.dt_s, "s"),
                 super::ms(solve_time.as_secs_f64(), 3)
-            ));
-            ui.label("error estimate").on_hover_text("Step doubling: the same impact with twice the step (half the mesh for FE), Richardson's |q(h) - q(2h)| / 3");
-            ui.label(match estimate {
+            ),
+        ));
+        rows.push(
+        Readout::new(
+            "error estimate",
+            match estimate {
                 None => "-".to_string(),
                 Some(e) if e.method == "exact" => "exact".to_string(),
-                Some(e) => format!("peak {:.1e}, duration {:.1e}, e {:.1e}", e.peak_force, e.contact_duration, e.restitution),
-            });
-            ui.end_row();
-        });
+                Some(e) => format!(
+                    "peak {:.1e}, duration {:.1e}, e {:.1e}",
+                    e.peak_force, e.contact_duration, e.restitution
+                ),
+            },
+        )
+        .hover("Step doubling: the same impact with twice the step (half the mesh for FE), Richardson's |q(h) - q(2h)| / 3"),
+    );
+    }
+    super::readouts::show(ui, "readouts", &rows);
     for w in &r.warnings {
-        ui.colored_label(Color32::from_rgb(220, 140, 40), format!("warning: {w}"));
+        super::readouts::warning(ui, &format!("warning: {w}"));
     }
 }

@@ -44,6 +44,27 @@ impl Solved {
     }
 }
 
+/// The bars' velocities and lengths and the animation time, as a row of labels above the view
+/// (they wrap with the width, where labels painted over short bars would run into each other).
+pub fn caption(ui: &mut egui::Ui, solved: &Solved, t: f64) {
+    let v = solved.velocities_at(t);
+    let lengths = solved
+        .result
+        .waves
+        .as_ref()
+        .map(|w| [w[0].length_m(), w[1].length_m()]);
+    ui.horizontal_wrapped(|ui| {
+        ui.spacing_mut().item_spacing.x = 24.0;
+        // A step's text gives the lengths: on a projector the row keeps to one line.
+        let lengths = lengths.filter(|_| !super::lecture::on(ui.ctx()));
+        for i in 0..2 {
+            let length = lengths.map_or(String::new(), |l| format!(", L = {} m", l[i]));
+            ui.label(format!("bar {}: {:.3} m/s{length}", i + 1, v[i]));
+        }
+        ui.label(format!("t = {:.4} ms", t * 1e3));
+    });
+}
+
 /// Draws the bars at animation time `t` into `rect`; `lumped` adds a pair of rigid blocks and a
 /// spring below (the lumped-mass reading of the same impact), given its approach history.
 pub fn draw(ui: &mut egui::Ui, rect: Rect, slot: u64, solved: &Solved, t: f64) {
@@ -54,7 +75,7 @@ pub fn draw(ui: &mut egui::Ui, rect: Rect, slot: u64, solved: &Solved, t: f64) {
             rect.center(),
             egui::Align2::CENTER_CENTER,
             "no wave field for this model",
-            egui::FontId::proportional(16.0),
+            super::lecture::font(ui.ctx(), 16.0),
             ui.visuals().text_color(),
         );
         return;
@@ -81,26 +102,31 @@ pub fn draw(ui: &mut egui::Ui, rect: Rect, slot: u64, solved: &Solved, t: f64) {
     let to_screen = |x: f64, y: f32| vp.to_screen(x, y as f64);
     let painter = ui.painter_at(rect);
     let text = ui.visuals().text_color();
-    let font = egui::FontId::proportional(13.0);
+    let font = super::lecture::font(painter.ctx(), 13.0);
     // The Sears compression zones.
     if setup.model == crate::model::impact::ModelKind::Sears
         && setup.scenario.reading != Reading::End
         && let Some(d) = r.sears.map(|s| s.zone_lengths_m)
     {
         for i in 0..2 {
-            if d[i] < lengths[i] {
-                let dir = if i == 0 { -1.0 } else { 1.0 };
-                let x = dir * (gap + d[i] * wpm[i]);
-                let (a, b) = (to_screen(x, 0.36), to_screen(x, 0.66));
-                painter.line_segment([a, b], Stroke::new(1.5, text));
-                painter.text(
-                    to_screen(x, 0.67),
-                    egui::Align2::CENTER_BOTTOM,
-                    "d",
-                    font.clone(),
-                    text,
-                );
-            }
+            // A zone longer than its bar (outside the model: the run warns) is marked at the
+            // far end, where it runs off the bar.
+            let (at, mark) = if d[i] < lengths[i] {
+                (d[i], "d")
+            } else {
+                (lengths[i], "d > L")
+            };
+            let dir = if i == 0 { -1.0 } else { 1.0 };
+            let x = dir * (gap + at * wpm[i]);
+            let (a, b) = (to_screen(x, 0.36), to_screen(x, 0.66));
+            painter.line_segment([a, b], Stroke::new(1.5, text));
+            painter.text(
+                to_screen(x, 0.67),
+                egui::Align2::CENTER_BOTTOM,
+                mark,
+                font.clone(),
+                text,
+            );
         }
     }
     // Velocity arrows, scaled by the larger initial speed.
@@ -125,13 +151,6 @@ pub fn draw(ui: &mut egui::Ui, rect: Rect, slot: u64, solved: &Solved, t: f64) {
         if (b.x - a.x).abs() > 2.0 {
             painter.arrow(a, b - a, Stroke::new(2.5, colour));
         }
-        painter.text(
-            to_screen(centre, 0.86),
-            egui::Align2::CENTER_BOTTOM,
-            format!("bar {}: {:.3} m/s, L = {} m", i + 1, v[i], lengths[i]),
-            font.clone(),
-            text,
-        );
     }
     if !to_scale {
         painter.text(
@@ -143,13 +162,6 @@ pub fn draw(ui: &mut egui::Ui, rect: Rect, slot: u64, solved: &Solved, t: f64) {
         );
     }
     stress_legend(&painter, rect, layout.stress_scale_pa, text);
-    painter.text(
-        Pos2::new(rect.right() - 10.0, rect.top() + 8.0),
-        egui::Align2::RIGHT_TOP,
-        format!("t = {:.4} ms", t * 1e3),
-        font,
-        text,
-    );
 }
 
 /// The colour map's legend in the lower left corner, with the stress it spans.
@@ -176,7 +188,7 @@ fn stress_legend(painter: &egui::Painter, rect: Rect, stress_scale_pa: f64, text
             "compression  {}  tension",
             crate::model::settings::engineering(stress_scale_pa, "Pa")
         ),
-        egui::FontId::proportional(11.0),
+        super::lecture::font(painter.ctx(), 11.0),
         text,
     );
 }

@@ -239,7 +239,7 @@ impl BridgeScene {
         self.deck_xt_ui(ui);
         let Some(s) = &self.shown.solved else { return };
         for w in &s.drawing.result.warnings {
-            ui.colored_label(Color32::from_rgb(220, 140, 40), format!("warning: {w}"));
+            super::readouts::warning(ui, &format!("warning: {w}"));
         }
     }
 

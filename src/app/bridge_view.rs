@@ -350,7 +350,7 @@ impl<'a> Frame<'a> {
                 self.to_screen(x, GIRDER_TOP + 0.3),
                 egui::Align2::CENTER_BOTTOM,
                 format!("{j}"),
-                egui::FontId::proportional(11.0),
+                super::lecture::font(painter.ctx(), 11.0),
                 colour,
             );
         }
@@ -366,7 +366,7 @@ impl<'a> Frame<'a> {
                 "t = {:.4} s, displacements and gaps x{:.0}, heights not to scale",
                 self.t, self.ex
             ),
-            egui::FontId::proportional(12.0),
+            super::lecture::font(painter.ctx(), 12.0),
             text,
         );
         let pounding = (0..r.joints.len())
@@ -378,7 +378,7 @@ impl<'a> Frame<'a> {
                 Pos2::new(rect.left() + 8.0, rect.top() + 6.0),
                 egui::Align2::LEFT_TOP,
                 format!("pounding at joint {j}: {:.3e} N", f),
-                egui::FontId::proportional(14.0),
+                super::lecture::font(painter.ctx(), 14.0),
                 Color32::from_rgb(220, 60, 50),
             );
         }
@@ -418,7 +418,7 @@ impl<'a> Frame<'a> {
             Pos2::new(rect.left() + 8.0, rect.bottom() - 6.0),
             egui::Align2::LEFT_BOTTOM,
             line,
-            egui::FontId::proportional(12.0),
+            super::lecture::font(painter.ctx(), 12.0),
             colour,
         );
     }

@@ -132,7 +132,7 @@ impl DeckXt<'_> {
         y_of: &dyn Fn(f64) -> f64,
     ) {
         let plot = vp.rect;
-        let font = egui::FontId::proportional(11.0);
+        let font = super::lecture::font(painter.ctx(), 11.0);
         painter.text(
             Pos2::new(plot.left(), rect.top() + 2.0),
             egui::Align2::LEFT_TOP,

@@ -45,7 +45,11 @@ pub(super) fn compact(list: &mut Vec<f64>) {
 
 fn building_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup, side: usize) {
     let b = setup.building_mut(side);
+    let storeys_shown = fields.shows(&setting::STOREYS.key_of(side));
     ui.horizontal(|ui| {
+        if !storeys_shown {
+            return;
+        }
         let label = ui
             .label(setting::STOREYS.label)
             .on_hover_text("Number of storeys: a floor (lumped mass) above each")
@@ -87,7 +91,7 @@ fn building_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup
     row(ui, fields, &setting::DAMPING_RATIO, side, setup);
     yielding_ui(ui, fields, side, setup);
     let b = setup.building_mut(side);
-    if n > 1 {
+    if n > 1 && fields.shows(&setting::DAMPING.key_of(side)) {
         ui.horizontal(|ui| {
             ui.label(setting::DAMPING.label).on_hover_text(
                 "modal: the ratio in every mode; rayleigh: C = a M + b K with the ratio in modes 1 and 2",
@@ -106,7 +110,11 @@ fn building_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup
 /// the command line or a preset), the hardening and Bouc-Wen's exponent.
 fn yielding_ui(ui: &mut egui::Ui, fields: &mut Fields, side: usize, setup: &mut BuildingSetup) {
     let b = setup.building_mut(side);
+    let law_shown = fields.shows(&setting::HYSTERESIS.key_of(side));
     ui.horizontal(|ui| {
+        if !law_shown {
+            return;
+        }
         ui.label(setting::HYSTERESIS.label)
             .on_hover_text(setting::HYSTERESIS.help);
         fields.gate(ui, &setting::HYSTERESIS.key_of(side), |ui| {
@@ -184,18 +192,34 @@ fn storey_lists_ui(ui: &mut egui::Ui, fields: &mut Fields, b: &mut Building, sid
 
 pub fn ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup, path: &mut String) {
     for (side, name) in SIDES.iter().enumerate() {
+        if !fields.shows_group(&format!("{}.", crate::model::settings::SIDES[side])) {
+            continue;
+        }
         egui::CollapsingHeader::new(format!("{name} building"))
             .default_open(true)
             .show(ui, |ui| building_ui(ui, fields, setup, side));
     }
-    egui::CollapsingHeader::new("Contact")
-        .default_open(true)
-        .show(ui, |ui| contact_ui(ui, fields, setup));
-    egui::CollapsingHeader::new("Ground motion")
-        .default_open(true)
-        .show(ui, |ui| {
-            super::motion_params::ui(ui, fields, setup, &BUILDINGS, path)
-        });
+    if fields.shows_any(&[
+        setting::CONTACT_MODEL.key,
+        setting::GAP.key,
+        setting::CONTACT_STIFFNESS.key,
+        setting::RESTITUTION.key,
+        setting::CONTACT_READING.key,
+        setting::SLAB_DAMPING.key,
+        setting::MERGE_GAP.key,
+        setting::TOLERANCE.key,
+    ]) {
+        egui::CollapsingHeader::new("Contact")
+            .default_open(true)
+            .show(ui, |ui| contact_ui(ui, fields, setup));
+    }
+    if fields.shows_group("motion.") {
+        egui::CollapsingHeader::new("Ground motion")
+            .default_open(true)
+            .show(ui, |ui| {
+                super::motion_params::ui(ui, fields, setup, &BUILDINGS, path)
+            });
+    }
 }
 
 fn contact_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup) {
@@ -224,6 +248,9 @@ fn contact_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup)
     fields.entry_row(ui, stiffness, 0, setup, &spec, k);
     row(ui, fields, &setting::RESTITUTION, 0, setup);
     ui.horizontal(|ui| {
+        if !fields.shows(setting::CONTACT_READING.key) {
+            return;
+        }
         ui.label(setting::CONTACT_READING.label);
         fields.gate(ui, setting::CONTACT_READING.key, |ui| {
             for r in SlabReading::ALL {

@@ -7,6 +7,7 @@
 use super::building_job::{Baseline, Output, run_job};
 use super::building_view;
 use super::export::{Exporter, ShownPlot};
+use super::legend::Key;
 use super::params::Fields;
 use super::playback::Playback;
 use super::series::decimate;
@@ -14,9 +15,10 @@ use super::visibility::Visibility;
 use super::worker::SolveSlot;
 use super::xt_view::{XtDiagram, XtOptions, XtSource};
 use crate::io::building_settings::BuildingSetup;
+use crate::model::building::result::BuildingResult;
 use crate::model::motion::G;
 use eframe::egui::{self, Color32};
-use egui_plot::{Legend, Line, Plot, PlotBounds, VLine};
+use egui_plot::{Plot, PlotBounds, VLine};
 
 #[path = "building_stages.rs"]
 mod stages;
@@ -41,6 +43,8 @@ pub struct BuildingScene {
     shown_loops: ShownPlot,
     /// The impact whose slabs the x-t diagram shows (`None`: the strongest).
     selected: Option<usize>,
+    /// The page of the impact list lecture mode shows.
+    impact_page: usize,
     /// What the x-t diagram shows.
     xt: XtOptions,
     /// The panels drawn (a lesson step's, or all).
@@ -68,6 +72,7 @@ impl BuildingScene {
             zoom: None,
             level: None,
             selected: None,
+            impact_page: 0,
             xt: XtOptions::default(),
             motion_path: String::new(),
             view_rect: None,
@@ -154,7 +159,15 @@ impl BuildingScene {
         };
         let stats = s.drawing.motion_stats;
         let d = &s.drawing;
-        ui.label(format!(
+        let show = self.visibility.clone();
+        if super::lecture::on(ui.ctx()) {
+            // A hall needs the record and how strong it is (in the view's caption where the
+            // view shows); the rest is the researcher's.
+            if !show.shows("buildings") {
+                ui.label(lecture_record(d));
+            }
+        } else {
+            ui.label(format!(
             "{}: {:.2} s at {} s, PGA {:.3} g, PGV {:.3} m/s, Arias {:.2} m/s, 5% spectrum peaks at {:.2} s",
             d.motion.name,
             stats.duration_s,
@@ -164,7 +177,7 @@ impl BuildingScene {
             stats.arias_m_s,
             stats.predominant_period_s
         ));
-        let show = self.visibility.clone();
+        }
         if show.shows("buildings") {
             self.sway_ui(ui);
         }
@@ -194,7 +207,7 @@ impl BuildingScene {
             .result
             .warnings
         {
-            ui.colored_label(Color32::from_rgb(220, 140, 40), format!("warning: {w}"));
+            super::readouts::warning(ui, &format!("warning: {w}"));
         }
     }
 
@@ -208,7 +221,11 @@ impl BuildingScene {
                 format!("{:.2}", b.result.peak_displacement_m[side] * 1e3)
             })
         };
-        let (so_far, solve) = if s.whole {
+        let lecture = super::lecture::on(ui.ctx());
+        let (so_far, solve) = if s.whole && lecture {
+            // What a run costs and its error bound are the researcher's, not the class's.
+            (String::new(), String::new())
+        } else if s.whole {
             (
                 String::new(),
                 format!(
@@ -226,15 +243,18 @@ impl BuildingScene {
             )
         };
         ui.label(format!(
-            "{so_far}{} impacts ({} contacts), max force {:.4e} N, peak roof displacement left {:.2} mm (without pounding {}), right {:.2} mm ({}){solve}",
+            "{so_far}{} impacts ({} contacts), max force {}, peak roof displacement left {:.2} mm (without pounding {}), right {:.2} mm ({}){solve}",
             r.impacts.len(),
             r.contacts.len(),
-            r.max_pounding_force_n,
+            crate::model::settings::engineering(r.max_pounding_force_n, "N"),
             r.peak_displacement_m[0] * 1e3,
             without(0),
             r.peak_displacement_m[1] * 1e3,
             without(1),
         ));
+        if lecture {
+            return;
+        }
         match &s.estimate {
             Later::Ready(Some(e)) => {
                 ui.label(format!(
@@ -264,15 +284,25 @@ impl BuildingScene {
             .left
             .storeys
             .max(d.setup.scenario.right.storeys);
+        let lecture = super::lecture::on(ui.ctx());
+        if lecture {
+            let record = lecture_record(d);
+            building_view::caption(ui, &record, d, self.playback.shown_t(), self.exaggeration);
+        }
         let (rect, _) = ui.allocate_exact_size(
             egui::vec2(
                 ui.available_width(),
-                (200.0 + 25.0 * tall as f32).min(420.0),
+                super::fill::height(ui, (200.0 + 25.0 * tall as f32).min(420.0), 90.0),
             ),
             egui::Sense::hover(),
         );
         building_view::draw(ui, rect, d, self.playback.shown_t(), self.exaggeration);
         self.view_rect = Some(rect);
+        // On a projector the caption gives the scale; the slider would take a row.
+        if lecture {
+            self.playback.ui(ui);
+            return;
+        }
         ui.horizontal(|ui| {
             let label = ui
                 .label("exaggeration")
@@ -356,7 +386,6 @@ impl BuildingScene {
         let Some(s) = &self.shown.solved else { return };
         let r = &s.drawing.result;
         let t = self.playback.shown_t();
-        let h = 170.0;
         // Until the run without pounding lands its lines are named for why, and hold only the
         // point every run starts from (at rest): the plot lists no line without a point.
         let (base, note) = match s.baseline.ready() {
@@ -381,22 +410,29 @@ impl BuildingScene {
             (format!("right, no pounding{note}"), without(1)),
         ];
         let width = super::lecture::line_width(ui);
+        // Each building keeps its colour; its run without pounding is dashed.
+        let keys: Vec<Key> = disp_lines
+            .iter()
+            .enumerate()
+            .map(|(i, (name, _))| Key::line(name, super::legend::okabe_ito(i % 2), i >= 2))
+            .collect();
+        super::legend::row(ui, &keys);
+        let h = super::fill::height(ui, 170.0, 80.0);
         let disp_plot = Plot::new("b-disp")
             .y_grid_spacer(super::plot_view::nice_marks)
             .height(h)
-            .legend(Legend::default())
             .x_axis_label("time [s]")
-            .y_axis_label("roof displacement [mm]")
+            // A projector's short plot takes a short axis label.
+            .y_axis_label(if super::lecture::on(ui.ctx()) {
+                "roof [mm]"
+            } else {
+                "roof displacement [mm]"
+            })
             .show(ui, |p| {
-                for (i, (name, line)) in disp_lines.iter().enumerate() {
-                    let l = Line::new(name.as_str(), line.clone()).width(width);
-                    p.line(if i >= 2 {
-                        l.style(egui_plot::LineStyle::dashed_loose())
-                    } else {
-                        l
-                    });
+                for (key, (_, line)) in keys.iter().zip(&disp_lines) {
+                    p.line(key.plot_line(line.clone(), width));
                 }
-                p.vline(VLine::new("t", t));
+                p.vline(VLine::new("t", t).color(egui::Color32::GRAY));
             });
         let b = disp_plot.transform.bounds();
         self.shown_displacements = ShownPlot {
@@ -421,19 +457,20 @@ impl BuildingScene {
         let force_pts = decimate(&r.time_s, force, 1e-6);
         let top = force.iter().cloned().fold(0.0, f64::max).max(1.0);
         let width = super::lecture::line_width(ui);
+        let key = Key::line(&name, super::legend::okabe_ito(2), false);
+        super::legend::row(ui, std::slice::from_ref(&key));
         let force_plot = Plot::new("b-force")
             .y_grid_spacer(super::plot_view::nice_marks)
             .height(h)
-            .legend(Legend::default())
             .x_axis_label("time [s]")
-            .y_axis_label("pounding force [MN]")
+            .y_axis_label(if super::lecture::on(ui.ctx()) {
+                "force [MN]"
+            } else {
+                "pounding force [MN]"
+            })
             .show(ui, |p| {
-                p.line(
-                    Line::new(name.as_str(), force_pts.clone())
-                        .allow_band(false)
-                        .width(width),
-                );
-                p.vline(VLine::new("t", t));
+                p.line(key.plot_line(force_pts.clone(), width).allow_band(false));
+                p.vline(VLine::new("t", t).color(egui::Color32::GRAY));
                 if let Some((a, b)) = zoom {
                     p.set_plot_bounds(PlotBounds::from_min_max(
                         [a, -0.05 * top * 1e-6],
@@ -495,7 +532,6 @@ impl BuildingScene {
 
     fn plots_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
         let t = self.playback.shown_t();
-        let h = 170.0;
         let show = self.visibility.clone();
         if show.shows("displacements") {
             self.displacements_ui(ui, exporter);
@@ -513,7 +549,7 @@ impl BuildingScene {
         }
         self.level_ui(ui);
         let at = if show.shows("force") {
-            self.force_ui(ui, exporter, h, t)
+            self.force_ui(ui, exporter, super::fill::height(ui, 170.0, 80.0), t)
         } else {
             None
         };
@@ -531,45 +567,12 @@ impl BuildingScene {
             })
         });
         if show.shows("impacts") {
-            ui.label("impacts (click one here or in the force plot to zoom on it):");
-            // A long list scrolls in its own box, so the slabs' diagram below stays in reach.
-            egui::ScrollArea::vertical()
-                .id_salt("impact-list")
-                .max_height(190.0)
-                .show(ui, |ui| {
-                    egui::Grid::new("impacts")
-                        .striped(true)
-                        .num_columns(8)
-                        .show(ui, |ui| {
-                            for h in [
-                                "#",
-                                "start [s]",
-                                "duration [ms]",
-                                "peak force [N]",
-                                "impulse [N s]",
-                                "approach [m/s]",
-                                "contacts",
-                                "level",
-                            ] {
-                                ui.strong(h);
-                            }
-                            ui.end_row();
-                            for &i in &shown {
-                                let e = &r.impacts[i];
-                                if ui.button(format!("{}", i + 1)).clicked() {
-                                    clicked = Some(i);
-                                }
-                                ui.label(format!("{:.4}", e.start_s));
-                                ui.label(format!("{:.3}", e.duration_s() * 1e3));
-                                ui.label(format!("{:.4e}", e.peak_force_n));
-                                ui.label(format!("{:.4e}", e.impulse_ns));
-                                ui.label(format!("{:.4}", e.approach_velocity_m_s));
-                                ui.label(format!("{}", e.contacts.len()));
-                                ui.label(format!("{}", e.level + 1));
-                                ui.end_row();
-                            }
-                        });
-                });
+            let picked = if super::lecture::on(ui.ctx()) {
+                impact_pages_ui(ui, r, &shown, &mut self.impact_page)
+            } else {
+                impact_list_ui(ui, r, &shown)
+            };
+            clicked = clicked.or(picked);
         }
         if let Some(i) = clicked {
             self.selected = Some(i);
@@ -581,6 +584,115 @@ impl BuildingScene {
             self.playback.speed = 1e-3;
         }
     }
+}
+
+/// The record and its peak acceleration, as a lecture shows them.
+fn lecture_record(d: &building_view::BuildingDrawing) -> String {
+    let record = d.motion.name.split(" [").next().unwrap_or_default();
+    format!("{record}, PGA {:.2} g", d.motion_stats.pga_m_s2 / G)
+}
+
+/// The impact list in a box of its own that scrolls, so the slabs' diagram below stays in
+/// reach; returns the impact clicked.
+fn impact_list_ui(ui: &mut egui::Ui, r: &BuildingResult, shown: &[usize]) -> Option<usize> {
+    ui.label("impacts (click one here or in the force plot to zoom on it):");
+    egui::ScrollArea::vertical()
+        .id_salt("impact-list")
+        .max_height(190.0)
+        .show(ui, |ui| impact_rows_ui(ui, r, shown))
+        .inner
+}
+
+/// The impact list a page at a time, as many rows as the panel holds: on a projector nothing
+/// scrolls out of sight.
+fn impact_pages_ui(
+    ui: &mut egui::Ui,
+    r: &BuildingResult,
+    shown: &[usize],
+    page: &mut usize,
+) -> Option<usize> {
+    // A row's pitch and the page's own rows (its title, the table's header), as measured last
+    // frame; a first guess from the font before that.
+    let measured = egui::Id::unique("impact-page-measure");
+    let guess = ui.text_style_height(&egui::TextStyle::Button) + 2.0 * ui.spacing().item_spacing.y;
+    let (pitch, overhead): (f32, f32) = ui
+        .ctx()
+        .data(|d| d.get_temp(measured))
+        .unwrap_or((guess, 3.0 * guess));
+    let h = super::fill::height(ui, overhead + 4.0 * pitch, overhead + pitch);
+    let rows = (((h - overhead) / pitch).floor() as usize).max(1);
+    let pages = shown.len().div_ceil(rows).max(1);
+    *page = (*page).min(pages - 1);
+    let first = *page * rows;
+    let last = (first + rows).min(shown.len());
+    let top = ui.cursor().min.y;
+    ui.horizontal(|ui| {
+        ui.label(format!(
+            "impacts {}-{last} of {}",
+            (first + 1).min(last),
+            shown.len()
+        ));
+        if ui.add_enabled(*page > 0, egui::Button::new("<")).clicked() {
+            *page -= 1;
+        }
+        if ui
+            .add_enabled(*page + 1 < pages, egui::Button::new(">"))
+            .clicked()
+        {
+            *page += 1;
+        }
+    });
+    let table_top = ui.cursor().min.y;
+    let clicked = impact_rows_ui(ui, r, &shown[first..last]);
+    let (bottom, n) = (ui.cursor().min.y, (last - first) as f32);
+    // The header is a row of the table: n + 1 rows between the table's top and its bottom.
+    let pitch = (bottom - table_top) / (n + 1.0);
+    ui.ctx()
+        .data_mut(|d| d.insert_temp(measured, (pitch, bottom - top - n * pitch)));
+    clicked
+}
+
+/// One row an impact, in an engineer's numbers; returns the impact whose number was clicked.
+/// A projector's narrow panel keeps when, how hard, how fast and where.
+fn impact_rows_ui(ui: &mut egui::Ui, r: &BuildingResult, shown: &[usize]) -> Option<usize> {
+    use crate::model::building::result::ImpactEvent as Impact;
+    use crate::model::settings::engineering;
+    type Column = (&'static str, bool, fn(&Impact) -> String);
+    const COLUMNS: [Column; 7] = [
+        ("start", true, |e| format!("{:.4} s", e.start_s)),
+        ("duration", false, |e| engineering(e.duration_s(), "s")),
+        ("peak force", true, |e| engineering(e.peak_force_n, "N")),
+        ("impulse", false, |e| engineering(e.impulse_ns, "N s")),
+        ("approach", true, |e| {
+            format!("{:.3} m/s", e.approach_velocity_m_s)
+        }),
+        ("contacts", false, |e| e.contacts.len().to_string()),
+        ("level", true, |e| (e.level + 1).to_string()),
+    ];
+    let lecture = super::lecture::on(ui.ctx());
+    let columns: Vec<&Column> = COLUMNS.iter().filter(|c| c.1 || !lecture).collect();
+    let mut clicked = None;
+    egui::Grid::new("impacts")
+        .striped(true)
+        .num_columns(columns.len() + 1)
+        .show(ui, |ui| {
+            ui.strong("#");
+            for c in &columns {
+                ui.strong(c.0);
+            }
+            ui.end_row();
+            for &i in shown {
+                let e = &r.impacts[i];
+                if ui.button(format!("{}", i + 1)).clicked() {
+                    clicked = Some(i);
+                }
+                for c in &columns {
+                    ui.label((c.2)(e));
+                }
+                ui.end_row();
+            }
+        });
+    clicked
 }
 
 /// The first file dropped on the window this frame, if any.

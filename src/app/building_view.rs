@@ -3,6 +3,7 @@
 //! stress waves on the GPU (the bar view's pipeline, from the model's slab histories), and the
 //! contact points marked.
 
+use super::lecture;
 use crate::io::building_settings::BuildingSetup;
 use crate::model::building::{Attachment, BuildingResult, Level};
 use crate::model::field::BarWaves;
@@ -270,22 +271,44 @@ impl<'a> Scene<'a> {
             below_u = u;
             below_z = z;
         }
+        if lecture::on(painter.ctx()) {
+            return;
+        }
         painter.text(
             self.to_screen(
                 inner + dir * 0.5 * self.lengths[s] + self.xg,
                 b.total_height_m() + 0.4,
             ),
             egui::Align2::CENTER_BOTTOM,
-            format!(
-                "{} building, {} storey{}: roof {:+.2} mm",
-                if s == 0 { "left" } else { "right" },
-                b.storeys,
-                if b.storeys == 1 { "" } else { "s" },
-                self.floor_u(s, b.storeys - 1) * 1e3
-            ),
-            egui::FontId::proportional(13.0),
+            self.roof_label(s),
+            lecture::font(painter.ctx(), 13.0),
             text,
         );
+    }
+
+    /// Building `s`, its storeys and its roof's displacement now.
+    fn roof_label(&self, s: usize) -> String {
+        let sc = &self.d.setup.scenario;
+        let b = [&sc.left, &sc.right][s];
+        format!(
+            "{} building, {} storey{}: roof {:+.2} mm",
+            if s == 0 { "left" } else { "right" },
+            b.storeys,
+            if b.storeys == 1 { "" } else { "s" },
+            self.floor_u(s, b.storeys - 1) * 1e3
+        )
+    }
+
+    /// How many storeys have yielded by now.
+    fn yielded(&self) -> usize {
+        let r = &self.d.result;
+        (0..2)
+            .map(|s| {
+                (0..r.first_yield_s[s].len())
+                    .filter(|&j| r.yielded_by(s, j, self.t))
+                    .count()
+            })
+            .sum()
     }
 
     /// A mark at each level on each side, red while it carries force.
@@ -310,6 +333,9 @@ impl<'a> Scene<'a> {
 
     /// The pounding force while there is one, and the time and scales.
     fn captions(&self, painter: &egui::Painter, text: Color32) {
+        if lecture::on(painter.ctx()) {
+            return;
+        }
         let (r, rect) = (&self.d.result, self.vp.rect);
         let f = interpolate(&r.time_s, &r.force_n, self.t);
         if f > 0.0 {
@@ -317,7 +343,7 @@ impl<'a> Scene<'a> {
                 Pos2::new(rect.left() + 8.0, rect.top() + 6.0),
                 egui::Align2::LEFT_TOP,
                 format!("pounding: {:.3e} N", f),
-                egui::FontId::proportional(14.0),
+                lecture::font(painter.ctx(), 14.0),
                 Color32::from_rgb(220, 60, 50),
             );
         }
@@ -328,26 +354,61 @@ impl<'a> Scene<'a> {
                 "t = {:.4} s, drift x{:.0}, ground to scale",
                 self.t, self.exaggeration
             ),
-            egui::FontId::proportional(12.0),
+            lecture::font(painter.ctx(), 12.0),
             text,
         );
-        let yielded = (0..2)
-            .map(|s| {
-                (0..r.first_yield_s[s].len())
-                    .filter(|&j| r.yielded_by(s, j, self.t))
-                    .count()
-            })
-            .sum::<usize>();
+        let yielded = self.yielded();
         if r.storey_shear_n.iter().any(|s| !s.is_empty()) {
             painter.text(
                 Pos2::new(rect.right() - 8.0, rect.top() + 22.0),
                 egui::Align2::RIGHT_TOP,
                 format!("storeys yielded so far: {yielded} (orange columns)"),
-                egui::FontId::proportional(12.0),
+                lecture::font(painter.ctx(), 12.0),
                 YIELDED,
             );
         }
     }
+}
+
+/// What the view's captions say, as a row of labels above it in lecture mode, where a hall's
+/// font size would run labels painted over the buildings into each other.
+pub fn caption(ui: &mut egui::Ui, record: &str, d: &BuildingDrawing, t: f64, exaggeration: f64) {
+    let scene = Scene::new(
+        egui::Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(400.0, 300.0)),
+        d,
+        t,
+        exaggeration,
+    );
+    let r = &d.result;
+    ui.horizontal_wrapped(|ui| {
+        ui.spacing_mut().item_spacing.x = 24.0;
+        ui.label(record);
+        ui.label(format!("t = {t:.3} s, drift x{exaggeration:.0}"));
+        for s in 0..2 {
+            let roof = scene.floor_u(
+                s,
+                [&d.setup.scenario.left, &d.setup.scenario.right][s].storeys - 1,
+            );
+            ui.label(format!(
+                "{} roof {:+.2} mm",
+                ["left", "right"][s],
+                roof * 1e3
+            ));
+        }
+        let f = interpolate(&r.time_s, &r.force_n, t);
+        if f > 0.0 {
+            ui.colored_label(
+                Color32::from_rgb(220, 60, 50),
+                format!("pounding: {}", crate::model::settings::engineering(f, "N")),
+            );
+        }
+        if r.storey_shear_n.iter().any(|s| !s.is_empty()) {
+            ui.colored_label(
+                YIELDED,
+                format!("storeys yielded so far: {} (orange)", scene.yielded()),
+            );
+        }
+    });
 }
 
 pub fn draw(ui: &mut egui::Ui, rect: egui::Rect, d: &BuildingDrawing, t: f64, exaggeration: f64) {

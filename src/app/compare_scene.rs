@@ -30,9 +30,12 @@ const XT_SHOWN: [ModelKind; 3] = [ModelKind::Sears, ModelKind::Wave, ModelKind::
 
 type Output = Vec<(ModelKind, Result<ImpactResult, SolveError>)>;
 
-fn run_job(setup: ImpactSetup, control: &Control) -> Output {
-    let stages = COMPARED.len() as u32;
-    COMPARED
+/// One solve: the setup and the models to run it through.
+type Job = (ImpactSetup, Vec<ModelKind>);
+
+fn run_job((setup, models): Job, control: &Control) -> Output {
+    let stages = models.len() as u32;
+    models
         .iter()
         .enumerate()
         .map(|(k, &m)| {
@@ -44,7 +47,9 @@ fn run_job(setup: ImpactSetup, control: &Control) -> Output {
 
 pub struct CompareScene {
     pub core: ImpactCore,
-    pub(super) slot: SolveSlot<ImpactSetup, Output>,
+    pub(super) slot: SolveSlot<Job, Output>,
+    /// The models solved: those of [`COMPARED`] a lesson step names, or all of them.
+    models: Vec<ModelKind>,
     /// The last solve whose lead ran: every model that solved, the lead among them.
     runs: Vec<(ModelKind, Solved)>,
     /// Whether `runs` are the newest solve's (a lesson reads no older result).
@@ -63,6 +68,7 @@ impl CompareScene {
         let mut s = CompareScene {
             core: ImpactCore::new(setup),
             slot: SolveSlot::new(run_job, move || waker.request_repaint()),
+            models: COMPARED.to_vec(),
             runs: vec![],
             fresh: false,
             failed: vec![],
@@ -71,6 +77,20 @@ impl CompareScene {
         };
         s.request();
         s
+    }
+
+    /// Solves only `models` (a lesson step's), or, given none, every model compared.
+    pub fn set_models(&mut self, models: &[ModelKind]) {
+        let models = if models.is_empty() {
+            COMPARED.to_vec()
+        } else {
+            models.to_vec()
+        };
+        if models != self.models {
+            self.models = models;
+            self.runs.clear();
+            self.request();
+        }
     }
 
     /// The lead's run.
@@ -185,7 +205,8 @@ impl CompareScene {
         if (show.shows("bars") || show.shows("xt")) && playback.ui(ui) {
             playback.playing = true;
         }
-        if show.shows("force") {
+        // A lecture's step names its models; the plot's legend says which line is which.
+        if show.shows("force") && !super::lecture::on(ui.ctx()) {
             ui.horizontal(|ui| {
                 ui.label("show:");
                 for (i, m) in COMPARED.iter().enumerate() {
@@ -202,13 +223,21 @@ impl CompareScene {
     /// The Sears bars, and below them the lumped blocks.
     fn bars_ui(&mut self, ui: &mut egui::Ui, t: f64) {
         let Some(lead) = self.lead() else { return };
+        bar_view::caption(ui, lead, t);
         let (rect, _) = ui.allocate_exact_size(
-            egui::vec2(ui.available_width(), 150.0),
+            egui::vec2(ui.available_width(), super::fill::height(ui, 150.0, 50.0)),
             egui::Sense::hover(),
         );
         bar_view::draw(ui, rect, super::slots::COMPARE_VIEW, lead, t);
-        let (lumped_rect, _) =
-            ui.allocate_exact_size(egui::vec2(ui.available_width(), 70.0), egui::Sense::hover());
+        let strip = if super::lecture::on(ui.ctx()) {
+            40.0
+        } else {
+            70.0
+        };
+        let (lumped_rect, _) = ui.allocate_exact_size(
+            egui::vec2(ui.available_width(), strip),
+            egui::Sense::hover(),
+        );
         if let Some(lumped) = self.run(ModelKind::LumpedHertz) {
             draw_lumped(ui, lumped_rect, &lumped.result, t);
         }
@@ -228,11 +257,12 @@ impl CompareScene {
         let titles: Vec<String> = shown.iter().map(|(m, s)| xt_title(*m, s)).collect();
         let options = self.core.xt;
         let mut clicked = None;
+        let h = super::fill::height(ui, 230.0, 80.0);
         ui.columns(shown.len().max(1), |cols| {
             for (k, col) in cols.iter_mut().enumerate().take(shown.len()) {
                 let slot = super::slots::COMPARE_XT + k as u64;
                 let diagram = xt_diagram(shown[k].1, span, &titles[k]);
-                if let Some(t) = diagram.show(col, slot, 230.0, t, &options) {
+                if let Some(t) = diagram.show(col, slot, h, t, &options) {
                     clicked = Some(t);
                 }
             }
@@ -242,7 +272,6 @@ impl CompareScene {
 
     fn plots_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
         let t_ms = self.core.playback.t * 1e3;
-        let h = plot_height(ui);
         let show = self.core.visibility.clone();
         if show.shows("force") {
             let lines = self
@@ -255,7 +284,8 @@ impl CompareScene {
                 .map(|(_, (m, s))| force_line(*m, &s.result))
                 .collect();
             let title = "Contact force by model".to_string();
-            self.core.force_plot_ui(ui, exporter, h, t_ms, lines, title);
+            self.core
+                .force_plot_ui(ui, exporter, plot_height(ui), t_ms, lines, title);
         }
         // Where the energy goes: the chosen model's.
         if !show.shows("energy") {
@@ -275,7 +305,8 @@ impl CompareScene {
         });
         let model = self.energy_model;
         if let Some((_, s)) = self.runs.iter().find(|(m, _)| *m == model) {
-            self.core.energy_ui(ui, exporter, (model, s), h, t_ms);
+            self.core
+                .energy_ui(ui, exporter, (model, s), plot_height(ui), t_ms);
         }
     }
 }
@@ -288,7 +319,7 @@ impl ImpactScene for CompareScene {
         &mut self.core
     }
     fn request(&mut self) {
-        self.slot.request(self.core.setup);
+        self.slot.request((self.core.setup, self.models.clone()));
     }
     fn lesson_context(&self) -> Option<Context> {
         if !self.fresh || self.busy() {
@@ -348,30 +379,38 @@ fn draw_lumped(ui: &mut egui::Ui, rect: egui::Rect, r: &ImpactResult, t: f64) {
     painter.text(
         egui::pos2(rect.left() + 8.0, rect.top() + 4.0),
         egui::Align2::LEFT_TOP,
-        "lumped Hertz: rigid blocks and a spring (compression exaggerated)",
-        egui::FontId::proportional(12.0),
+        "lumped Hertz: rigid blocks, a spring",
+        super::lecture::font(painter.ctx(), 12.0),
         text,
     );
 }
 
 fn compare_table(ui: &mut egui::Ui, peers: &[(ModelKind, Solved)]) {
+    use crate::model::settings::engineering;
+    // What each solve cost is the researcher's column, not the class's.
+    let costs = !super::lecture::on(ui.ctx());
     egui::Grid::new("compare")
-        .num_columns(5)
+        .num_columns(if costs { 5 } else { 4 })
         .striped(true)
-        .spacing([18.0, 4.0])
+        .spacing([18.0, if costs { 4.0 } else { 0.0 }])
         .show(ui, |ui| {
             let model = crate::model::settings::impact::MODEL.label;
-            for h in [model, "peak force [N]", "duration [ms]", "e", "solve"] {
+            for h in [model, "peak force", "duration", "e"] {
                 ui.strong(h);
+            }
+            if costs {
+                ui.strong("solve");
             }
             ui.end_row();
             for (m, s) in peers {
                 let r = &s.result;
                 ui.label(m.name());
-                ui.label(r.peak_force_n.map_or("-".into(), |p| format!("{p:.4e}")));
-                ui.label(format!("{:.4}", r.contact_duration_s * 1e3));
+                ui.label(r.peak_force_n.map_or("-".into(), |p| engineering(p, "N")));
+                ui.label(engineering(r.contact_duration_s, "s"));
                 ui.label(format!("{:.4}", r.restitution));
-                ui.label(super::ms(r.stats.wall_time_s, 3));
+                if costs {
+                    ui.label(super::ms(r.stats.wall_time_s, 3));
+                }
                 ui.end_row();
             }
         });
@@ -379,10 +418,7 @@ fn compare_table(ui: &mut egui::Ui, peers: &[(ModelKind, Solved)]) {
     // the table is read with what its model says about it.
     for (m, s) in peers {
         for w in &s.result.warnings {
-            ui.colored_label(
-                Color32::from_rgb(220, 140, 40),
-                format!("{}: {w}", m.name()),
-            );
+            super::readouts::warning(ui, &format!("{}: {w}", m.name()));
         }
     }
 }

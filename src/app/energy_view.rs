@@ -3,11 +3,12 @@
 //! The readouts give the final split; this shows how the run gets there.
 
 use super::export::ShownPlot;
+use super::legend::Key;
 use crate::model::impact::ImpactResult;
 use crate::model::impact::energy::energy_history;
 use crate::model::scenario::ImpactScenario;
 use eframe::egui::{self, Color32};
-use egui_plot::{FilledArea, Legend, Line, Plot, VLine};
+use egui_plot::{FilledArea, Line, Plot, VLine};
 
 /// The bands, bottom up: name and colour.
 const BANDS: [(&str, Color32); 5] = [
@@ -57,20 +58,27 @@ pub fn draw(
     let total: Vec<[f64; 2]> = (0..n).map(|k| [t[k], h.total_j(k)]).collect();
     let line_colour = ui.visuals().text_color();
     let width = super::lecture::line_width(ui);
+    let band_name = |k: usize| {
+        if k == 1 && h.wave_by_bar_j.is_none() {
+            "waves (both bars)"
+        } else {
+            BANDS[k].0
+        }
+    };
+    let mut keys: Vec<Key> = bands
+        .iter()
+        .map(|(k, _, _)| Key::band(band_name(*k), BANDS[*k].1))
+        .collect();
+    keys.push(Key::line("total", line_colour, false));
+    super::legend::row(ui, &keys);
     let response = Plot::new(id)
         .y_grid_spacer(super::plot_view::nice_marks)
         .height(height)
-        .legend(Legend::default())
         .x_axis_label("time [ms]")
         .y_axis_label("energy [J]")
         .show(ui, |p| {
             for (k, lo, hi) in &bands {
-                let (name, colour) = BANDS[*k];
-                let name = if *k == 1 && h.wave_by_bar_j.is_none() {
-                    "waves (both bars)"
-                } else {
-                    name
-                };
+                let (name, colour) = (band_name(*k), BANDS[*k].1);
                 p.add(
                     FilledArea::new(name, &t, lo, hi)
                         .fill_color(colour.gamma_multiply(0.85))

@@ -145,6 +145,10 @@ impl Exporter {
 
     /// Export buttons for one plot.
     pub fn buttons(&self, ui: &mut egui::Ui, plot: &ShownPlot, name: &str) {
+        // A class looks at the plot; File > Export every plot writes what a lecturer prepares.
+        if super::lecture::on(ui.ctx()) {
+            return;
+        }
         ui.horizontal(|ui| {
             ui.label(format!("export {name}:")).on_hover_text(format!(
                 "writes {}-{name}.png/.svg/.csv with what the plot shows",
@@ -176,6 +180,9 @@ impl Exporter {
     /// bar) at the export size and scale, and the grid (200 x 400 points, the command line's
     /// `bar,x_m,t_s,stress_pa,velocity_m_s` rows).
     pub fn xt_buttons(&self, ui: &mut egui::Ui, xt: &XtExport, name: &str) {
+        if super::lecture::on(ui.ctx()) {
+            return;
+        }
         ui.horizontal(|ui| {
             ui.label(format!("export {name}:")).on_hover_text(format!(
                 "writes {}-{name}.png (the diagram) or .csv (its grid)",

@@ -77,8 +77,12 @@ pub fn show(ui: &mut egui::Ui, d: &BuildingDrawing, t: f64, shown: &mut ShownPlo
     if sides.is_empty() {
         return;
     }
-    ui.label("hysteresis loops: storey shear against storey drift up to the time shown; x marks an impact, dashed lines the law's bounds b k u \u{b1} (1 - b) F_y")
-        .on_hover_text("The area a loop encloses is the energy the storey dissipated. A storey's columns turn orange in the view once its drift has passed F_y / k.");
+    let lecture = super::lecture::on(ui.ctx());
+    let about = "hysteresis loops: storey shear against storey drift up to the time shown; x marks an impact, dashed lines the law's bounds b k u \u{b1} (1 - b) F_y";
+    // A projector's panel has no row to spare: the plots' titles say what they are.
+    if !lecture {
+        ui.label(about).on_hover_text("The area a loop encloses is the energy the storey dissipated. A storey's columns turn orange in the view once its drift has passed F_y / k.");
+    }
     let upto = r.time_s.partition_point(|&x| x <= t).max(1);
     let struck: Vec<usize> = r
         .impacts
@@ -87,6 +91,13 @@ pub fn show(ui: &mut egui::Ui, d: &BuildingDrawing, t: f64, shown: &mut ShownPlo
         .map(|e| r.time_s.partition_point(|&x| x < e.start_s).min(upto - 1))
         .collect();
     let width = super::lecture::line_width(ui);
+    // The loops stand side by side: one share of the panel's height for the row, and the
+    // width divided between them.
+    let count: usize = sides.iter().map(|&s| storeys_drawn(r, s).len()).sum();
+    let size = egui::vec2(
+        ((ui.available_width() - 8.0 * count as f32) / count as f32).clamp(150.0, 300.0),
+        super::fill::height(ui, 170.0, 80.0),
+    );
     let mut series = Vec::new();
     ui.horizontal_wrapped(|ui| {
         for s in sides {
@@ -94,14 +105,24 @@ pub fn show(ui: &mut egui::Ui, d: &BuildingDrawing, t: f64, shown: &mut ShownPlo
                 let st = storey(d, s, j);
                 let grown = &st.points[..upto.min(st.points.len())];
                 ui.vertical(|ui| {
-                    ui.label(format!("{}: ductility {:.2}", st.name, st.ductility));
+                    // A projector's narrow column takes the lessons' symbol for it.
+                    let title = if lecture {
+                        format!(
+                            "{} loop: mu = {:.2}",
+                            st.name.replace(" storey", ""),
+                            st.ductility
+                        )
+                    } else {
+                        format!("{}: ductility {:.2}", st.name, st.ductility)
+                    };
+                    ui.label(title).on_hover_text(about);
                     loop_plot(
                         ui,
                         (s, j),
                         &st,
                         grown,
                         &struck,
-                        width,
+                        (width, size),
                         r.yielded_by(s, j, t),
                     );
                 });
@@ -125,7 +146,7 @@ fn loop_plot(
     st: &Storey,
     grown: &[[f64; 2]],
     struck: &[usize],
-    width: f32,
+    (width, size): (f32, egui::Vec2),
     yielded: bool,
 ) {
     let (mut lo, mut hi) = ([0.0f64; 2], [0.0f64; 2]);
@@ -136,8 +157,8 @@ fn loop_plot(
         }
     }
     Plot::new(("b-loop", id.0, id.1))
-        .width(300.0)
-        .height(170.0)
+        .width(size.x)
+        .height(size.y)
         .x_axis_label("drift [mm]")
         .x_grid_spacer(super::plot_view::sparse_marks)
         .y_grid_spacer(super::plot_view::nice_marks)

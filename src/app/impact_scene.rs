@@ -6,6 +6,7 @@ use super::bar_view::Solved;
 use super::energy_view;
 use super::export::{Exporter, ShownPlot};
 use super::impact_params;
+use super::legend::Key;
 use super::params::Fields;
 use super::playback::Playback;
 use super::visibility::Visibility;
@@ -15,7 +16,7 @@ use crate::io::settings::ImpactSetup;
 use crate::lesson::Context;
 use crate::model::impact::{ImpactResult, ModelKind};
 use eframe::egui;
-use egui_plot::{Legend, Line, Plot, VLine};
+use egui_plot::{Plot, VLine};
 
 pub struct ImpactCore {
     pub setup: ImpactSetup,
@@ -67,30 +68,27 @@ impl ImpactCore {
         title: String,
     ) {
         let width = super::lecture::line_width(ui);
+        let keys: Vec<Key> = lines
+            .iter()
+            .enumerate()
+            .map(|(k, (name, _))| Key::of_series(name, k))
+            .collect();
+        super::legend::row(ui, &keys);
         let response = Plot::new("force")
             .y_grid_spacer(super::plot_view::nice_marks)
             .height(h)
-            .legend(Legend::default())
             .x_axis_label("time [ms]")
             .y_axis_label("force [kN]")
             .link_axis(egui::Id::unique("bar-plots"), [true, false])
             .show(ui, |p| {
                 // Sears on top: the curves that lie on it (FE, a stiff contact's wave theory)
                 // are dashed beneath it.
-                let mut order: Vec<&(String, Vec<[f64; 2]>)> = lines.iter().collect();
-                order.sort_by_key(|(name, _)| name == "sears");
-                for (name, pts) in order {
+                let mut order: Vec<(&Key, &Vec<[f64; 2]>)> =
+                    keys.iter().zip(lines.iter().map(|(_, pts)| pts)).collect();
+                order.sort_by_key(|(key, _)| key.name == "sears");
+                for (key, pts) in order {
                     // Wave theory jumps (repeated times): no band aggregation, which would fill them.
-                    let mut line = Line::new(name.as_str(), pts.clone())
-                        .allow_band(false)
-                        .width(width);
-                    if let Some(st) = crate::export::palette::style_of(name) {
-                        line = line.color(egui::Color32::from_rgb(st.rgb[0], st.rgb[1], st.rgb[2]));
-                        if st.dashed {
-                            line = line.style(egui_plot::LineStyle::dashed_loose());
-                        }
-                    }
-                    p.line(line);
+                    p.line(key.plot_line(pts.clone(), width).allow_band(false));
                 }
                 // The time line in grey: no model's colour.
                 p.vline(VLine::new("t", t_ms).color(egui::Color32::GRAY));
@@ -159,9 +157,9 @@ pub(super) fn context_of(runs: &[(ModelKind, &Solved)]) -> Option<Context> {
     Some(Context::impact(&first.setup, &results))
 }
 
-/// The height of each of the stacked plots.
+/// The height of one of the stacked plots: its share of the panel.
 pub(super) fn plot_height(ui: &egui::Ui) -> f32 {
-    ((ui.available_height() - 160.0) / 2.0).clamp(120.0, 260.0)
+    super::fill::height(ui, 200.0, 80.0)
 }
 
 /// A run's x-t diagram title: its waves, or for a lumped model its uniform stress.

@@ -198,6 +198,11 @@ impl PoundingApp {
         }
         self.buildings.visibility = visibility;
         self.buildings.set_lock(lock);
+        let models = self
+            .lesson
+            .as_ref()
+            .map_or(vec![], |p| p.current().models.clone());
+        self.compare.set_models(&models);
     }
 
     /// The expressions' context from the step's scene, once its solve has landed.
@@ -208,6 +213,13 @@ impl PoundingApp {
             LessonScene::Compare => self.compare.lesson_context(),
             LessonScene::Buildings => self.buildings.lesson_context(),
         }
+    }
+
+    /// Whether the settings panel shows: not while a lecture's step holds its task back.
+    pub(super) fn lesson_shows_settings(&self) -> bool {
+        self.lesson
+            .as_ref()
+            .is_none_or(|p| p.shows_task(self.lecture))
     }
 
     /// Whether the result views wait for the student's prediction.
@@ -241,11 +253,7 @@ impl PoundingApp {
             return;
         };
         ui.add_space(16.0);
-        ui.label(
-            RichText::new("Before the results: predict")
-                .strong()
-                .size(20.0),
-        );
+        ui.label(RichText::new("Before the results: predict").heading());
         ui.add_space(8.0);
         prediction_ui(ui, p, &pred);
         ui.add_space(12.0);
@@ -293,16 +301,60 @@ enum Way {
 fn way_ui(ui: &mut egui::Ui, p: &LessonPlayer, progress: &Progress) -> Way {
     let mut way = Way::Stay;
     let n = p.lesson.steps.len();
-    ui.horizontal_wrapped(|ui| {
-        ui.heading(&p.lesson.title);
+    // A projector has the lesson's title in the top bar and where the class is between the
+    // buttons, on one row; the score and the progress bar are each student's own.
+    let lecture = super::lecture::on(ui.ctx());
+    let leave = |ui: &mut egui::Ui, way: &mut Way| {
         if ui
             .small_button("Leave")
             .on_hover_text("Close the lesson: every panel and setting back")
             .clicked()
         {
-            way = Way::Leave;
+            *way = Way::Leave;
+        }
+    };
+    if !lecture {
+        ui.horizontal_wrapped(|ui| {
+            ui.heading(&p.lesson.title);
+            leave(ui, &mut way);
+        });
+        progress_ui(ui, p, progress);
+    }
+    ui.horizontal_wrapped(|ui| {
+        if ui
+            .add_enabled(p.step > 0, egui::Button::new("< Back"))
+            .on_hover_text("PgUp")
+            .clicked()
+        {
+            way = Way::Turn(p.step - 1);
+        }
+        if lecture {
+            ui.label(format!("step {} of {n}", p.step + 1));
+        }
+        if ui
+            .add_enabled(p.step + 1 < n, egui::Button::new("Next >"))
+            .on_hover_text("PgDn")
+            .clicked()
+        {
+            way = Way::Turn(p.step + 1);
+        }
+        if ui
+            .button(if lecture { "Reset" } else { "Reset step" })
+            .on_hover_text("The step's settings as it began, the answer cleared")
+            .clicked()
+        {
+            way = Way::Reset;
+        }
+        if lecture {
+            leave(ui, &mut way);
         }
     });
+    way
+}
+
+/// Where the student is, how many steps they have done and their score.
+fn progress_ui(ui: &mut egui::Ui, p: &LessonPlayer, progress: &Progress) {
+    let n = p.lesson.steps.len();
     let own = progress.0.get(&p.lesson.name);
     let done = own.map_or(0, |pr| pr.done(&p.lesson));
     let where_ = format!("step {} of {n} ({done} done)", p.step + 1);
@@ -320,67 +372,84 @@ fn way_ui(ui: &mut egui::Ui, p: &LessonPlayer, progress: &Progress) -> Way {
             "score: {right} of {asked} predictions right at the first try, {met} of {tasks} tasks met"
         ));
     }
-    ui.horizontal(|ui| {
-        if ui
-            .add_enabled(p.step > 0, egui::Button::new("< Back"))
-            .on_hover_text("PgUp")
-            .clicked()
-        {
-            way = Way::Turn(p.step - 1);
-        }
-        if ui
-            .button("Reset step")
-            .on_hover_text("The step's settings as it began, the answer cleared")
-            .clicked()
-        {
-            way = Way::Reset;
-        }
-        if ui
-            .add_enabled(p.step + 1 < n, egui::Button::new("Next >"))
-            .on_hover_text("PgDn")
-            .clicked()
-        {
-            way = Way::Turn(p.step + 1);
-        }
-    });
-    way
 }
 
 /// The step's title and text, its answered prediction and its task.
 fn step_ui(ui: &mut egui::Ui, p: &mut LessonPlayer) {
     let step = p.current().clone();
-    ui.label(RichText::new(&step.title).strong().size(17.0));
-    ui.label(reflow(&step.text));
+    ui.label(RichText::new(&step.title).heading());
+    if p.judged.is_some() && super::lecture::on(ui.ctx()) {
+        // The explanation takes the text's and the question's place on a projector; they
+        // stay a click away.
+        egui::CollapsingHeader::new("The step and its question")
+            .id_salt(("step-text", p.step))
+            .default_open(false)
+            .show(ui, |ui| {
+                ui.label(reflow(&step.text));
+                if let Some(pred) = &step.prediction {
+                    ui.label(RichText::new(reflow(pred.question())).strong());
+                }
+            });
+    } else {
+        ui.label(reflow(&step.text));
+    }
     if let Some(e) = &p.load_error {
         ui.colored_label(BAD, format!("this step could not be loaded: {e}"));
     }
     // While the prediction waits it stands in the middle of the window, where the results
     // will appear; once answered, its verdict stays here beside them.
+    let lecture = super::lecture::on(ui.ctx());
+    let Some(task) = &step.task else {
+        if let Some(pred) = &step.prediction
+            && p.judged.is_some()
+        {
+            ui.separator();
+            prediction_ui(ui, p, pred);
+        }
+        return;
+    };
     if let Some(pred) = &step.prediction
         && p.judged.is_some()
     {
         ui.separator();
-        prediction_ui(ui, p, pred);
+        if p.shows_task(lecture) && lecture {
+            egui::CollapsingHeader::new("The prediction")
+                .id_salt(("prediction", p.step))
+                .default_open(false)
+                .show(ui, |ui| prediction_ui(ui, p, pred));
+        } else {
+            prediction_ui(ui, p, pred);
+        }
+        if !p.shows_task(lecture) && ui.button("On to the task >").clicked() {
+            p.task_opened = true;
+        }
     }
-    let Some(task) = &step.task else { return };
+    if !p.shows_task(lecture) {
+        return;
+    }
     ui.separator();
-    ui.label(RichText::new("Task").strong());
-    ui.label(reflow(&task.text));
-    match &p.task {
-        Some(Ok(true)) => {
-            ui.colored_label(GOOD, "met");
+    ui.label(RichText::new(format!("Task: {}", reflow(&task.text))).strong());
+    ui.horizontal_wrapped(|ui| {
+        match &p.task {
+            Some(Ok(true)) => {
+                ui.colored_label(GOOD, "met");
+            }
+            Some(Ok(false)) | None if lecture => {
+                ui.label("not yet met");
+            }
+            Some(Ok(false)) | None => {
+                ui.label("not yet met: change the unlocked settings below");
+            }
+            Some(Err(e)) => {
+                ui.colored_label(BAD, format!("the task cannot be checked: {e}"));
+            }
         }
-        Some(Ok(false)) | None => {
-            ui.label("not yet met: change the unlocked settings below");
+        if !p.hint_shown && ui.small_button("Hint").clicked() {
+            p.hint_shown = true;
         }
-        Some(Err(e)) => {
-            ui.colored_label(BAD, format!("the task cannot be checked: {e}"));
-        }
-    }
+    });
     if p.hint_shown {
         ui.label(RichText::new(format!("Hint: {}", task.hint)).italics());
-    } else if ui.small_button("Hint").clicked() {
-        p.hint_shown = true;
     }
 }
 
@@ -423,8 +492,14 @@ pub fn reflow(text: &str) -> String {
 
 /// The question, its options or number field, and after the answer its verdict and explanation.
 fn prediction_ui(ui: &mut egui::Ui, p: &mut LessonPlayer, pred: &Prediction) {
-    ui.label(RichText::new(reflow(pred.question())).size(17.0));
     let answered = p.judged.is_some();
+    // On a projector the verdict names the answer: the question (under the step's text) and
+    // the options would only push the explanation off the screen.
+    if answered && super::lecture::on(ui.ctx()) {
+        judged_ui(ui, p, pred);
+        return;
+    }
+    ui.label(RichText::new(reflow(pred.question())).strong());
     ui.add_enabled_ui(!answered, |ui| match pred {
         Prediction::Choice { options, .. } => {
             for (i, o) in options.iter().enumerate() {
@@ -455,6 +530,14 @@ fn prediction_ui(ui: &mut egui::Ui, p: &mut LessonPlayer, pred: &Prediction) {
                 ui.label(RichText::new(why).italics());
             }
         }
+        Some(_) => judged_ui(ui, p, pred),
+    }
+}
+
+/// The verdict on an answer and the step's explanation.
+fn judged_ui(ui: &mut egui::Ui, p: &LessonPlayer, pred: &Prediction) {
+    match &p.judged {
+        None => {}
         Some(Ok(j)) => {
             if j.correct {
                 ui.colored_label(GOOD, format!("Right: {}", j.expected));

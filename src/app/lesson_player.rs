@@ -109,6 +109,9 @@ pub struct LessonPlayer {
     pub loaded: bool,
     /// The student's answer is waiting for the result to be judged against.
     pub judging: bool,
+    /// A step with a prediction and a task has moved on to its task (lecture mode shows one
+    /// at a time: a projector holds the explanation or the task, not both).
+    pub task_opened: bool,
 }
 
 impl LessonPlayer {
@@ -124,6 +127,7 @@ impl LessonPlayer {
             load_error: None,
             loaded: false,
             judging: false,
+            task_opened: false,
         }
     }
 
@@ -161,6 +165,13 @@ impl LessonPlayer {
         self.load_error = None;
         self.loaded = false;
         self.judging = false;
+        self.task_opened = false;
+    }
+
+    /// Whether the step's task (and the settings it unlocks) is on screen: always, except in
+    /// lecture mode on a step that asks a prediction first, until the class moves on to it.
+    pub fn shows_task(&self, lecture: bool) -> bool {
+        !lecture || self.current().prediction.is_none() || self.task_opened
     }
 
     /// Whether the result views wait for the student's prediction.

@@ -7,7 +7,10 @@ use eframe::egui;
 impl PoundingApp {
     pub(super) fn top_bar(&mut self, ui: &mut egui::Ui) {
         ui.horizontal_wrapped(|ui| {
-            ui.strong("Pounding Lab");
+            // On a projector the bar holds the lesson's title instead.
+            if !(self.lecture && self.lesson.is_some()) {
+                ui.strong("Pounding Lab");
+            }
             ui.menu_button("File", |ui| self.file_menu(ui))
                 .response
                 .on_hover_text("Exports: plots, screenshots");
@@ -19,7 +22,16 @@ impl PoundingApp {
                 .on_hover_text("Lecture mode and the theme");
             // In a lesson shown in lecture mode the step decides the scene and the settings:
             // the bar keeps only the menus, readable at 1280 x 720.
-            if self.lecture && self.lesson.is_some() {
+            if self.lecture
+                && let Some(lesson) = &self.lesson
+            {
+                ui.separator();
+                ui.strong(&lesson.lesson.title);
+                ui.separator();
+                let p = self.playback();
+                if p.bar_ui(ui) {
+                    p.playing = true;
+                }
                 return;
             }
             ui.separator();

@@ -20,6 +20,7 @@ mod drag;
 mod energy_view;
 mod export;
 mod export_animation;
+mod fill;
 mod hysteresis_view;
 mod impact_params;
 mod impact_scene;
@@ -27,6 +28,7 @@ mod job_error;
 mod later;
 mod launch;
 mod lecture;
+mod legend;
 mod lesson_gate;
 mod lesson_panel;
 pub mod lesson_player;
@@ -38,6 +40,7 @@ mod params;
 mod persistence;
 mod playback;
 mod plot_view;
+mod readouts;
 mod scene;
 mod series;
 mod slots;
@@ -407,23 +410,34 @@ impl PoundingApp {
     /// The top bar, the status bar, the settings (under a lesson's panel) and the scene, or the
     /// prediction the scene waits for.
     fn panels(&mut self, ui: &mut egui::Ui) {
+        playback::hoist(ui.ctx(), self.lecture && self.lesson.is_some());
         let side = self.panel_frame(egui::Frame::side_top_panel(ui.style()));
         egui::Panel::top("top")
             .frame(side)
             .show(ui, |ui| self.top_bar(ui));
         self.status_bar(ui);
-        let width = if self.lecture { 250.0 } else { 380.0 };
+        // A projector's lesson panel holds the step's text in lines a hall can read, and
+        // leaves the results more than half the screen.
+        let screen = ui.ctx().content_rect().width();
+        let (width, widest) = if self.lecture {
+            (0.42 * screen, 0.5 * screen)
+        } else {
+            (380.0, f32::INFINITY)
+        };
         egui::Panel::left("params")
             .frame(side)
             .resizable(true)
             .default_size(width)
+            .max_size(widest)
             .show(ui, |ui| {
                 egui::ScrollArea::vertical().show(ui, |ui| {
                     if self.lesson.is_some() {
                         self.lesson_ui(ui);
                         ui.separator();
                     }
-                    self.shown_mut().0.params_ui(ui);
+                    if self.lesson_shows_settings() {
+                        self.shown_mut().0.params_ui(ui);
+                    }
                 });
             });
         let hidden = self.lesson_hides_results();
@@ -433,8 +447,12 @@ impl PoundingApp {
                 egui::ScrollArea::vertical().show(ui, |ui| self.prediction_waiting_ui(ui));
                 return;
             }
+            // A few points short of the panel: a view that fills it exactly would still show a
+            // scroll bar for the rounding of its last row.
+            fill::begin(ui.ctx(), ui.available_height() - 6.0);
             let (scene, exporter) = self.shown_mut();
-            egui::ScrollArea::vertical().show(ui, |ui| scene.main_ui(ui, exporter));
+            let shown = egui::ScrollArea::vertical().show(ui, |ui| scene.main_ui(ui, exporter));
+            fill::end(ui.ctx(), shown.content_size.y);
         });
     }
 

@@ -25,7 +25,11 @@ pub fn ui<S: WithMotion>(
             .map_or_else(|| "file".to_string(), |b| b.title.to_string()),
     };
     let file_key = setting::MOTION_FILE.key;
+    let file_shown = fields.shows(file_key);
     ui.horizontal(|ui| {
+        if !file_shown {
+            return;
+        }
         let label = ui.label("record").id;
         fields.gate(ui, file_key, |ui| {
             egui::ComboBox::from_id_salt("motion-record")
@@ -54,6 +58,9 @@ pub fn ui<S: WithMotion>(
         });
     });
     ui.horizontal(|ui| {
+        if !file_shown {
+            return;
+        }
         let label = ui.label("file").id;
         ui.add(
             egui::TextEdit::singleline(path)

@@ -79,6 +79,18 @@ impl Fields {
         }
     }
 
+    /// Whether the row of `key` is drawn at all (a locked row is left out in lecture mode).
+    pub fn shows(&self, key: &str) -> bool {
+        self.lock
+            .as_ref()
+            .is_none_or(|l| !l.hide_locked || l.opens(key))
+    }
+
+    /// Whether any of `keys` is drawn: a group with none of them is left out whole.
+    pub fn shows_any(&self, keys: &[&str]) -> bool {
+        keys.iter().any(|k| self.shows(k))
+    }
+
     /// Whether a group of rows whose keys start with `prefix` has anything to show.
     pub fn shows_group(&self, prefix: &str) -> bool {
         self.lock
@@ -133,7 +145,8 @@ impl Fields {
                 .add(
                     egui::TextEdit::singleline(shown)
                         .id(egui::Id::unique(("field", id)))
-                        .desired_width(80.0),
+                        // Wide enough for a value like 1.0000e11 in the panel's font.
+                        .desired_width(6.4 * ui.style().text_styles[&egui::TextStyle::Body].size),
                 )
                 .labelled_by(label);
             let commit = response.lost_focus()

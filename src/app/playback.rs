@@ -65,8 +65,35 @@ impl Playback {
     }
 
     /// Play/pause, step, speed and scrubber; returns whether the user asked for a restart.
+    /// Where the transport stands in the top bar ([`hoist`]) the scene's call only asks for
+    /// it there.
     pub fn ui(&mut self, ui: &mut egui::Ui) -> bool {
+        if hoisted(ui.ctx()) {
+            ui.ctx().data_mut(|d| d.insert_temp(wanted_id(), true));
+            return false;
+        }
+        self.controls(ui)
+    }
+
+    /// The transport in the top bar, where a scene asked for it last frame; returns whether
+    /// the user asked for a restart.
+    pub fn bar_ui(&mut self, ui: &mut egui::Ui) -> bool {
+        let wanted = ui
+            .ctx()
+            .data_mut(|d| d.remove_temp::<bool>(wanted_id()))
+            .unwrap_or(false);
+        wanted && self.controls(ui)
+    }
+
+    /// Lecture mode keeps play, restart and the scrubber on one row (the arrow key still
+    /// steps; each scene starts at a speed that shows its waves).
+    fn controls(&mut self, ui: &mut egui::Ui) -> bool {
+        let lecture = super::lecture::on(ui.ctx());
         let mut restart = false;
+        // The row's room, measured where it starts: a row nested in another (the top bar) sees
+        // its parent's whole width as its own.
+        let (start, room) = (ui.cursor().min.x, ui.available_size_before_wrap().x);
+        let left = move |ui: &egui::Ui| room - (ui.cursor().min.x - start);
         ui.horizontal_wrapped(|ui| {
             if ui
                 .button(if self.playing { "Pause" } else { "Play" })
@@ -75,10 +102,11 @@ impl Playback {
             {
                 self.playing = !self.playing;
             }
-            if ui
-                .button("Step")
-                .on_hover_text("One step forward (right arrow)")
-                .clicked()
+            if !lecture
+                && ui
+                    .button("Step")
+                    .on_hover_text("One step forward (right arrow)")
+                    .clicked()
             {
                 self.step();
             }
@@ -90,20 +118,14 @@ impl Playback {
                 restart = true;
                 self.t = 0.0;
             }
-            let label = ui
-                .label("speed")
-                .on_hover_text(
-                    "Simulated time per real second: 1e-4 shows a millisecond impact over 10 s",
-                )
-                .id;
-            ui.add(
-                egui::Slider::new(&mut self.speed, 1e-7..=10.0)
-                    .logarithmic(true)
-                    .custom_formatter(|v, _| format!("{v:.1e} s/s")),
-            )
-            .labelled_by(label);
+            if !lecture {
+                self.speed_ui(ui, left(ui));
+                ui.end_row();
+            }
             let t_max = self.t_max;
             let label = ui.label("t").on_hover_text("Animation time").id;
+            // The slider takes the width the row leaves: a fixed width runs off a narrow panel.
+            ui.spacing_mut().slider_width = (left(ui) - 150.0).clamp(60.0, 400.0);
             ui.add(
                 egui::Slider::new(&mut self.t, 0.0..=t_max)
                     .custom_formatter(|v, _| format!("{:.4} ms", v * 1e3)),
@@ -112,6 +134,40 @@ impl Playback {
         });
         restart
     }
+
+    fn speed_ui(&mut self, ui: &mut egui::Ui, room: f32) {
+        let label = ui
+            .label("speed")
+            .on_hover_text(
+                "Simulated time per real second: 1e-4 shows a millisecond impact over 10 s",
+            )
+            .id;
+        ui.spacing_mut().slider_width = (room - 150.0).clamp(40.0, 160.0);
+        ui.add(
+            egui::Slider::new(&mut self.speed, 1e-7..=10.0)
+                .logarithmic(true)
+                .custom_formatter(|v, _| format!("{v:.1e} s/s")),
+        )
+        .labelled_by(label);
+    }
+}
+
+fn hoisted_id() -> egui::Id {
+    egui::Id::unique("transport-in-top-bar")
+}
+
+fn wanted_id() -> egui::Id {
+    egui::Id::unique("transport-wanted")
+}
+
+/// Puts the transport in the top bar (a lesson in lecture mode, where the scene's panel needs
+/// every row for its results) or back in the scene.
+pub fn hoist(ctx: &egui::Context, on: bool) {
+    ctx.data_mut(|d| d.insert_temp(hoisted_id(), on));
+}
+
+fn hoisted(ctx: &egui::Context) -> bool {
+    ctx.data(|d| d.get_temp(hoisted_id())).unwrap_or(false)
 }
 
 #[cfg(test)]

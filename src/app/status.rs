@@ -14,38 +14,18 @@ pub fn ms(seconds: f64, decimals: usize) -> String {
 
 impl PoundingApp {
     pub(super) fn status_bar(&mut self, ui: &mut egui::Ui) {
+        // A class has no use for timings: lecture mode keeps the bar for progress and messages.
+        let timings = !self.lecture;
+        if !timings && self.message.is_none() && self.shown().progress().is_none() {
+            return;
+        }
         let frame = self.panel_frame(egui::Frame::side_top_panel(ui.style()));
         egui::Panel::bottom("status").frame(frame).show(ui, |ui| {
-            ui.horizontal(|ui| {
-                let (solve, latency) = self.shown().timings();
-                let solving = if self.shown().busy() {
-                    format!(" | {}", self.shown().solving_note())
-                } else {
-                    String::new()
-                };
-                let timings = ui.label(format!(
-                    "UI {} | solve {} | change to result {}{solving}",
-                    ms(self.ui_ms * 1e-3, 2),
-                    ms(solve.as_secs_f64(), 3),
-                    ms(latency.as_secs_f64(), 1),
-                ));
-                if let Some(later) = self.shown().later_stages() {
-                    timings.on_hover_text(later);
+            ui.horizontal_wrapped(|ui| {
+                if timings {
+                    self.timings_ui(ui);
                 }
-                if let Some(done) = self.shown().progress() {
-                    ui.add(
-                        egui::ProgressBar::new(done as f32)
-                            .desired_width(160.0)
-                            .show_percentage(),
-                    );
-                    if ui
-                        .button("Cancel")
-                        .on_hover_text("Stop this solve; the last result stays")
-                        .clicked()
-                    {
-                        self.shown_mut().0.cancel();
-                    }
-                }
+                self.progress_ui(ui);
                 if let Some((m, is_error)) = &self.message {
                     ui.separator();
                     let colour = if *is_error {
@@ -57,6 +37,41 @@ impl PoundingApp {
                 }
             });
         });
+    }
+
+    fn timings_ui(&mut self, ui: &mut egui::Ui) {
+        let (solve, latency) = self.shown().timings();
+        let solving = if self.shown().busy() {
+            format!(" | {}", self.shown().solving_note())
+        } else {
+            String::new()
+        };
+        let timings = ui.label(format!(
+            "UI {} | solve {} | change to result {}{solving}",
+            ms(self.ui_ms * 1e-3, 2),
+            ms(solve.as_secs_f64(), 3),
+            ms(latency.as_secs_f64(), 1),
+        ));
+        if let Some(later) = self.shown().later_stages() {
+            timings.on_hover_text(later);
+        }
+    }
+
+    fn progress_ui(&mut self, ui: &mut egui::Ui) {
+        if let Some(done) = self.shown().progress() {
+            ui.add(
+                egui::ProgressBar::new(done as f32)
+                    .desired_width(160.0)
+                    .show_percentage(),
+            );
+            if ui
+                .button("Cancel")
+                .on_hover_text("Stop this solve; the last result stays")
+                .clicked()
+            {
+                self.shown_mut().0.cancel();
+            }
+        }
     }
 
     pub(super) fn keys(&mut self, ctx: &egui::Context) {

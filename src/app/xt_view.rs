@@ -30,7 +30,7 @@ impl Default for XtOptions {
 impl XtOptions {
     /// The field toggle and the characteristics checkbox.
     pub fn ui(&mut self, ui: &mut egui::Ui) {
-        ui.horizontal(|ui| {
+        ui.horizontal_wrapped(|ui| {
             ui.label("x-t diagram:");
             ui.selectable_value(&mut self.field, XtShown::Stress, "stress")
                 .on_hover_text("Axial stress: compression blue, tension red");
@@ -213,7 +213,7 @@ impl XtDiagram<'_> {
     /// The title and the time axis, in ms at round values.
     fn time_axis(&self, painter: &egui::Painter, frame: &Frame, rect: Rect, text: Color32) {
         let plot = frame.vp.rect;
-        let font = egui::FontId::proportional(11.0);
+        let font = super::lecture::font(painter.ctx(), 11.0);
         painter.text(
             Pos2::new(plot.left(), rect.top() + 2.0),
             egui::Align2::LEFT_TOP,
@@ -244,7 +244,7 @@ impl XtDiagram<'_> {
     /// front's speed reads off as a slope.
     fn distance_axis(&self, painter: &egui::Painter, frame: &Frame, text: Color32) {
         let plot = frame.vp.rect;
-        let font = egui::FontId::proportional(11.0);
+        let font = super::lecture::font(painter.ctx(), 11.0);
         let lengths: [f64; 2] = match self.waves() {
             Some(w) => [w[0].length_m(), w[1].length_m()],
             None => {
@@ -308,7 +308,7 @@ impl XtDiagram<'_> {
                         vp.to_screen(x, 1.0),
                         egui::Align2::CENTER_BOTTOM,
                         "d",
-                        egui::FontId::proportional(11.0),
+                        super::lecture::font(painter.ctx(), 11.0),
                         text,
                     );
                 }
@@ -405,7 +405,7 @@ pub(super) fn colour_bar(
         XtShown::Stress => (scale * 1e-6, "MPa", "tension", "compression"),
         XtShown::Velocity => (scale, "m/s", "right", "left"),
     };
-    let font = egui::FontId::proportional(11.0);
+    let font = super::lecture::font(painter.ctx(), 11.0);
     let x = bar.right() + 4.0;
     for (y, label) in [
         (bar.top(), format!("+{scale:.3} {unit}")),

@@ -194,6 +194,9 @@ pub struct Step {
     /// `--set` overrides: (key, value, line).
     pub set: Vec<(String, String, usize)>,
     pub show: Vec<Panel>,
+    /// The models a compare step solves and shows (Sears, whose bars the scene draws, among
+    /// them); empty in the other scenes.
+    pub models: Vec<crate::model::impact::ModelKind>,
     /// The settings keys the student may change (the rest stay locked).
     pub unlock: Vec<String>,
     pub prediction: Option<Prediction>,

@@ -1,10 +1,11 @@
 //! Reading a lesson file: strict (a field the format does not know is an error), every error
 //! with its line and field.
 
-use super::context::Vocabulary;
+use super::context::{COMPARE_MODELS, Vocabulary, model_prefix};
 use super::expr::Expr;
 use super::solve::SceneSetup;
 use super::{Lesson, LessonError, LessonScene, Panel, Prediction, Step, Task};
+use crate::model::impact::ModelKind;
 use crate::model::settings::{BUILDING_SETTINGS, IMPACT_SETTINGS, concrete_keys};
 use toml::de::{DeTable, DeValue};
 
@@ -203,6 +204,7 @@ const STEP: &[&str] = &[
     "preset",
     "set",
     "show",
+    "models",
     "unlock",
     "asserts",
     "prediction",
@@ -362,6 +364,7 @@ fn step(doc: &Doc, table: &DeTable, index: usize, line: usize) -> Result<Step, L
             "missing: the panels this step shows",
         ));
     }
+    let models = models(doc, f.strings(doc, "models")?, scene, &path, line)?;
     let unlock = unlocked(doc, f.strings(doc, "unlock")?, scene, &path)?;
     let asserts = f
         .strings(doc, "asserts")?
@@ -396,7 +399,7 @@ fn step(doc: &Doc, table: &DeTable, index: usize, line: usize) -> Result<Step, L
         None => None,
     };
     f.finish(doc, STEP)?;
-    Ok(Step {
+    let step = Step {
         title,
         text,
         line,
@@ -404,11 +407,95 @@ fn step(doc: &Doc, table: &DeTable, index: usize, line: usize) -> Result<Step, L
         preset: preset.map(|(p, _)| p),
         set,
         show,
+        models,
         unlock,
         prediction,
         task,
         asserts,
-    })
+    };
+    reads_only_its_models(doc, &step, &path)?;
+    Ok(step)
+}
+
+/// The models a compare step solves: those it names (Sears among them: the scene's bars and
+/// x-t diagrams are its run), or every model the scene compares.
+fn models(
+    doc: &Doc,
+    items: Vec<(String, usize)>,
+    scene: LessonScene,
+    path: &str,
+    line: usize,
+) -> Result<Vec<ModelKind>, LessonError> {
+    let field = format!("{path}.models");
+    if scene != LessonScene::Compare {
+        return match items.first() {
+            Some((_, l)) => {
+                Err(doc.error(Some(*l), &field, "only a compare step names its models"))
+            }
+            None => Ok(vec![]),
+        };
+    }
+    if items.is_empty() {
+        return Ok(COMPARE_MODELS.to_vec());
+    }
+    let allowed: Vec<&str> = COMPARE_MODELS.iter().map(|m| m.name()).collect();
+    let mut out = Vec::new();
+    for (name, l) in items {
+        let Some(m) = COMPARE_MODELS.iter().find(|m| m.name() == name) else {
+            return Err(doc.error(
+                Some(l),
+                &field,
+                format!("unknown model '{name}': allowed {}", allowed.join("|")),
+            ));
+        };
+        if out.contains(m) {
+            return Err(doc.error(Some(l), &field, format!("'{name}' is named twice")));
+        }
+        out.push(*m);
+    }
+    if !out.contains(&ModelKind::Sears) {
+        return Err(doc.error(
+            Some(line),
+            &field,
+            "a compare step solves sears: its bars and x-t diagrams are Sears' run",
+        ));
+    }
+    Ok(out)
+}
+
+/// Refuses an expression that reads a model the compare step leaves out.
+fn reads_only_its_models(doc: &Doc, step: &Step, path: &str) -> Result<(), LessonError> {
+    if step.scene != LessonScene::Compare {
+        return Ok(());
+    }
+    let mut exprs: Vec<&Expr> = step.asserts.iter().collect();
+    match &step.prediction {
+        Some(Prediction::Choice { when, .. }) => exprs.extend(when),
+        Some(Prediction::Number { answer, .. }) => exprs.push(answer),
+        None => {}
+    }
+    if let Some(t) = &step.task {
+        exprs.push(&t.goal);
+    }
+    for name in exprs.iter().flat_map(|e| e.names()) {
+        let Some((prefix, _)) = name.split_once('.') else {
+            continue;
+        };
+        let left_out = COMPARE_MODELS
+            .iter()
+            .find(|m| model_prefix(**m) == prefix && !step.models.contains(m));
+        if let Some(m) = left_out {
+            return Err(doc.error(
+                Some(step.line),
+                &format!("{path}.models"),
+                format!(
+                    "'{name}' reads {}, which the step's models leave out: name it in models",
+                    m.name()
+                ),
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// The panels a step shows, each one its scene has.

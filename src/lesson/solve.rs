@@ -1,6 +1,6 @@
 //! A step's scene loaded and solved headless, with the existing solvers.
 
-use super::context::{COMPARE_MODELS, Context};
+use super::context::Context;
 use super::{LessonError, LessonScene, Step};
 use crate::io::building_settings::BuildingSetup;
 use crate::io::preset;
@@ -119,7 +119,7 @@ pub fn solve_step(
     match setup {
         SceneSetup::Impact(setup) => {
             let models: Vec<ModelKind> = if step.scene == LessonScene::Compare {
-                let mut m = COMPARE_MODELS.to_vec();
+                let mut m = step.models.clone();
                 if !m.contains(&setup.model) {
                     m.insert(0, setup.model);
                 }

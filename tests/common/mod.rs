@@ -153,6 +153,34 @@ pub fn settle(harness: &mut egui_kittest::Harness<'_, pounding::app::PoundingApp
     harness.run_steps(3);
 }
 
+/// Answers the step's prediction through its widgets, as a student does: the first option, or
+/// a number typed, then Answer.
+#[cfg(feature = "gui")]
+pub fn answer(
+    h: &mut egui_kittest::Harness<'static, pounding::app::PoundingApp>,
+    p: &pounding::lesson::Prediction,
+    at: &str,
+) {
+    use egui_kittest::kittest::Queryable;
+    match p {
+        pounding::lesson::Prediction::Choice { options, .. } => {
+            h.get_by_label(&options[0]).click();
+        }
+        pounding::lesson::Prediction::Number { .. } => {
+            h.get_by_label("your answer").click();
+            h.run_steps(1);
+            h.get_by_label("your answer").type_text("1");
+        }
+    }
+    h.run_steps(2);
+    h.get_by_label("Answer").click();
+    settle(h, &format!("{at}: answer"));
+}
+
+/// How many pixels a window snapshot may differ from its file by, in every snapshot test.
+#[cfg(feature = "gui")]
+pub const MAX_FAILED_PIXELS: usize = 100;
+
 /// The seed every property test draws its cases from, so that `cargo test` runs the same cases
 /// on every machine and every run (a suite that fails at random is a gamble, not a check).
 pub const PROPTEST_SEED: u64 = 19_400_518;
