@@ -211,7 +211,7 @@ fn yielding_setup(settings: &[&str]) -> (BuildingScenario, GroundMotion) {
 /// (its yielding preset's record with settling) elastic, bilinear and Bouc-Wen (at the preset's
 /// yield forces and at the smallest accepted, 1e-3 N, where the law saturates at once), and a
 /// 10- against 10-storey pair. Its instruction counts come from `examples/building_loop` under
-/// callgrind with the same settings (README, "Yielding storeys").
+/// callgrind with the same settings (docs/numerics.md, "Yielding storeys").
 fn yielding_against_elastic(c: &mut Criterion) {
     let mut g = c.benchmark_group("yielding");
     g.sample_size(10);
