@@ -136,7 +136,7 @@ type Checker = fn(
     &Control,
 ) -> Result<Checked, pounding::model::error::SolveError>;
 
-/// The same whole runs as `pounding buildings` now makes them: the estimate's companion and the
+/// The same whole runs as `pounding buildings` makes them: the estimate's companion and the
 /// run without contact on a second thread beside the run (`solve_checked`). The same
 /// instructions; on two cores, about the companion's time.
 fn whole_run_side_by_side(c: &mut Criterion) {

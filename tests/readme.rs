@@ -79,8 +79,7 @@ fn runs_as_written(k: usize, args: &[String], source: &Path) {
     if args[0] == "window" {
         // A window command opens the window: where there is a display (CI's virtual one),
         // it runs for a few frames and closes; without one it is left to the smoke test.
-        if std::env::var_os("DISPLAY").is_none() && std::env::var_os("WAYLAND_DISPLAY").is_none()
-        {
+        if std::env::var_os("DISPLAY").is_none() && std::env::var_os("WAYLAND_DISPLAY").is_none() {
             return;
         }
         args.extend(["--exit-after-frames".to_string(), "5".to_string()]);
