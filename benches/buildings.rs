@@ -136,7 +136,7 @@ type Checker = fn(
     &Control,
 ) -> Result<Checked, pounding::model::error::SolveError>;
 
-/// The same whole runs as `pounding buildings` now makes them: the estimate's companion and the
+/// The same whole runs as `pounding buildings` makes them: the estimate's companion and the
 /// run without contact on a second thread beside the run (`solve_checked`). The same
 /// instructions; on two cores, about the companion's time.
 fn whole_run_side_by_side(c: &mut Criterion) {
@@ -211,7 +211,7 @@ fn yielding_setup(settings: &[&str]) -> (BuildingScenario, GroundMotion) {
 /// (its yielding preset's record with settling) elastic, bilinear and Bouc-Wen (at the preset's
 /// yield forces and at the smallest accepted, 1e-3 N, where the law saturates at once), and a
 /// 10- against 10-storey pair. Its instruction counts come from `examples/building_loop` under
-/// callgrind with the same settings (README, "Yielding storeys").
+/// callgrind with the same settings (docs/numerics.md, "Yielding storeys").
 fn yielding_against_elastic(c: &mut Criterion) {
     let mut g = c.benchmark_group("yielding");
     g.sample_size(10);

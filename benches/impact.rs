@@ -38,7 +38,7 @@ fn base_case(c: &mut Criterion) {
 /// grow with the number of reflections (0.1 m bars see about 500 round trips, 10 m bars 2).
 fn sears_step_cost_against_length(c: &mut Criterion) {
     let mut g = c.benchmark_group("sears_20000_steps_by_length");
-    // Whichever length was measured first here came out 60% slower, in any order, and not with
+    // Whichever length is measured first comes out about 60% slower, in any order, and not with
     // glibc's mmap threshold raised (MALLOC_MMAP_THRESHOLD_): the first benchmark pays for the
     // allocator's large-block pages. A throwaway first entry takes that cost.
     let mut prime = ImpactScenario::default();

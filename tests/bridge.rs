@@ -110,7 +110,7 @@ fn with_joints_too_wide_to_close_each_frame_moves_as_its_own_fixed_base_frame() 
         assert!(r.contacts.is_empty());
         let h = r.stats.step_s;
         // The reference's steps do not fall on the delayed records' samples: at a tenth of the
-        // bridge's step its error there was 1.5e-7 of the peak, at a fortieth it is well below.
+        // bridge's step its error there is 1.5e-7 of the peak, at a fortieth well below.
         let every = 40;
         let fine = h / every as f64;
         for i in 0..sc.spans {

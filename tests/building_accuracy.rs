@@ -144,9 +144,8 @@ fn the_first_impact_starts_where_the_exact_free_motion_closes_the_gap() {
 
 #[test]
 fn the_undamped_end_reading_converges_to_the_independent_max_force() {
-    // Undamped slabs in the end reading (the case a review measured: the old default was 2%
-    // off, at 4.484 MN, while its estimate said 3e-3): an independent calculation gave
-    // 4.393 MN and a fine step of the old solver 4.396 MN.
+    // Undamped slabs in the end reading, the hardest of the paper's cases for the estimate
+    // (the slabs ring between impacts): an independent calculation gives 4.393 MN.
     let m = el_centro();
     let sc = BuildingScenario {
         contact: ContactModel::Sears,
@@ -200,9 +199,9 @@ fn a_run_held_to_its_step_budget_still_bounds_its_error() {
 
 #[test]
 fn a_run_the_budget_does_not_hold_has_the_same_estimate_whatever_the_budget() {
-    // Between one and two times the grid's steps, the run is not held but a companion planned
-    // like a run (twice the steps, the same budget) was, and estimated a smaller error than it
-    // had. The companion's budget is now twice the run's: the estimate is the budget's concern
+    // Between one and two times the grid's steps the run is not held, and its companion (twice
+    // the steps) gets twice the run's budget, so it is not held either: a companion held there
+    // would estimate a smaller error than the run has. The budget is the estimate's concern
     // only where the run itself is held.
     let m = el_centro();
     let sc = BuildingScenario::paper();
@@ -224,8 +223,8 @@ fn a_run_the_budget_does_not_hold_has_the_same_estimate_whatever_the_budget() {
 #[test]
 fn a_run_at_the_tightest_tolerance_still_estimates_its_error() {
     // A tolerance of 1e-12 (the tightest accepted) holds the run to its step budget; its
-    // companion used to be planned at a quarter of it, which no scenario accepts, and the run
-    // came without an estimate.
+    // companion halves the run's own step with twice the budget, so the run still comes with
+    // an estimate.
     let m = el_centro().truncated(2.0);
     let sc = BuildingScenario {
         tolerance: 1e-12,

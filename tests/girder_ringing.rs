@@ -260,7 +260,7 @@ fn a_girder_revived_from_its_closed_form_goes_on_as_the_stepped_one() {
         prev = f;
     }
     eprintln!("revived: amplitude {amplitude:.3e} m, apart by {apart:.2e}");
-    // As far apart as the two readings of the ringing before (see the test above).
+    // As far apart as the two readings of the ringing in the test above.
     assert!(apart <= 2e-4 * amplitude, "{apart:.2e} of {amplitude:.2e}");
 }
 

@@ -2,12 +2,16 @@
 //! defaults must be the defaults the solver runs with, and every key it lists must be one the
 //! settings parser accepts.
 
+use pounding::io::bridge_settings::BridgeSetup;
 use pounding::io::building_settings::BuildingSetup;
 use pounding::io::settings::ImpactSetup;
-use pounding::model::settings::{BUILDING_SETTINGS, IMPACT_SETTINGS, Setting, concrete_keys};
+use pounding::model::settings::{
+    BRIDGE_SETTINGS, BUILDING_SETTINGS, IMPACT_SETTINGS, Setting, concrete_keys,
+};
 
-/// The default as typed for one concrete key: either one value for every bar or side, or
-/// "A (bar1), B (bar2)". `None` where the table states it in words ("from the radius").
+/// The default as typed for one concrete key: one value for every bar, side or span,
+/// "A (bar1), B (bar2)", or a list in full ("8e7, 2e8, 4e7", one value a span), typed without
+/// its spaces. `None` where the table states it in words ("from the radius").
 fn default_for(s: &Setting, key: &str) -> Option<String> {
     let d = s.default;
     if d.contains(" (") {
@@ -17,7 +21,8 @@ fn default_for(s: &Setting, key: &str) -> Option<String> {
             (who.trim_end_matches(')') == side).then(|| value.to_string())
         });
     }
-    (!d.contains(' ')).then(|| d.to_string())
+    let typed = d.replace(", ", ",");
+    (!typed.contains(' ')).then_some(typed)
 }
 
 fn stated_defaults(table: &'static [Setting]) -> Vec<(String, String)> {
@@ -30,6 +35,20 @@ fn stated_defaults(table: &'static [Setting]) -> Vec<(String, String)> {
         }
     }
     out
+}
+
+/// `KEY=VALUE` applied to the default setup of the scene whose table `table` is.
+fn apply_to_default(
+    table: &'static [Setting],
+    assignment: &str,
+) -> Result<(), pounding::model::error::InputError> {
+    if std::ptr::eq(table, IMPACT_SETTINGS) {
+        ImpactSetup::default().apply_assignment(assignment)
+    } else if std::ptr::eq(table, BUILDING_SETTINGS) {
+        BuildingSetup::default().apply_assignment(assignment)
+    } else {
+        BridgeSetup::default().apply_assignment(assignment)
+    }
 }
 
 #[test]
@@ -73,18 +92,45 @@ fn the_building_table_states_the_defaults_the_solver_runs_with() {
 }
 
 #[test]
+fn the_bridge_table_states_the_defaults_the_solver_runs_with() {
+    let base = BridgeSetup::default();
+    let defaults = stated_defaults(BRIDGE_SETTINGS);
+    assert!(
+        defaults.len() >= 20,
+        "only {} defaults checked",
+        defaults.len()
+    );
+    // The per-span lists stated in full must be among them: the piers' stiffnesses and the
+    // joints' gaps differ span by span.
+    for key in ["pier.stiffness", "joint.gaps"] {
+        assert!(
+            defaults.iter().any(|(k, v)| k == key && v.contains(',')),
+            "{key}: no list default checked"
+        );
+    }
+    for (key, value) in defaults {
+        // The record keys are the buildings' rows: they describe a record the default does not
+        // read, and are checked by the parser. How the record travels along the bridge is the
+        // bridge's own, and checked.
+        if key.starts_with("motion.") && key != "motion.apparent_velocity" {
+            continue;
+        }
+        let mut s = base.clone();
+        s.apply_assignment(&format!("{key}={value}"))
+            .unwrap_or_else(|e| panic!("{key}={value}: {e}"));
+        assert_eq!(s, base, "{key}: the table says {value}");
+    }
+}
+
+#[test]
 fn every_listed_key_is_accepted_by_the_parser_at_its_range_ends() {
-    for (table, building) in [(IMPACT_SETTINGS, false), (BUILDING_SETTINGS, true)] {
+    for table in [IMPACT_SETTINGS, BUILDING_SETTINGS, BRIDGE_SETTINGS] {
         for s in table {
             let Some(range) = s.range() else { continue };
             for key in concrete_keys(std::slice::from_ref(s)) {
                 for v in [range.low_accepted(), range.high_accepted()] {
                     let a = format!("{key}={v:e}");
-                    let r = if building {
-                        BuildingSetup::default().apply_assignment(&a)
-                    } else {
-                        ImpactSetup::default().apply_assignment(&a)
-                    };
+                    let r = apply_to_default(table, &a);
                     // A period sets the storey stiffnesses: the periods a building can take
                     // depend on its masses, so an end of the table's range may be refused, by
                     // the period's own name and with the periods this building can take.
@@ -106,20 +152,13 @@ fn every_listed_key_is_accepted_by_the_parser_at_its_range_ends() {
 
 #[test]
 fn every_choice_the_table_lists_is_accepted_and_a_wrong_one_is_refused_with_the_list() {
-    for table in [IMPACT_SETTINGS, BUILDING_SETTINGS] {
+    for table in [IMPACT_SETTINGS, BUILDING_SETTINGS, BRIDGE_SETTINGS] {
         for s in table {
             let Some(options) = s.choices() else {
                 continue;
             };
             for key in concrete_keys(std::slice::from_ref(s)) {
-                let apply = |v: &str| {
-                    let line = format!("{key}={v}");
-                    if std::ptr::eq(table, IMPACT_SETTINGS) {
-                        ImpactSetup::default().apply_assignment(&line).map(|_| ())
-                    } else {
-                        BuildingSetup::default().apply_assignment(&line).map(|_| ())
-                    }
-                };
+                let apply = |v: &str| apply_to_default(table, &format!("{key}={v}"));
                 for option in options {
                     apply(option).unwrap_or_else(|e| panic!("{key}={option}: {e}"));
                 }

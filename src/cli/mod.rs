@@ -451,8 +451,8 @@ impl Drop for Polling {
 fn watch_interrupt() {
     static ONCE: std::sync::Once = std::sync::Once::new();
     ONCE.call_once(|| {
-        // Without a handler (one already set by an embedding program) Ctrl-C ends the process
-        // as before, which is still a stop.
+        // Without a handler (one already set by an embedding program) Ctrl-C takes its
+        // default action and ends the process, which is still a stop.
         let _ = ctrlc::set_handler(|| {
             if POLLING.load(std::sync::atomic::Ordering::Relaxed) > 0 {
                 INTERRUPTED.store(true, std::sync::atomic::Ordering::Relaxed);

@@ -229,8 +229,8 @@ impl Ringing {
 }
 
 /// The floor of x (finite, within i64's range; the sign of a zero aside) by truncation: the
-/// baseline x86-64 has no rounding instruction, and `f64::floor` is a call to libm there (about
-/// 25 instructions).
+/// baseline x86-64 has no rounding instruction, and `f64::floor` is a call to libm there, many
+/// times a truncation's cost in the look-ups' inner loop.
 #[inline]
 fn floor_of(x: f64) -> f64 {
     let t = x as i64 as f64;
