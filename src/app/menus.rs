@@ -169,8 +169,8 @@ impl PoundingApp {
             })
             .response
             .labelled_by(label);
-        if ui
-            .button("Load preset")
+        if self
+            .open_button(ui, egui::Button::new("Load preset"))
             .on_hover_text("Replace the bridge by the preset's")
             .clicked()
         {

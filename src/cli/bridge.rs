@@ -58,29 +58,13 @@ fn force_plot(
     r: &pounding::model::bridge::BridgeResult,
     motion: &GroundMotion,
 ) -> pounding::export::plot::LinePlot {
-    let series = r
-        .joint_force_n
-        .iter()
-        .enumerate()
-        .map(|(j, f)| pounding::export::plot::Series {
-            name: format!("joint {j} ({})", r.joints[j].kind()),
-            points: r
-                .time_s
-                .iter()
-                .zip(f)
-                .map(|(t, f)| (*t, f * 1e-6))
-                .collect(),
-        })
-        .collect();
-    pounding::export::plot::LinePlot::new(
+    pounding::export::bridge_plots::joint_forces(
+        r,
         format!(
             "Joint forces: {} contact, {}",
             r.contact.name(),
             motion.name
         ),
-        "time [s]",
-        "joint force [MN]",
-        series,
     )
 }
 

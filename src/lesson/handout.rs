@@ -9,6 +9,8 @@ use super::solve::{Solved, solve_step};
 use super::{Lesson, LessonError, Panel, Prediction, Step};
 use crate::export::plot::{LinePlot, Series};
 use crate::export::xt::XtImage;
+use crate::io::bridge_settings::BridgeSetup;
+use crate::model::bridge::BridgeResult;
 use crate::model::control::Control;
 use crate::model::xt::{XtField, XtGrid};
 use std::fmt::Write;
@@ -583,12 +585,43 @@ fn figure(solved: &Solved, panel: Panel, path: &Path) -> Result<bool, String> {
                 vec![series("closing", &free.time_s, &closing, 1.0, 1e3)],
             )
         }
+        (
+            Solved::Bridge {
+                setup,
+                result,
+                free,
+            },
+            _,
+        ) => match bridge_plot(setup, result, free, panel) {
+            Some(plot) => plot,
+            None => return Ok(false),
+        },
         _ => return Ok(false),
     };
     LinePlot { size: SIZE, ..plot }
         .write(path)
         .map_err(|e| e.to_string())?;
     Ok(true)
+}
+
+/// A bridge step's plot of `panel`; `None` for a panel with no printable figure (the animated
+/// bridge and the deck's x-t diagram, the readouts and tables: the text carries them).
+fn bridge_plot(
+    setup: &BridgeSetup,
+    result: &BridgeResult,
+    free: &BridgeResult,
+    panel: Panel,
+) -> Option<LinePlot> {
+    use crate::export::bridge_plots as plots;
+    match panel {
+        Panel::Force => Some(plots::joint_forces(
+            result,
+            format!("Joint forces: {} contact", result.contact.name()),
+        )),
+        Panel::Openings => Some(plots::joint_openings(result, setup.scenario.seat_length_m)),
+        Panel::Displacements => Some(plots::girder_displacements(result, free)),
+        _ => None,
+    }
 }
 
 fn series(name: &str, t: &[f64], y: &[f64], tx: f64, ty: f64) -> Series {
