@@ -47,6 +47,7 @@ fn scene_of(s: LessonScene) -> SceneKind {
         LessonScene::Bar => SceneKind::BarImpact,
         LessonScene::Compare => SceneKind::WaveVsLumped,
         LessonScene::Buildings => SceneKind::Buildings,
+        LessonScene::Bridge => SceneKind::Bridge,
     }
 }
 
@@ -198,7 +199,7 @@ fn every_step_holds_its_scene_and_locked_settings_against_tabs_presets_and_choic
     if common::adapter_or_skip().is_none() {
         return;
     }
-    use pounding::model::settings::{BUILDING_SETTINGS, IMPACT_SETTINGS, concrete_keys};
+    use pounding::model::settings::concrete_keys;
     let labels = tempting_labels();
     for name in lesson::builtin_names() {
         let lesson = lesson::builtin(name).expect("shipped lessons parse");
@@ -209,10 +210,7 @@ fn every_step_holds_its_scene_and_locked_settings_against_tabs_presets_and_choic
             if let Some(p) = &step.prediction {
                 answer(&mut h, p, name, k);
             }
-            let keys = concrete_keys(match step.scene {
-                LessonScene::Buildings => BUILDING_SETTINGS,
-                _ => IMPACT_SETTINGS,
-            });
+            let keys = concrete_keys(step.scene.settings().0);
             let locked: Vec<(String, Option<String>)> = keys
                 .into_iter()
                 .filter(|key| {

@@ -216,5 +216,12 @@ mod tests {
             changed(&BUILDINGS, BUILDING_SETTINGS, &before, &b),
             vec!["contact.model".to_string()]
         );
+        let mut bridge = BridgeSetup::default();
+        let before = bridge.clone();
+        bridge.scenario.apparent_velocity_m_s = Some(500.0);
+        assert_eq!(
+            changed(&BRIDGE, BRIDGE_SETTINGS, &before, &bridge),
+            vec!["motion.apparent_velocity".to_string()]
+        );
     }
 }

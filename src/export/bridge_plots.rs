@@ -73,3 +73,29 @@ pub fn girder_displacements(r: &BridgeResult, free: &BridgeResult) -> LinePlot {
         lines,
     )
 }
+
+/// The strongest impact's force [MN] against the time from its onset [ms], a contact's length
+/// either side: how long a contact lasts, to read off. `None` for a run without impacts.
+pub fn strongest_impact(r: &BridgeResult) -> Option<LinePlot> {
+    let e = r
+        .impacts
+        .iter()
+        .max_by(|a, b| a.peak_force_n.total_cmp(&b.peak_force_n))?;
+    let margin = e.duration_s();
+    let points = r
+        .time_s
+        .iter()
+        .zip(&r.joint_force_n[e.level])
+        .filter(|(t, _)| (e.start_s - margin..=e.end_s + margin).contains(*t))
+        .map(|(t, f)| ((t - e.start_s) * 1e3, f * 1e-6))
+        .collect();
+    Some(LinePlot::new(
+        format!("The strongest impact, at joint {}", e.level),
+        "time from its onset [ms]",
+        "joint force [MN]",
+        vec![Series {
+            name: format!("joint {}", e.level),
+            points,
+        }],
+    ))
+}

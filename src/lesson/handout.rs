@@ -604,8 +604,9 @@ fn figure(solved: &Solved, panel: Panel, path: &Path) -> Result<bool, String> {
     Ok(true)
 }
 
-/// A bridge step's plot of `panel`; `None` for a panel with no printable figure (the animated
-/// bridge and the deck's x-t diagram, the readouts and tables: the text carries them).
+/// A bridge step's plot of `panel` (for the impact list, the strongest impact's force); `None`
+/// for a panel with no printable figure (the animated bridge and the deck's x-t diagram, the
+/// readouts and the joints' table: the text carries them).
 fn bridge_plot(
     setup: &BridgeSetup,
     result: &BridgeResult,
@@ -620,6 +621,7 @@ fn bridge_plot(
         )),
         Panel::Openings => Some(plots::joint_openings(result, setup.scenario.seat_length_m)),
         Panel::Displacements => Some(plots::girder_displacements(result, free)),
+        Panel::Impacts => plots::strongest_impact(result),
         _ => None,
     }
 }
