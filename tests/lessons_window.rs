@@ -274,3 +274,67 @@ fn teacher_notes_show_only_in_teacher_mode() {
     h.run_steps(2);
     h.get_by_label("Teacher notes");
 }
+
+/// The bridge lesson's last step under a `--drag` of `drag`, its frames turned until `done`
+/// holds (a drag solves on every frame, so the window never settles); `each` is checked after
+/// every frame.
+fn bridge_step_dragged(
+    drag: &str,
+    each: impl Fn(&Harness<'static, PoundingApp>),
+    done: impl Fn(&Harness<'static, PoundingApp>) -> bool,
+) {
+    HIDE_TIMINGS.store(true, std::sync::atomic::Ordering::Relaxed);
+    let lesson = lesson::builtin("waves-in-a-bridge").expect("shipped");
+    let launch = Launch {
+        lesson: Some("waves-in-a-bridge".into()),
+        lesson_step: Some(lesson.steps.len()),
+        // A drag goes to the scene on screen from the first frame: the step's.
+        scene: Some(SceneKind::Bridge),
+        drag: Some(pounding::app::DragSpec::parse(drag).expect("a drag")),
+        ..Default::default()
+    };
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1280.0, 900.0))
+        .wgpu()
+        .build_eframe(|cc| PoundingApp::new(cc, launch));
+    let start = std::time::Instant::now();
+    while !done(&h) {
+        assert!(
+            start.elapsed() < std::time::Duration::from_secs(120),
+            "{drag}: never done"
+        );
+        h.step();
+        each(&h);
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+}
+
+#[test]
+fn a_bridge_step_undoes_a_locked_settings_change_and_keeps_an_unlocked_one() {
+    if common::adapter_or_skip().is_none() {
+        return;
+    }
+    // The step travels at 200 m/s and unlocks only the seat length.
+    let said = "motion.apparent_velocity stays as the step set it";
+    bridge_step_dragged(
+        "motion.apparent_velocity=300:400",
+        |h| {
+            assert_eq!(
+                h.state()
+                    .lesson_setting("motion.apparent_velocity")
+                    .as_deref(),
+                Some("200")
+            )
+        },
+        |h| h.query_by_label_contains(said).is_some(),
+    );
+    bridge_step_dragged(
+        "bridge.seat_length=0.12:0.2",
+        |_| {},
+        |h| {
+            h.state()
+                .lesson_setting("bridge.seat_length")
+                .is_some_and(|v| v != "0.1")
+        },
+    );
+}
