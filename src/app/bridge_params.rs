@@ -35,10 +35,11 @@ fn list_ui(
             list[0] = v;
         }
         if n > 1
-            && ui
-                .small_button(format!("per {member} ({})", s.label))
-                .on_hover_text(format!("Give each {member} its own value"))
-                .clicked()
+            && fields.gate(ui, s.key, |ui| {
+                ui.small_button(format!("per {member} ({})", s.label))
+                    .on_hover_text(format!("Give each {member} its own value"))
+                    .clicked()
+            })
         {
             expand(list, n);
         }

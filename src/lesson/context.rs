@@ -4,7 +4,8 @@
 //! fields as `--json` names them (`restitution`, `contact_duration_s`, `impact_count`), and a few
 //! derived numbers a lecturer needs (`c1`, `a_tau`, `vibration_fraction`, `min_gap_m`). In the
 //! compare scene every compared model's fields are also there with the model as a prefix, a
-//! dash written as `_`: `wave.restitution`, `lumped_hertz.contact_duration_s`.
+//! dash written as `_`: `wave.restitution`, `lumped_hertz.contact_duration_s`. The bridge
+//! scene's names are [`super::bridge_context`]'s.
 
 use super::LessonScene;
 use super::expr::{ExprError, Value};
