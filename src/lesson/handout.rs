@@ -11,6 +11,7 @@ use crate::export::plot::{LinePlot, Series};
 use crate::export::xt::XtImage;
 use crate::io::bridge_settings::BridgeSetup;
 use crate::model::bridge::BridgeResult;
+use crate::model::building::BuildingResult;
 use crate::model::control::Control;
 use crate::model::xt::{XtField, XtGrid};
 use std::fmt::Write;
@@ -537,7 +538,37 @@ fn figure(solved: &Solved, panel: Panel, path: &Path) -> Result<bool, String> {
             .map_err(|e| e.to_string())?;
             return Ok(true);
         }
-        (Solved::Buildings { result, .. }, Panel::Force) => LinePlot::new(
+        (Solved::Buildings { result, free, .. }, _) => match buildings_plot(result, free, panel) {
+            Some(plot) => plot,
+            None => return Ok(false),
+        },
+        (
+            Solved::Bridge {
+                setup,
+                result,
+                free,
+            },
+            _,
+        ) => match bridge_plot(setup, result, free, panel) {
+            Some(plot) => plot,
+            None => return Ok(false),
+        },
+        _ => return Ok(false),
+    };
+    LinePlot { size: SIZE, ..plot }
+        .write(path)
+        .map_err(|e| e.to_string())?;
+    Ok(true)
+}
+
+/// A buildings step's plot of `panel`; `None` for a panel with no printable figure.
+fn buildings_plot(
+    result: &BuildingResult,
+    free: &BuildingResult,
+    panel: Panel,
+) -> Option<LinePlot> {
+    let plot = match panel {
+        Panel::Force => LinePlot::new(
             "Pounding force",
             "time [s]",
             "force [MN]",
@@ -549,7 +580,7 @@ fn figure(solved: &Solved, panel: Panel, path: &Path) -> Result<bool, String> {
                 1e-6,
             )],
         ),
-        (Solved::Buildings { result, free, .. }, Panel::Displacements) => LinePlot::new(
+        Panel::Displacements => LinePlot::new(
             "Roof displacements",
             "time [s]",
             "displacement [mm]",
@@ -572,7 +603,7 @@ fn figure(solved: &Solved, panel: Panel, path: &Path) -> Result<bool, String> {
                 ),
             ],
         ),
-        (Solved::Buildings { free, .. }, Panel::Gaps) => {
+        Panel::Gaps => {
             let closing: Vec<f64> = free.displacement_m[0]
                 .iter()
                 .zip(&free.displacement_m[1])
@@ -585,23 +616,9 @@ fn figure(solved: &Solved, panel: Panel, path: &Path) -> Result<bool, String> {
                 vec![series("closing", &free.time_s, &closing, 1.0, 1e3)],
             )
         }
-        (
-            Solved::Bridge {
-                setup,
-                result,
-                free,
-            },
-            _,
-        ) => match bridge_plot(setup, result, free, panel) {
-            Some(plot) => plot,
-            None => return Ok(false),
-        },
-        _ => return Ok(false),
+        _ => return None,
     };
-    LinePlot { size: SIZE, ..plot }
-        .write(path)
-        .map_err(|e| e.to_string())?;
-    Ok(true)
+    Some(plot)
 }
 
 /// A bridge step's plot of `panel` (for the impact list, the strongest impact's force); `None`
