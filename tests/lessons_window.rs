@@ -338,3 +338,29 @@ fn a_bridge_step_undoes_a_locked_settings_change_and_keeps_an_unlocked_one() {
         },
     );
 }
+
+#[test]
+fn a_launch_time_holds_a_bridge_lesson_steps_animation_there_paused() {
+    if common::adapter_or_skip().is_none() {
+        return;
+    }
+    let mut h = window(
+        Launch {
+            lesson: Some("waves-in-a-bridge".into()),
+            lesson_step: Some(1),
+            time_s: Some(2.5),
+            ..Default::default()
+        },
+        egui::vec2(1280.0, 900.0),
+    );
+    assert_eq!(h.state().scene_kind(), SceneKind::Bridge);
+    h.run_steps(5);
+    assert_eq!(h.state().animation_time(), 2.5);
+    // Played on, then turned to another step: that step's scene is held at the launch time.
+    h.key_press(egui::Key::Space);
+    h.run_steps(10);
+    assert!(h.state().animation_time() > 2.5, "Space plays on");
+    go_to(&mut h, 3, "waves-in-a-bridge step 4");
+    h.run_steps(5);
+    assert_eq!(h.state().animation_time(), 2.5);
+}
