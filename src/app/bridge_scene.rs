@@ -694,6 +694,21 @@ impl BridgeScene {
         }
     }
 
+    /// The run on screen for File > Export animation, once whole (a run still solving would
+    /// animate beyond what it has solved).
+    pub(super) fn animation_source(
+        &self,
+    ) -> Option<Box<dyn FnOnce() -> super::export_animation::AnimationSource + '_>> {
+        let d = &self.shown.solved.as_ref().filter(|s| s.whole)?.drawing;
+        Some(Box::new(move || {
+            super::export_animation::AnimationSource::Bridge {
+                setup: Box::new(d.setup.clone()),
+                motion: d.motion.clone(),
+                result: Box::new(d.result.clone()),
+            }
+        }))
+    }
+
     /// The whole deck's x-t diagram around the picked impact (the strongest until one is).
     fn deck_xt_ui(&mut self, ui: &mut egui::Ui) {
         let Some(s) = &self.shown.solved else { return };

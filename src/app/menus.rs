@@ -370,17 +370,20 @@ impl PoundingApp {
         }
     }
 
-    /// File > Export animation: the shown run (an impact or the buildings) as a GIF or APNG.
+    /// File > Export animation: the shown run (an impact, the buildings or the bridge) as a GIF
+    /// or APNG.
     fn animation_menu(&mut self, ui: &mut egui::Ui) {
         let impact = self.scene == SceneKind::BarImpact;
         let has = match self.scene {
             SceneKind::BarImpact => self.bar.animation_source().is_some(),
             SceneKind::Buildings => self.buildings.animation_source().is_some(),
+            SceneKind::Bridge => self.bridge.animation_source().is_some(),
             _ => false,
         };
         if self.exporter.animation.ui(ui, impact, has) {
             let source = match self.scene {
                 SceneKind::BarImpact => self.bar.animation_source(),
+                SceneKind::Bridge => self.bridge.animation_source(),
                 _ => self.buildings.animation_source(),
             };
             if let Some(s) = source {
