@@ -499,6 +499,25 @@ fn waves_in_a_bridge_the_widest_opening_grows_as_the_motion_travels_slower_and_t
 }
 
 #[test]
+fn a_bridge_runs_unseating_warnings_come_first_one_per_unseated_joint() {
+    // The window hides these with the seats' panels in a step that asks about the seats.
+    let l = shipped("waves-in-a-bridge");
+    for v in ["200", "150", "100"] {
+        let run = solved(&l, 5, &[("motion.apparent_velocity", v)]);
+        let r = bridge_run(&run);
+        assert!(!r.unseating.is_empty(), "v = {v}");
+        for (u, w) in r.unseating.iter().zip(&r.warnings) {
+            assert!(
+                w.starts_with(&format!("joint {} unseated", u.joint)),
+                "v = {v}: {w}"
+            );
+        }
+        let rest = &r.warnings[r.unseating.len()..];
+        assert!(rest.iter().all(|w| !w.contains("unseated")), "v = {v}");
+    }
+}
+
+#[test]
 fn a_bridge_name_of_a_joint_the_bridge_lacks_has_no_value_and_a_misspelt_one_is_unknown() {
     let l = shipped("waves-in-a-bridge");
     let ctx = solved(&l, 1, &[]).context();
