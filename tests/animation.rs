@@ -265,3 +265,42 @@ fn bad_animation_flags_are_refused_naming_the_flag_and_its_range() {
         common::stderr(&o)
     );
 }
+
+#[test]
+fn cli_bridge_animate_writes_a_gif_around_the_strongest_impact_whose_frames_differ() {
+    if common::adapter_or_skip().is_none() {
+        return;
+    }
+    let path = scratch("cli-bridge.gif");
+    let o = common::pounding(&[
+        "bridge",
+        "--animate",
+        path.to_str().unwrap(),
+        "--animate-frames",
+        "4",
+        "--animate-size",
+        "480x270",
+        "--animate-around",
+        "strongest",
+        "--quiet",
+    ]);
+    assert!(o.status.success(), "{}", common::stderr(&o));
+    let (frames, size) = gif_frames(&path);
+    assert_eq!((frames.len(), size), (4, (480, 270)));
+    assert!(frames.windows(2).all(|f| f[0] != f[1]), "frames repeat");
+    // An impact the run does not have is refused by number, before anything is written.
+    let o = common::pounding(&[
+        "bridge",
+        "--animate",
+        path.to_str().unwrap(),
+        "--animate-around",
+        "999",
+        "--quiet",
+    ]);
+    assert!(!o.status.success());
+    assert!(
+        common::stderr(&o).contains("--animate-around: '999'"),
+        "{}",
+        common::stderr(&o)
+    );
+}

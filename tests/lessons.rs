@@ -46,7 +46,8 @@ fn every_shipped_lesson_passes_the_check() {
             "where-the-energy-goes",
             "soft-and-stiff-contact",
             "buildings-that-pound",
-            "storeys-that-yield"
+            "storeys-that-yield",
+            "waves-in-a-bridge"
         ]
     );
     for name in lesson::builtin_names() {
@@ -412,6 +413,171 @@ fn buildings_that_pound_the_abs_gap_avoids_pounding_and_the_srss_gap_does_not() 
     );
 }
 
+/// The bridge run of a solved bridge step.
+fn bridge_run(solved: &Solved) -> &pounding::model::bridge::BridgeResult {
+    match solved {
+        Solved::Bridge { result, .. } => result,
+        _ => panic!("not a bridge step"),
+    }
+}
+
+#[test]
+fn waves_in_a_bridge_an_abutment_takes_z_v_and_a_girder_joint_z_v_over_two() {
+    let l = shipped("waves-in-a-bridge");
+    let run = solved(&l, 2, &[]);
+    let ctx = run.context();
+    // The impedance from the girder's own numbers, not the context's.
+    let (a, e, rho): (f64, f64, f64) = (6.5, 3.4e10, 2500.0);
+    assert_eq!(num(&ctx, "span.area"), a);
+    assert_eq!(num(&ctx, "span.youngs_modulus"), e);
+    assert_eq!(num(&ctx, "span.density"), rho);
+    let z = a * (e * rho).sqrt();
+    let r = bridge_run(&run);
+    let strongest_at = |abutment: bool| {
+        r.impacts
+            .iter()
+            .filter(|i| (r.joints[i.level].kind() == "abutment") == abutment)
+            .max_by(|x, y| x.peak_force_n.total_cmp(&y.peak_force_n))
+            .expect("impacts of that kind")
+    };
+    // Against the rigid wall the girder's end is stopped: Z v; two equal girders share the
+    // closing speed: Z v / 2.
+    let wall = strongest_at(true);
+    assert!(common::rel(wall.peak_force_n, z * wall.approach_velocity_m_s) < 0.02);
+    let pair = strongest_at(false);
+    assert!(common::rel(pair.peak_force_n, 0.5 * z * pair.approach_velocity_m_s) < 0.05);
+}
+
+#[test]
+fn waves_in_a_bridge_a_contact_lasts_about_a_round_trip_whatever_the_girders_length() {
+    let l = shipped("waves-in-a-bridge");
+    let c = (3.4e10f64 / 2500.0).sqrt();
+    let mut last = 0.0;
+    for length in [25.0, 30.0, 40.0, 60.0, 80.0] {
+        let ctx = solved(&l, 3, &[("span.length", &length.to_string())]).context();
+        let trip = 2.0 * length / c;
+        let d = num(&ctx, "strongest_impact_duration_s");
+        assert!(
+            d > trip && d < 1.1 * trip,
+            "L = {length}: {d} s, 2L/c = {trip} s"
+        );
+        assert!(d > last, "L = {length}: a longer girder meets for longer");
+        last = d;
+    }
+}
+
+#[test]
+fn waves_in_a_bridge_the_widest_opening_grows_as_the_motion_travels_slower_and_the_seat_only_flags()
+{
+    let l = shipped("waves-in-a-bridge");
+    let opening = |v: &str, seat: &str| {
+        let ctx = solved(
+            &l,
+            5,
+            &[
+                ("motion.apparent_velocity", v),
+                ("bridge.seat_length", seat),
+            ],
+        )
+        .context();
+        (num(&ctx, "max_opening_m"), num(&ctx, "unseated_count"))
+    };
+    let mut last = 0.0;
+    for v in [
+        "uniform", "5000", "2000", "1000", "500", "300", "200", "100",
+    ] {
+        let (o, _) = opening(v, "0.1");
+        assert!(o > last, "v = {v}: {o} m");
+        last = o;
+    }
+    // The seat length flags unseating and changes nothing of the run.
+    let (short, lost) = opening("200", "0.1");
+    let (long, kept) = opening("200", "0.25");
+    assert_eq!(short, long);
+    assert_eq!((lost, kept), (1.0, 0.0));
+}
+
+#[test]
+fn a_bridge_runs_unseating_warnings_come_first_one_per_unseated_joint() {
+    // The window hides these with the seats' panels in a step that asks about the seats.
+    let l = shipped("waves-in-a-bridge");
+    for v in ["200", "150", "100"] {
+        let run = solved(&l, 5, &[("motion.apparent_velocity", v)]);
+        let r = bridge_run(&run);
+        assert!(!r.unseating.is_empty(), "v = {v}");
+        for (u, w) in r.unseating.iter().zip(&r.warnings) {
+            assert!(
+                w.starts_with(&format!("joint {} unseated", u.joint)),
+                "v = {v}: {w}"
+            );
+        }
+        let rest = &r.warnings[r.unseating.len()..];
+        assert!(rest.iter().all(|w| !w.contains("unseated")), "v = {v}");
+    }
+}
+
+#[test]
+fn a_bridge_name_of_a_joint_the_bridge_lacks_has_no_value_and_a_misspelt_one_is_unknown() {
+    let l = shipped("waves-in-a-bridge");
+    let ctx = solved(&l, 1, &[]).context();
+    assert_eq!(num(&ctx, "joint_count"), 4.0);
+    let missing = ctx.get("joint5.impacts").unwrap_err().to_string();
+    assert!(missing.contains("does not give it"), "{missing}");
+    let typo = ctx.get("joint1.impact").unwrap_err().to_string();
+    assert!(typo.contains("unknown name"), "{typo}");
+    // Joints count from 0 at the left abutment, girders from 1.
+    assert_eq!(
+        ctx.get("joint0.abutment").unwrap(),
+        lesson::Value::Bool(true)
+    );
+    assert!(ctx.get("girder0.round_trip_s").is_err());
+    assert!(num(&ctx, "girder3.round_trip_s") > 0.0);
+}
+
+#[test]
+fn a_bridge_prediction_whose_answer_an_earlier_openings_plot_shows_fails_the_check() {
+    let ask = |first_show: &str| {
+        let text = format!(
+            r#"title = "t"
+audience = "a"
+duration_min = 5
+goals = ["g"]
+teacher_notes = "n"
+
+[[step]]
+title = "Openings"
+text = "The bridge."
+scene = "bridge"
+preset = "bridge-3-span-unseating"
+show = [{first_show}]
+
+[[step]]
+title = "Joint 2"
+text = "The same bridge."
+scene = "bridge"
+preset = "bridge-3-span-unseating"
+show = ["joints"]
+
+[step.prediction]
+kind = "number"
+question = "How far does joint 2 open?"
+unit = "m"
+answer = "joint2.max_opening_m"
+tolerance = 0.1
+explanation = "144 mm."
+"#
+        );
+        let l = lesson::parse_text(&text, "t", "t.toml").expect("parses");
+        lesson::check(&l, Control::never())
+    };
+    let e = ask("\"openings\"").expect_err("the opening was on screen");
+    assert!(
+        e.message.contains("joint2.max_opening_m") && e.message.contains("step 1's openings"),
+        "{e}"
+    );
+    ask("\"bridge\", \"force\"").unwrap_or_else(|e| panic!("{e}"));
+}
+
 #[test]
 fn the_command_line_lists_checks_and_writes_a_handout() {
     let o = common::pounding(&["lesson", "--list"]);
@@ -580,8 +746,13 @@ fn a_prediction_whose_answer_an_earlier_step_shows_fails_the_check() {
 #[test]
 fn a_handout_is_one_printable_html_page_a_copy_with_every_figure_inlined_and_no_result_before_its_question()
  {
-    let name = "buildings-that-pound";
-    let dir = std::env::temp_dir().join(format!("pounding-handout-{}", std::process::id()));
+    for name in ["buildings-that-pound", "waves-in-a-bridge"] {
+        handout_is_printable(name);
+    }
+}
+
+fn handout_is_printable(name: &str) {
+    let dir = std::env::temp_dir().join(format!("pounding-handout-{name}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     let o = common::pounding(&[
         "lesson",

@@ -47,6 +47,7 @@ fn scene_of(s: LessonScene) -> SceneKind {
         LessonScene::Bar => SceneKind::BarImpact,
         LessonScene::Compare => SceneKind::WaveVsLumped,
         LessonScene::Buildings => SceneKind::Buildings,
+        LessonScene::Bridge => SceneKind::Bridge,
     }
 }
 
@@ -180,7 +181,7 @@ fn every_step_holds_its_scene_and_locked_settings_against_tabs_presets_and_choic
     if common::adapter_or_skip().is_none() {
         return;
     }
-    use pounding::model::settings::{BUILDING_SETTINGS, IMPACT_SETTINGS, concrete_keys};
+    use pounding::model::settings::concrete_keys;
     let labels = tempting_labels();
     for name in lesson::builtin_names() {
         let lesson = lesson::builtin(name).expect("shipped lessons parse");
@@ -191,10 +192,7 @@ fn every_step_holds_its_scene_and_locked_settings_against_tabs_presets_and_choic
             if let Some(p) = &step.prediction {
                 common::answer(&mut h, p, &format!("{name} step {}", k + 1));
             }
-            let keys = concrete_keys(match step.scene {
-                LessonScene::Buildings => BUILDING_SETTINGS,
-                _ => IMPACT_SETTINGS,
-            });
+            let keys = concrete_keys(step.scene.settings().0);
             let locked: Vec<(String, Option<String>)> = keys
                 .into_iter()
                 .filter(|key| {
@@ -257,4 +255,94 @@ fn teacher_notes_show_only_in_teacher_mode() {
     h.state_mut().set_teacher(true);
     h.run_steps(2);
     h.get_by_label("Teacher notes");
+}
+
+/// The bridge lesson's last step under a `--drag` of `drag`, its frames turned until `done`
+/// holds (a drag solves on every frame, so the window never settles); `each` is checked after
+/// every frame.
+fn bridge_step_dragged(
+    drag: &str,
+    each: impl Fn(&Harness<'static, PoundingApp>),
+    done: impl Fn(&Harness<'static, PoundingApp>) -> bool,
+) {
+    HIDE_TIMINGS.store(true, std::sync::atomic::Ordering::Relaxed);
+    let lesson = lesson::builtin("waves-in-a-bridge").expect("shipped");
+    let launch = Launch {
+        lesson: Some("waves-in-a-bridge".into()),
+        lesson_step: Some(lesson.steps.len()),
+        // A drag goes to the scene on screen from the first frame: the step's.
+        scene: Some(SceneKind::Bridge),
+        drag: Some(pounding::app::DragSpec::parse(drag).expect("a drag")),
+        ..Default::default()
+    };
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1280.0, 900.0))
+        .wgpu()
+        .build_eframe(|cc| PoundingApp::new(cc, launch));
+    let start = std::time::Instant::now();
+    while !done(&h) {
+        assert!(
+            start.elapsed() < std::time::Duration::from_secs(120),
+            "{drag}: never done"
+        );
+        h.step();
+        each(&h);
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+}
+
+#[test]
+fn a_bridge_step_undoes_a_locked_settings_change_and_keeps_an_unlocked_one() {
+    if common::adapter_or_skip().is_none() {
+        return;
+    }
+    // The step travels at 200 m/s and unlocks only the seat length.
+    let said = "motion.apparent_velocity stays as the step set it";
+    bridge_step_dragged(
+        "motion.apparent_velocity=300:400",
+        |h| {
+            assert_eq!(
+                h.state()
+                    .lesson_setting("motion.apparent_velocity")
+                    .as_deref(),
+                Some("200")
+            )
+        },
+        |h| h.query_by_label_contains(said).is_some(),
+    );
+    bridge_step_dragged(
+        "bridge.seat_length=0.12:0.2",
+        |_| {},
+        |h| {
+            h.state()
+                .lesson_setting("bridge.seat_length")
+                .is_some_and(|v| v != "0.1")
+        },
+    );
+}
+
+#[test]
+fn a_launch_time_holds_a_bridge_lesson_steps_animation_there_paused() {
+    if common::adapter_or_skip().is_none() {
+        return;
+    }
+    let mut h = window(
+        Launch {
+            lesson: Some("waves-in-a-bridge".into()),
+            lesson_step: Some(1),
+            time_s: Some(2.5),
+            ..Default::default()
+        },
+        egui::vec2(1280.0, 900.0),
+    );
+    assert_eq!(h.state().scene_kind(), SceneKind::Bridge);
+    h.run_steps(5);
+    assert_eq!(h.state().animation_time(), 2.5);
+    // Played on, then turned to another step: that step's scene is held at the launch time.
+    h.key_press(egui::Key::Space);
+    h.run_steps(10);
+    assert!(h.state().animation_time() > 2.5, "Space plays on");
+    go_to(&mut h, 3, "waves-in-a-bridge step 4");
+    h.run_steps(5);
+    assert_eq!(h.state().animation_time(), 2.5);
 }

@@ -35,10 +35,11 @@ fn list_ui(
             list[0] = v;
         }
         if n > 1
-            && ui
-                .small_button(format!("per {member} ({})", s.label))
-                .on_hover_text(format!("Give each {member} its own value"))
-                .clicked()
+            && fields.gate(ui, s.key, |ui| {
+                ui.small_button(format!("per {member} ({})", s.label))
+                    .on_hover_text(format!("Give each {member} its own value"))
+                    .clicked()
+            })
         {
             expand(list, n);
         }
@@ -118,10 +119,14 @@ fn contact_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BridgeSetup) {
         &mut setup.scenario.joint_gaps_m,
         (n, "joint", 0),
     );
+    // A lesson's lock greys the choice as it greys the sliders (lesson_gate holds it).
     ui.horizontal_wrapped(|ui| {
-        for m in ContactModel::ALL {
-            ui.selectable_value(&mut setup.scenario.contact, m, m.name());
-        }
+        fields.gate(ui, setting::CONTACT_MODEL.key, |ui| {
+            for m in ContactModel::ALL {
+                ui.selectable_value(&mut setup.scenario.contact, m, m.name());
+            }
+            false
+        });
     });
     let stiffness = BRIDGE.entry(&setting::CONTACT_STIFFNESS);
     // Automatic until moved: the row shows the stiffness of the first girder joint (or the
@@ -143,10 +148,11 @@ fn contact_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BridgeSetup) {
     };
     fields.entry_row(ui, stiffness, 0, setup, &spec, k);
     if setup.scenario.stiffness.is_some()
-        && ui
-            .small_button("auto stiffness")
-            .on_hover_text("E A / (L / 10) of the girders at each joint, in series")
-            .clicked()
+        && fields.gate(ui, stiffness.setting.key, |ui| {
+            ui.small_button("auto stiffness")
+                .on_hover_text("E A / (L / 10) of the girders at each joint, in series")
+                .clicked()
+        })
     {
         setup.scenario.stiffness = None;
     }

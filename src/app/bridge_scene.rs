@@ -13,6 +13,7 @@ use super::later::{Later, StageTimes, pending_note};
 use super::params::Fields;
 use super::playback::Playback;
 use super::series::plot_lines;
+use super::visibility::{Lock, Visibility};
 use super::worker::{Landed, SolveSlot};
 use crate::io::bridge_settings::BridgeSetup;
 use crate::model::bridge::{BridgeErrorEstimate, BridgeResult};
@@ -45,6 +46,8 @@ pub struct BridgeScene {
     shown_forces: ShownPlot,
     shown_openings: ShownPlot,
     shown_girders: ShownPlot,
+    /// The panels drawn (a lesson step's, or all).
+    pub visibility: Visibility,
 }
 
 impl BridgeScene {
@@ -73,6 +76,7 @@ impl BridgeScene {
             shown_forces: ShownPlot::default(),
             shown_openings: ShownPlot::default(),
             shown_girders: ShownPlot::default(),
+            visibility: Visibility::default(),
         };
         s.request();
         s
@@ -94,6 +98,26 @@ impl BridgeScene {
 
     pub fn cancel(&mut self) {
         self.slot.cancel();
+    }
+
+    /// Which settings a lesson step leaves open.
+    pub fn set_lock(&mut self, lock: Option<Lock>) {
+        self.fields.lock = lock;
+    }
+
+    /// What a lesson's expressions read: the run and the run without contact, both whole and
+    /// the newest request's; `None` until they are.
+    pub fn lesson_context(&self) -> Option<crate::lesson::Context> {
+        let s = self
+            .shown
+            .solved
+            .as_ref()
+            .filter(|s| s.whole && s.current)?;
+        Some(crate::lesson::Context::bridge(
+            &s.drawing.setup,
+            &s.drawing.result,
+            Some(s.baseline.ready()?),
+        ))
     }
 
     /// Forgets typed text (after a preset replaces the values).
@@ -199,11 +223,15 @@ impl BridgeScene {
         if self.shown.solved.is_none() {
             return vec![];
         }
-        vec![
-            ("joint-forces", &self.shown_forces),
-            ("joint-openings", &self.shown_openings),
-            ("girder-displacements", &self.shown_girders),
+        [
+            ("force", "joint-forces", &self.shown_forces),
+            ("openings", "joint-openings", &self.shown_openings),
+            ("displacements", "girder-displacements", &self.shown_girders),
         ]
+        .into_iter()
+        .filter(|(panel, _, _)| self.visibility.shows(panel))
+        .map(|(_, name, plot)| (name, plot))
+        .collect()
     }
 
     pub fn main_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
@@ -231,14 +259,30 @@ impl BridgeScene {
             stats.pga_m_s2 / G,
             stats.pgv_m_s,
         ));
-        self.elevation_ui(ui);
-        self.readouts_ui(ui);
-        self.joints_table_ui(ui);
+        let show = self.visibility.clone();
+        if show.shows("bridge") {
+            self.elevation_ui(ui);
+        }
+        if show.shows("readouts") {
+            self.readouts_ui(ui);
+        }
+        let seats = show.shows("joints") || show.shows("openings");
+        if show.shows("joints") {
+            self.joints_table_ui(ui);
+        }
         self.plots_ui(ui, exporter);
-        self.impacts_ui(ui);
-        self.deck_xt_ui(ui);
+        if show.shows("impacts") {
+            self.impacts_ui(ui);
+        }
+        if show.shows("xt") {
+            self.deck_xt_ui(ui);
+        }
         let Some(s) = &self.shown.solved else { return };
-        for w in &s.drawing.result.warnings {
+        let r = &s.drawing.result;
+        // The unseating warnings come first, one per unseated joint: they say what the seats'
+        // panels show, and wait with them in a lesson step that asks about the seats.
+        let shown = if seats { 0 } else { r.unseating.len() };
+        for w in &r.warnings[shown.min(r.warnings.len())..] {
             super::readouts::warning(ui, &format!("warning: {w}"));
         }
     }
@@ -371,11 +415,35 @@ impl BridgeScene {
 
     fn plots_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter) {
         let Some(s) = &self.shown.solved else { return };
-        let r = &s.drawing.result;
+        let count = s.drawing.result.joints.len();
         let t = self.playback.shown_t();
-        let width = super::lecture::line_width(ui);
         let h = 160.0;
-        // The joints shown: one, or all.
+        let show = self.visibility.clone();
+        // The joints the force and opening plots and the impact list show: one, or all.
+        let picks = ["force", "openings", "impacts"]
+            .iter()
+            .any(|p| show.shows(p));
+        if picks {
+            self.joint_choice_ui(ui);
+        }
+        let joints: Vec<usize> = (0..count)
+            .filter(|&j| self.joint.is_none_or(|k| k == j))
+            .collect();
+        if show.shows("force") {
+            self.force_plot_ui(ui, exporter, &joints, h, t);
+        }
+        if show.shows("openings") {
+            self.openings_plot_ui(ui, exporter, &joints, h, t);
+        }
+        if show.shows("displacements") {
+            self.girders_plot_ui(ui, exporter, h, t);
+        }
+    }
+
+    /// Which joint the force and opening plots and the impact list show.
+    fn joint_choice_ui(&mut self, ui: &mut egui::Ui) {
+        let Some(s) = &self.shown.solved else { return };
+        let r = &s.drawing.result;
         ui.horizontal(|ui| {
             let label = ui
                 .label("joint")
@@ -399,9 +467,19 @@ impl BridgeScene {
                 .response
                 .labelled_by(label);
         });
-        let joints: Vec<usize> = (0..r.joints.len())
-            .filter(|&j| self.joint.is_none_or(|k| k == j))
-            .collect();
+    }
+
+    fn force_plot_ui(
+        &mut self,
+        ui: &mut egui::Ui,
+        exporter: &Exporter,
+        joints: &[usize],
+        h: f32,
+        t: f64,
+    ) {
+        let Some(s) = &self.shown.solved else { return };
+        let r = &s.drawing.result;
+        let width = super::lecture::line_width(ui);
         let named = |j: usize| format!("joint {j}");
         let zoom = self.zoom.take();
         // A zoom onto an impact is drawn at the samples it shows from its first frame.
@@ -451,8 +529,6 @@ impl BridgeScene {
                 self.pick(i);
             }
         }
-        self.openings_plot_ui(ui, exporter, &joints, h, t);
-        self.girders_plot_ui(ui, exporter, h, t);
     }
 
     fn openings_plot_ui(
@@ -616,6 +692,21 @@ impl BridgeScene {
         if let Some(i) = clicked {
             self.pick(i);
         }
+    }
+
+    /// The run on screen for File > Export animation, once whole (a run still solving would
+    /// animate beyond what it has solved).
+    pub(super) fn animation_source(
+        &self,
+    ) -> Option<Box<dyn FnOnce() -> super::export_animation::AnimationSource + '_>> {
+        let d = &self.shown.solved.as_ref().filter(|s| s.whole)?.drawing;
+        Some(Box::new(move || {
+            super::export_animation::AnimationSource::Bridge {
+                setup: Box::new(d.setup.clone()),
+                motion: d.motion.clone(),
+                result: Box::new(d.result.clone()),
+            }
+        }))
     }
 
     /// The whole deck's x-t diagram around the picked impact (the strongest until one is).

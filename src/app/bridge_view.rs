@@ -63,6 +63,12 @@ impl BridgeDrawing {
         interpolate(&r.time_s, &r.joint_opening_m[j], t) / self.setup.scenario.seat_length_m
     }
 
+    /// The stress that saturates the girders' colour [Pa]: the largest joint force over the
+    /// smallest girder area.
+    pub fn stress_scale_pa(&self) -> f64 {
+        (self.result.max_pounding_force_n / self.smallest_area_m2()).max(1.0)
+    }
+
     /// The smallest girder cross-section [m^2]: a force over it is the largest stress it makes.
     pub fn smallest_area_m2(&self) -> f64 {
         let sc = &self.setup.scenario;
@@ -275,7 +281,7 @@ impl<'a> Frame<'a> {
     /// the largest joint force over the smallest area saturating the map.
     fn girder_bars(&self) -> Vec<GpuBar> {
         let d = self.d;
-        let scale = (d.result.max_pounding_force_n / d.smallest_area_m2()).max(1.0);
+        let scale = d.stress_scale_pa();
         (0..d.result.girder_waves.len())
             .map(|i| {
                 d.girder_bar(

@@ -3,13 +3,17 @@
 //! range, the frame rate, the duration and the pixel size chosen in the menu.
 
 use super::export::Exporter;
+use crate::io::bridge_settings::BridgeSetup;
 use crate::io::building_settings::BuildingSetup;
 use crate::io::settings::ImpactSetup;
+use crate::model::bridge::BridgeResult;
 use crate::model::building::BuildingResult;
 use crate::model::impact::ImpactResult;
 use crate::model::motion::GroundMotion;
 use crate::render::animate::{AnimView, ImpactAnimation};
+use crate::render::animate_bridge::BridgeAnimation;
 use crate::render::animate_buildings::BuildingAnimation;
+use crate::render::animate_view::{SceneView, ViewAnimation};
 use crate::render::offscreen::Offscreen;
 use eframe::egui;
 use std::path::PathBuf;
@@ -24,6 +28,11 @@ pub enum AnimationSource {
         setup: Box<BuildingSetup>,
         motion: GroundMotion,
         result: Box<BuildingResult>,
+    },
+    Bridge {
+        setup: Box<BridgeSetup>,
+        motion: GroundMotion,
+        result: Box<BridgeResult>,
     },
 }
 
@@ -113,7 +122,7 @@ impl AnimationSettings {
         });
         ui.checkbox(&mut self.apng, "APNG (.png) instead of GIF");
         ui.add_enabled(enabled, egui::Button::new("Export animation"))
-            .on_disabled_hover_text("needs a solved impact or building run on screen")
+            .on_disabled_hover_text("needs a solved impact, building or bridge run on screen")
             .clicked()
     }
 
@@ -130,6 +139,20 @@ impl AnimationSettings {
 
 /// An animation's rendering, to run on the export thread.
 type RenderJob = Box<dyn FnOnce(&mut Offscreen) -> Result<(), String> + Send>;
+
+/// The rendering of a scene's animation over the menu's time range (`range` of the run's end).
+fn view_job<D: SceneView + Send + 'static>(
+    mut a: ViewAnimation<D>,
+    range: impl Fn(f64) -> (f64, f64),
+    path: PathBuf,
+    fps: f64,
+) -> RenderJob {
+    a.t_range = range(a.t_range.1);
+    Box::new(move |t| {
+        a.write(t, &path, fps, &mut |_| {})
+            .map_err(|e| e.to_string())
+    })
+}
 
 impl Exporter {
     /// Renders `source` as `<prefix>-animation.gif` (or .png) on a thread of its own.
@@ -157,13 +180,17 @@ impl Exporter {
                 result,
             } => {
                 let title = format!("Two buildings: {} contact", result.contact.name());
-                let mut a = BuildingAnimation::new(*setup, motion, *result, title, size, frames);
-                a.t_range = range(a.t_range.1);
-                let path = path.clone();
-                Box::new(move |t| {
-                    a.write(t, &path, fps, &mut |_| {})
-                        .map_err(|e| e.to_string())
-                })
+                let a = BuildingAnimation::new(*setup, motion, *result, title, size, frames);
+                view_job(a, range, path.clone(), fps)
+            }
+            AnimationSource::Bridge {
+                setup,
+                motion,
+                result,
+            } => {
+                let title = format!("A bridge: {} contact", result.contact.name());
+                let a = BridgeAnimation::new(*setup, motion, *result, title, size, frames);
+                view_job(a, range, path.clone(), fps)
             }
         };
         self.spawn(move || {

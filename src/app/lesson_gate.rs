@@ -9,11 +9,14 @@ use super::impact_scene::ImpactScene;
 use super::lesson_player::LessonPlayer;
 use super::visibility::Lock;
 use super::{PoundingApp, SceneKind};
+use crate::io::bridge_settings::{BRIDGE, BridgeSetup};
 use crate::io::building_settings::{BUILDINGS, BuildingSetup};
 use crate::io::registry::Registry;
 use crate::io::settings::{IMPACT, ImpactSetup};
 use crate::lesson::LessonScene;
-use crate::model::settings::{BUILDING_SETTINGS, IMPACT_SETTINGS, Setting, concrete_keys};
+use crate::model::settings::{
+    BRIDGE_SETTINGS, BUILDING_SETTINGS, IMPACT_SETTINGS, Setting, concrete_keys,
+};
 
 /// The step's scene as the last frame left it.
 #[derive(Debug, Clone)]
@@ -21,6 +24,7 @@ use crate::model::settings::{BUILDING_SETTINGS, IMPACT_SETTINGS, Setting, concre
 pub(super) enum Held {
     Impact(ImpactSetup),
     Buildings(BuildingSetup),
+    Bridge(BridgeSetup),
 }
 
 /// The scene a lesson step plays in.
@@ -29,6 +33,7 @@ pub(super) fn scene_of(s: LessonScene) -> SceneKind {
         LessonScene::Bar => SceneKind::BarImpact,
         LessonScene::Compare => SceneKind::WaveVsLumped,
         LessonScene::Buildings => SceneKind::Buildings,
+        LessonScene::Bridge => SceneKind::Bridge,
     }
 }
 
@@ -49,6 +54,21 @@ fn changed<S: PartialEq>(
         .collect()
 }
 
+/// Puts `before` back over `now` where the frame's changes touched only locked keys; the keys,
+/// where it did.
+fn undo_locked<S: PartialEq>(
+    lock: &Lock,
+    (registry, table): (&Registry<S>, &'static [Setting]),
+    before: S,
+    now: &mut S,
+) -> Option<Vec<String>> {
+    let undo = refused(lock, changed(registry, table, &before, now));
+    if undo.is_some() {
+        *now = before;
+    }
+    undo
+}
+
 /// Whether a frame's changes stand: none, or at least one of them unlocked (the rest follow
 /// from it). Otherwise the locked keys that moved.
 pub(super) fn refused(lock: &Lock, changed: Vec<String>) -> Option<Vec<String>> {
@@ -63,6 +83,7 @@ impl PoundingApp {
                 LessonScene::Bar => Held::Impact(self.bar.core.setup),
                 LessonScene::Compare => Held::Impact(self.compare.core.setup),
                 LessonScene::Buildings => Held::Buildings(self.buildings.setup.clone()),
+                LessonScene::Bridge => Held::Bridge(self.bridge.setup.clone()),
             }),
             _ => None,
         };
@@ -89,21 +110,28 @@ impl PoundingApp {
                 } else {
                     &mut self.bar
                 };
-                let now = target.core().setup;
-                let undo = refused(&lock, changed(&IMPACT, IMPACT_SETTINGS, &before, &now));
+                let now = &mut target.core_mut().setup;
+                let undo = undo_locked(&lock, (&IMPACT, IMPACT_SETTINGS), before, now);
                 if undo.is_some() {
-                    target.core_mut().setup = before;
                     target.request();
                 }
                 undo
             }
             (Held::Buildings(before), LessonScene::Buildings) => {
-                let now = &self.buildings.setup;
-                let undo = refused(&lock, changed(&BUILDINGS, BUILDING_SETTINGS, &before, now));
+                let now = &mut self.buildings.setup;
+                let undo = undo_locked(&lock, (&BUILDINGS, BUILDING_SETTINGS), before, now);
                 if undo.is_some() {
-                    self.buildings.setup = before;
                     self.buildings.reset_fields();
                     self.buildings.request();
+                }
+                undo
+            }
+            (Held::Bridge(before), LessonScene::Bridge) => {
+                let now = &mut self.bridge.setup;
+                let undo = undo_locked(&lock, (&BRIDGE, BRIDGE_SETTINGS), before, now);
+                if undo.is_some() {
+                    self.bridge.reset_fields();
+                    self.bridge.request();
                 }
                 undo
             }
@@ -133,6 +161,7 @@ impl PoundingApp {
             LessonScene::Bar => IMPACT.shown(&self.bar.core.setup, key),
             LessonScene::Compare => IMPACT.shown(&self.compare.core.setup, key),
             LessonScene::Buildings => BUILDINGS.shown(&self.buildings.setup, key),
+            LessonScene::Bridge => BRIDGE.shown(&self.bridge.setup, key),
         };
         value.map(|(_, v)| v.describe())
     }
@@ -186,6 +215,13 @@ mod tests {
         assert_eq!(
             changed(&BUILDINGS, BUILDING_SETTINGS, &before, &b),
             vec!["contact.model".to_string()]
+        );
+        let mut bridge = BridgeSetup::default();
+        let before = bridge.clone();
+        bridge.scenario.apparent_velocity_m_s = Some(500.0);
+        assert_eq!(
+            changed(&BRIDGE, BRIDGE_SETTINGS, &before, &bridge),
+            vec!["motion.apparent_velocity".to_string()]
         );
     }
 }

@@ -99,6 +99,11 @@ impl PoundingApp {
                 .setup
                 .apply(key, &v)
                 .map(|_| self.buildings.request()),
+            LessonScene::Bridge => self
+                .bridge
+                .setup
+                .apply(key, &v)
+                .map(|_| self.bridge.request()),
         };
         r.map_err(|e| format!("{}: {}", e.field, e.message))
     }
@@ -131,6 +136,7 @@ impl PoundingApp {
                     if let Some(name) = &step.preset {
                         match step.scene {
                             LessonScene::Buildings => self.building_preset.clone_from(name),
+                            LessonScene::Bridge => self.bridge_preset.clone_from(name),
                             _ => self.preset_choice.clone_from(name),
                         }
                     }
@@ -157,8 +163,6 @@ impl PoundingApp {
 
     fn load_scene(&mut self, scene: SceneKind, setup: SceneSetup) {
         self.scene = scene;
-        // A launch time (`--time`) holds the animation there, paused, in every step.
-        let (t0, playing) = self.launch.time_s.map_or((0.0, true), |t| (t, false));
         match setup {
             SceneSetup::Impact(s) => {
                 let target: &mut dyn ImpactScene = if scene == SceneKind::WaveVsLumped {
@@ -169,18 +173,24 @@ impl PoundingApp {
                 let core = target.core_mut();
                 core.setup = s;
                 core.fields.clear();
-                core.playback.t = t0;
-                core.playback.playing = playing;
                 target.request();
             }
             SceneSetup::Buildings(s) => {
                 self.buildings.setup = s;
                 self.buildings.reset_fields();
-                self.buildings.playback.t = t0;
-                self.buildings.playback.playing = playing;
                 self.buildings.request();
             }
+            SceneSetup::Bridge(s) => {
+                self.bridge.setup = s;
+                self.bridge.reset_fields();
+                self.bridge.request();
+            }
         }
+        // A launch time (`--time`) holds the animation there, paused, in every step.
+        let (t0, playing) = self.launch.time_s.map_or((0.0, true), |t| (t, false));
+        let playback = self.playback();
+        playback.t = t0;
+        playback.playing = playing;
     }
 
     /// The scenes show the step's panels and unlock its settings; without a lesson, all.
@@ -196,8 +206,10 @@ impl PoundingApp {
             core.visibility = visibility.clone();
             core.fields.lock = lock.clone();
         }
-        self.buildings.visibility = visibility;
-        self.buildings.set_lock(lock);
+        self.buildings.visibility = visibility.clone();
+        self.buildings.set_lock(lock.clone());
+        self.bridge.visibility = visibility;
+        self.bridge.set_lock(lock);
         let models = self
             .lesson
             .as_ref()
@@ -212,6 +224,7 @@ impl PoundingApp {
             LessonScene::Bar => self.bar.lesson_context(),
             LessonScene::Compare => self.compare.lesson_context(),
             LessonScene::Buildings => self.buildings.lesson_context(),
+            LessonScene::Bridge => self.bridge.lesson_context(),
         }
     }
 

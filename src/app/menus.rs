@@ -181,8 +181,8 @@ impl PoundingApp {
             })
             .response
             .labelled_by(label);
-        if ui
-            .button("Load preset")
+        if self
+            .open_button(ui, egui::Button::new("Load preset"))
             .on_hover_text("Replace the bridge by the preset's")
             .clicked()
         {
@@ -382,17 +382,20 @@ impl PoundingApp {
         }
     }
 
-    /// File > Export animation: the shown run (an impact or the buildings) as a GIF or APNG.
+    /// File > Export animation: the shown run (an impact, the buildings or the bridge) as a GIF
+    /// or APNG.
     fn animation_menu(&mut self, ui: &mut egui::Ui) {
         let impact = self.scene == SceneKind::BarImpact;
         let has = match self.scene {
             SceneKind::BarImpact => self.bar.animation_source().is_some(),
             SceneKind::Buildings => self.buildings.animation_source().is_some(),
+            SceneKind::Bridge => self.bridge.animation_source().is_some(),
             _ => false,
         };
         if self.exporter.animation.ui(ui, impact, has) {
             let source = match self.scene {
                 SceneKind::BarImpact => self.bar.animation_source(),
+                SceneKind::Bridge => self.bridge.animation_source(),
                 _ => self.buildings.animation_source(),
             };
             if let Some(s) = source {

@@ -25,6 +25,59 @@ pub struct BridgeArgs {
     /// Contact model: sears|linear|kelvin|hertz|hertzdamp|jankowski|stereo|none [default: the preset's]
     #[arg(long, value_name = "MODEL")]
     pub contact: Option<String>,
+    #[command(flatten)]
+    pub animation: super::impact::AnimateArgs,
+    /// Slow motion around one impact: `strongest`, or its number K from 1 (the frames span
+    /// twice its duration before and after it)
+    #[arg(long, value_name = "strongest|K", requires = "animate", conflicts_with_all = ["animate_from", "animate_to"])]
+    pub animate_around: Option<String>,
+}
+
+/// Writes --animate, if asked for: the bridge in elevation as the window draws it.
+#[cfg(feature = "gui")]
+fn write_animation(
+    args: &BridgeArgs,
+    setup: &BridgeSetup,
+    motion: &GroundMotion,
+    result: &pounding::model::bridge::BridgeResult,
+) -> anyhow::Result<()> {
+    let a = &args.animation;
+    if a.animate.is_none() {
+        return Ok(());
+    }
+    let title = format!(
+        "A bridge: {} contact, {}",
+        result.contact.name(),
+        super::buildings::slide_record(motion)
+    );
+    let mut animation = pounding::render::animate_bridge::BridgeAnimation::new(
+        setup.clone(),
+        motion.clone(),
+        result.clone(),
+        title,
+        a.animate_size,
+        a.animate_frames,
+    );
+    let end = animation.t_range.1;
+    let default = match &args.animate_around {
+        None => animation.t_range,
+        Some(which) => super::buildings::around(&result.impacts, which, end)?,
+    };
+    animation.t_range = a.range(default, end)?;
+    a.write(
+        args.common.json || args.common.quiet,
+        |target, path, progress| animation.write(target, path, a.animate_fps, progress),
+    )
+}
+
+#[cfg(not(feature = "gui"))]
+fn write_animation(
+    _: &BridgeArgs,
+    _: &BridgeSetup,
+    _: &GroundMotion,
+    _: &pounding::model::bridge::BridgeResult,
+) -> anyhow::Result<()> {
+    Ok(())
 }
 
 /// The preset (or `bridge-3-span`) with the --set overrides, --motion and --contact applied.
@@ -58,29 +111,13 @@ fn force_plot(
     r: &pounding::model::bridge::BridgeResult,
     motion: &GroundMotion,
 ) -> pounding::export::plot::LinePlot {
-    let series = r
-        .joint_force_n
-        .iter()
-        .enumerate()
-        .map(|(j, f)| pounding::export::plot::Series {
-            name: format!("joint {j} ({})", r.joints[j].kind()),
-            points: r
-                .time_s
-                .iter()
-                .zip(f)
-                .map(|(t, f)| (*t, f * 1e-6))
-                .collect(),
-        })
-        .collect();
-    pounding::export::plot::LinePlot::new(
+    pounding::export::bridge_plots::joint_forces(
+        r,
         format!(
             "Joint forces: {} contact, {}",
             r.contact.name(),
             motion.name
         ),
-        "time [s]",
-        "joint force [MN]",
-        series,
     )
 }
 
@@ -100,6 +137,7 @@ pub fn run(args: &BridgeArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         .scenario
         .validate()
         .map_err(|e| anyhow::anyhow!("{e}"))?;
+    args.animation.check()?;
     let motion =
         pounding::io::motion::load(&setup.motion).map_err(|e| anyhow::anyhow!("--motion {e}"))?;
     let quiet = args.common.quiet || args.common.json;
@@ -117,6 +155,7 @@ pub fn run(args: &BridgeArgs, out: &mut dyn Write) -> anyhow::Result<()> {
         let baseline = solve_with(&free, &motion, control)?;
         Ok::<_, pounding::model::error::SolveError>((result, estimate, baseline))
     })?;
+    write_animation(args, &setup, &motion, &result)?;
     let runs = Runs {
         result: &result,
         baseline: &baseline,

@@ -77,14 +77,11 @@ fn write_animation(
     if a.animate.is_none() {
         return Ok(());
     }
-    // A slide's title: the record's name without the note of where it came from.
-    let record = motion
-        .name
-        .split(" [")
-        .next()
-        .unwrap_or(&motion.name)
-        .trim();
-    let title = format!("Two buildings: {} contact, {record}", result.contact.name());
+    let title = format!(
+        "Two buildings: {} contact, {}",
+        result.contact.name(),
+        slide_record(motion)
+    );
     let mut animation = pounding::render::animate_buildings::BuildingAnimation::new(
         setup.clone(),
         motion.clone(),
@@ -97,7 +94,7 @@ fn write_animation(
     let end = animation.t_range.1;
     let default = match &args.animate_around {
         None => animation.t_range,
-        Some(which) => around(result, which, end)?,
+        Some(which) => around(&result.impacts, which, end)?,
     };
     animation.t_range = a.range(default, end)?;
     a.write(
@@ -106,21 +103,31 @@ fn write_animation(
     )
 }
 
+/// The record's name for a slide's title: without the note of where it came from.
+#[cfg(feature = "gui")]
+pub(super) fn slide_record(motion: &GroundMotion) -> &str {
+    motion
+        .name
+        .split(" [")
+        .next()
+        .unwrap_or(&motion.name)
+        .trim()
+}
+
 /// The frames' range around one impact (`strongest`, or K from 1): twice its duration before
 /// and after it, at least 20 ms a side, within the run.
 #[cfg(feature = "gui")]
-fn around(
-    result: &pounding::model::building::BuildingResult,
+pub(super) fn around(
+    impacts: &[pounding::model::building::result::ImpactEvent],
     which: &str,
     end: f64,
 ) -> anyhow::Result<(f64, f64)> {
-    let n = result.impacts.len();
+    let n = impacts.len();
     if n == 0 {
         anyhow::bail!("--animate-around: the run has no impact to show");
     }
     let k = match which.trim() {
-        "strongest" => result
-            .impacts
+        "strongest" => impacts
             .iter()
             .enumerate()
             .max_by(|a, b| a.1.peak_force_n.total_cmp(&b.1.peak_force_n))
@@ -133,7 +140,7 @@ fn around(
             ),
         },
     };
-    let i = &result.impacts[k];
+    let i = &impacts[k];
     let pad = (2.0 * (i.end_s - i.start_s)).max(0.02);
     Ok(((i.start_s - pad).max(0.0), (i.end_s + pad).min(end)))
 }

@@ -3,6 +3,7 @@
 
 pub mod animation;
 pub mod bitmap;
+pub mod bridge_plots;
 pub mod palette;
 pub mod plot;
 pub mod xt;

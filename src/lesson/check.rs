@@ -5,7 +5,7 @@ use super::expr::Expr;
 use super::solve::solve_step;
 use super::{Context, Lesson, LessonError, LessonScene, Panel, Prediction, Step};
 use crate::model::control::Control;
-use crate::model::settings::{BUILDING_SETTINGS, IMPACT_SETTINGS, concrete_keys};
+use crate::model::settings::concrete_keys;
 
 /// What one step gave.
 #[derive(Debug, Clone, PartialEq)]
@@ -116,12 +116,81 @@ fn shown_by(scene: LessonScene, panel: Panel) -> &'static [&'static str] {
             "abs_ratio",
             "srss_ratio",
         ],
+        (LessonScene::Bridge, panel) => bridge_shown_by(panel),
+        _ => &[],
+    }
+}
+
+/// The bridge's panels: its readouts and tables, and the plots whose axes give a number away
+/// (each joint's and girder's fields as `joint.NAME` and `girder.NAME`, whichever joint).
+fn bridge_shown_by(panel: Panel) -> &'static [&'static str] {
+    const FORCES: &[&str] = &[
+        "max_pounding_force_n",
+        "max_force_at_abutments_n",
+        "max_force_between_girders_n",
+        "joint.max_force_n",
+        "joints_with_impacts",
+    ];
+    const SEATS: &[&str] = &[
+        "max_opening_m",
+        "joint.max_opening_m",
+        "joint.seat_margin_m",
+        "joint.unseated",
+        "joint.unseated_s",
+        "unseated_count",
+        "first_unseating_s",
+    ];
+    match panel {
+        Panel::Readouts => &[
+            "impact_count",
+            "contact_count",
+            "max_pounding_force_n",
+            "girder.peak_displacement_m",
+            "girder.peak_displacement_no_pounding_m",
+            "energy_girder_waves_j",
+        ],
+        Panel::Force => FORCES,
+        Panel::Openings => SEATS,
+        Panel::Displacements => &[
+            "girder.peak_displacement_m",
+            "girder.peak_displacement_no_pounding_m",
+        ],
+        Panel::Joints => &[
+            "max_pounding_force_n",
+            "max_force_at_abutments_n",
+            "max_force_between_girders_n",
+            "joint.max_force_n",
+            "joint.required_gap_m",
+            "max_opening_m",
+            "joint.max_opening_m",
+            "joint.seat_margin_m",
+            "joint.unseated",
+            "joint.unseated_s",
+            "unseated_count",
+            "first_unseating_s",
+        ],
+        Panel::Impacts => &[
+            "impact_count",
+            "contact_count",
+            "joints_with_impacts",
+            "joint.impacts",
+            "max_pounding_force_n",
+            "max_force_at_abutments_n",
+            "max_force_between_girders_n",
+            "joint.max_force_n",
+            "strongest_impact",
+            "strongest_impact_joint",
+            "strongest_impact_duration_s",
+            "strongest_impact_approach_velocity_m_s",
+            "shortest_impact_duration_s",
+            "longest_impact_duration_s",
+        ],
         _ => &[],
     }
 }
 
 /// Whether `panel` of a step in `scene` shows the field `name` (a compare model's field under
-/// its prefix too).
+/// its prefix too; a bridge joint's or girder's as `joint.NAME` or `girder.NAME`).
 fn shows(scene: LessonScene, panel: Panel, name: &str) -> bool {
     let fields = shown_by(scene, panel);
     let bare = match name.split_once('.') {
@@ -129,11 +198,19 @@ fn shows(scene: LessonScene, panel: Panel, name: &str) -> bool {
             if scene == LessonScene::Compare
                 && COMPARE_MODELS.iter().any(|m| model_prefix(*m) == model) =>
         {
-            field
+            field.to_string()
         }
-        _ => name,
+        Some((member, field)) if scene == LessonScene::Bridge => {
+            let kind = member.trim_end_matches(|c: char| c.is_ascii_digit());
+            if kind.len() < member.len() && (kind == "joint" || kind == "girder") {
+                format!("{kind}.{field}")
+            } else {
+                name.to_string()
+            }
+        }
+        _ => name.to_string(),
     };
-    fields.contains(&bare)
+    fields.contains(&bare.as_str())
 }
 
 /// Refuses a prediction whose answer can be read off an earlier step's screen: every result
@@ -149,11 +226,7 @@ fn answer_not_shown_before(
     let Some(p) = &step.prediction else {
         return Ok(());
     };
-    let table = match step.scene {
-        LessonScene::Buildings => BUILDING_SETTINGS,
-        _ => IMPACT_SETTINGS,
-    };
-    let settings = concrete_keys(table);
+    let settings = concrete_keys(step.scene.settings().0);
     let mut names: Vec<&str> = match p {
         Prediction::Choice { when, .. } => when.iter().flat_map(|e| e.names()).collect(),
         Prediction::Number { answer, .. } => answer.names(),

@@ -4,7 +4,8 @@
 //! fields as `--json` names them (`restitution`, `contact_duration_s`, `impact_count`), and a few
 //! derived numbers a lecturer needs (`c1`, `a_tau`, `vibration_fraction`, `min_gap_m`). In the
 //! compare scene every compared model's fields are also there with the model as a prefix, a
-//! dash written as `_`: `wave.restitution`, `lumped_hertz.contact_duration_s`.
+//! dash written as `_`: `wave.restitution`, `lumped_hertz.contact_duration_s`. The bridge
+//! scene's names are [`super::bridge_context`]'s.
 
 use super::LessonScene;
 use super::expr::{ExprError, Value};
@@ -234,6 +235,7 @@ impl Vocabulary {
                 names.extend(concrete_keys(BUILDING_SETTINGS));
                 names.extend::<Vec<String>>(own(BUILDING_FIELDS));
             }
+            LessonScene::Bridge => names.extend(super::bridge_context::names()),
         }
         Vocabulary { names }
     }
@@ -276,6 +278,14 @@ impl Context {
     /// No names at all (constant expressions).
     pub fn empty() -> Self {
         Context::default()
+    }
+
+    /// No values yet, the names of `scene`.
+    pub(super) fn of_scene(scene: LessonScene) -> Self {
+        Context {
+            vocabulary: Vocabulary::for_scene(scene),
+            ..Context::default()
+        }
     }
 
     /// The value of `name`: unknown names and names without a value in this run are errors.
@@ -321,11 +331,11 @@ impl Context {
         self
     }
 
-    fn set(&mut self, name: impl Into<String>, v: Value) {
+    pub(super) fn set(&mut self, name: impl Into<String>, v: Value) {
         self.values.insert(name.into(), v);
     }
 
-    fn number(&mut self, name: impl Into<String>, x: f64) {
+    pub(super) fn number(&mut self, name: impl Into<String>, x: f64) {
         if x.is_finite() {
             self.set(name, Value::Number(x));
         }
@@ -335,13 +345,9 @@ impl Context {
     /// else the first run), every run's also as `MODEL.field`. Bar scene: give the one run;
     /// compare scene: every compared model's that solved.
     pub fn impact(setup: &ImpactSetup, runs: &[(ModelKind, &ImpactResult)]) -> Self {
-        let mut ctx = Context {
-            // The compare scene's names: a bar step's expressions were checked against the
-            // narrower bar vocabulary when the lesson loaded.
-            vocabulary: Vocabulary::for_scene(LessonScene::Compare),
-            values: BTreeMap::new(),
-            failures: BTreeMap::new(),
-        };
+        // The compare scene's names: a bar step's expressions were checked against the
+        // narrower bar vocabulary when the lesson loaded.
+        let mut ctx = Context::of_scene(LessonScene::Compare);
         for key in concrete_keys(IMPACT_SETTINGS) {
             if let Some(v) = impact_setting(setup, &key) {
                 ctx.set(key, v);
@@ -425,11 +431,7 @@ impl Context {
         result: &BuildingResult,
         free: Option<&BuildingResult>,
     ) -> Self {
-        let mut ctx = Context {
-            vocabulary: Vocabulary::for_scene(LessonScene::Buildings),
-            values: BTreeMap::new(),
-            failures: BTreeMap::new(),
-        };
+        let mut ctx = Context::of_scene(LessonScene::Buildings);
         for key in concrete_keys(BUILDING_SETTINGS) {
             if let Some(v) = building_setting(setup, &key) {
                 ctx.set(key, v);
@@ -515,7 +517,7 @@ pub fn building_setting(setup: &BuildingSetup, key: &str) -> Option<Value> {
 
 /// A setting's value as an expression reads it: a per-storey list as the one value all its
 /// storeys share; no other list has a value (Rayleigh damping's two modes).
-fn lesson_value((setting, value): (&Setting, SettingValue)) -> Option<Value> {
+pub(super) fn lesson_value((setting, value): (&Setting, SettingValue)) -> Option<Value> {
     match value {
         SettingValue::Number(x) => Some(Value::Number(x)),
         SettingValue::Bool(b) => Some(Value::Bool(b)),

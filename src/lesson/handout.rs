@@ -9,6 +9,9 @@ use super::solve::{Solved, solve_step};
 use super::{Lesson, LessonError, Panel, Prediction, Step};
 use crate::export::plot::{LinePlot, Series};
 use crate::export::xt::XtImage;
+use crate::io::bridge_settings::BridgeSetup;
+use crate::model::bridge::BridgeResult;
+use crate::model::building::BuildingResult;
 use crate::model::control::Control;
 use crate::model::xt::{XtField, XtGrid};
 use std::fmt::Write;
@@ -535,7 +538,37 @@ fn figure(solved: &Solved, panel: Panel, path: &Path) -> Result<bool, String> {
             .map_err(|e| e.to_string())?;
             return Ok(true);
         }
-        (Solved::Buildings { result, .. }, Panel::Force) => LinePlot::new(
+        (Solved::Buildings { result, free, .. }, _) => match buildings_plot(result, free, panel) {
+            Some(plot) => plot,
+            None => return Ok(false),
+        },
+        (
+            Solved::Bridge {
+                setup,
+                result,
+                free,
+            },
+            _,
+        ) => match bridge_plot(setup, result, free, panel) {
+            Some(plot) => plot,
+            None => return Ok(false),
+        },
+        _ => return Ok(false),
+    };
+    LinePlot { size: SIZE, ..plot }
+        .write(path)
+        .map_err(|e| e.to_string())?;
+    Ok(true)
+}
+
+/// A buildings step's plot of `panel`; `None` for a panel with no printable figure.
+fn buildings_plot(
+    result: &BuildingResult,
+    free: &BuildingResult,
+    panel: Panel,
+) -> Option<LinePlot> {
+    let plot = match panel {
+        Panel::Force => LinePlot::new(
             "Pounding force",
             "time [s]",
             "force [MN]",
@@ -547,7 +580,7 @@ fn figure(solved: &Solved, panel: Panel, path: &Path) -> Result<bool, String> {
                 1e-6,
             )],
         ),
-        (Solved::Buildings { result, free, .. }, Panel::Displacements) => LinePlot::new(
+        Panel::Displacements => LinePlot::new(
             "Roof displacements",
             "time [s]",
             "displacement [mm]",
@@ -570,7 +603,7 @@ fn figure(solved: &Solved, panel: Panel, path: &Path) -> Result<bool, String> {
                 ),
             ],
         ),
-        (Solved::Buildings { free, .. }, Panel::Gaps) => {
+        Panel::Gaps => {
             let closing: Vec<f64> = free.displacement_m[0]
                 .iter()
                 .zip(&free.displacement_m[1])
@@ -583,12 +616,31 @@ fn figure(solved: &Solved, panel: Panel, path: &Path) -> Result<bool, String> {
                 vec![series("closing", &free.time_s, &closing, 1.0, 1e3)],
             )
         }
-        _ => return Ok(false),
+        _ => return None,
     };
-    LinePlot { size: SIZE, ..plot }
-        .write(path)
-        .map_err(|e| e.to_string())?;
-    Ok(true)
+    Some(plot)
+}
+
+/// A bridge step's plot of `panel` (for the impact list, the strongest impact's force); `None`
+/// for a panel with no printable figure (the animated bridge and the deck's x-t diagram, the
+/// readouts and the joints' table: the text carries them).
+fn bridge_plot(
+    setup: &BridgeSetup,
+    result: &BridgeResult,
+    free: &BridgeResult,
+    panel: Panel,
+) -> Option<LinePlot> {
+    use crate::export::bridge_plots as plots;
+    match panel {
+        Panel::Force => Some(plots::joint_forces(
+            result,
+            format!("Joint forces: {} contact", result.contact.name()),
+        )),
+        Panel::Openings => Some(plots::joint_openings(result, setup.scenario.seat_length_m)),
+        Panel::Displacements => Some(plots::girder_displacements(result, free)),
+        Panel::Impacts => plots::strongest_impact(result),
+        _ => None,
+    }
 }
 
 fn series(name: &str, t: &[f64], y: &[f64], tx: f64, ty: f64) -> Series {

@@ -9,6 +9,7 @@
 //!   it holds, [`check`] from its own headless solves;
 //! - [`handout`] writes a printable worksheet.
 
+pub mod bridge_context;
 pub mod check;
 pub mod context;
 pub mod expr;
@@ -20,6 +21,8 @@ pub use check::{CheckReport, StepReport, check};
 pub use context::{Context, Vocabulary};
 pub use expr::{Expr, ExprError, Value};
 pub use solve::{SceneSetup, Solved, solve_step};
+
+use crate::model::settings::{BRIDGE_SETTINGS, BUILDING_SETTINGS, IMPACT_SETTINGS, Setting};
 
 /// Lessons shipped with Pounding Lab, compiled in (name = file stem).
 pub const EMBEDDED: &[(&str, &str)] = &[
@@ -46,6 +49,10 @@ pub const EMBEDDED: &[(&str, &str)] = &[
     (
         "storeys-that-yield",
         include_str!("../../assets/lessons/storeys-that-yield.toml"),
+    ),
+    (
+        "waves-in-a-bridge",
+        include_str!("../../assets/lessons/waves-in-a-bridge.toml"),
     ),
 ];
 
@@ -74,13 +81,16 @@ pub enum LessonScene {
     Compare,
     /// Two buildings in an earthquake.
     Buildings,
+    /// A bridge's girders pounding at their joints in an earthquake.
+    Bridge,
 }
 
 impl LessonScene {
-    pub const ALL: [LessonScene; 3] = [
+    pub const ALL: [LessonScene; 4] = [
         LessonScene::Bar,
         LessonScene::Compare,
         LessonScene::Buildings,
+        LessonScene::Bridge,
     ];
 
     pub fn name(self) -> &'static str {
@@ -88,6 +98,17 @@ impl LessonScene {
             LessonScene::Bar => "bar",
             LessonScene::Compare => "compare",
             LessonScene::Buildings => "buildings",
+            LessonScene::Bridge => "bridge",
+        }
+    }
+
+    /// The settings its steps may set and unlock, and the command whose `--list-keys` lists
+    /// them.
+    pub fn settings(self) -> (&'static [Setting], &'static str) {
+        match self {
+            LessonScene::Bar | LessonScene::Compare => (IMPACT_SETTINGS, "impact"),
+            LessonScene::Buildings => (BUILDING_SETTINGS, "buildings"),
+            LessonScene::Bridge => (BRIDGE_SETTINGS, "bridge"),
         }
     }
 
@@ -100,6 +121,7 @@ impl LessonScene {
         match self {
             LessonScene::Bar | LessonScene::Compare => crate::io::preset::DEFAULT_PRESET,
             LessonScene::Buildings => "paper-buildings",
+            LessonScene::Bridge => "bridge-3-span",
         }
     }
 }
@@ -129,10 +151,16 @@ pub enum Panel {
     Gaps,
     /// The yielding storeys' hysteresis loops.
     Hysteresis,
+    /// The bridge in elevation: frames swaying, joints closing, girders on their seats.
+    Bridge,
+    /// The bridge's joint openings against the seat length.
+    Openings,
+    /// The bridge's joints tabled: gap, gap needed, largest force and opening, seat margin.
+    Joints,
 }
 
 impl Panel {
-    pub const ALL: [Panel; 11] = [
+    pub const ALL: [Panel; 14] = [
         Panel::Bars,
         Panel::Buildings,
         Panel::Force,
@@ -144,6 +172,9 @@ impl Panel {
         Panel::Impacts,
         Panel::Gaps,
         Panel::Hysteresis,
+        Panel::Bridge,
+        Panel::Openings,
+        Panel::Joints,
     ];
 
     pub fn name(self) -> &'static str {
@@ -159,6 +190,9 @@ impl Panel {
             Panel::Impacts => "impacts",
             Panel::Gaps => "gaps",
             Panel::Hysteresis => "hysteresis",
+            Panel::Bridge => "bridge",
+            Panel::Openings => "openings",
+            Panel::Joints => "joints",
         }
     }
 
@@ -168,14 +202,15 @@ impl Panel {
 
     /// Whether a scene has this panel.
     pub fn in_scene(self, scene: LessonScene) -> bool {
+        use LessonScene::{Bar, Bridge, Buildings, Compare};
         match self {
-            Panel::Force | Panel::Readouts | Panel::Energy => true,
-            Panel::Bars | Panel::Approach | Panel::Xt => scene != LessonScene::Buildings,
-            Panel::Buildings
-            | Panel::Displacements
-            | Panel::Impacts
-            | Panel::Gaps
-            | Panel::Hysteresis => scene == LessonScene::Buildings,
+            Panel::Force | Panel::Readouts => true,
+            Panel::Energy => scene != Bridge,
+            Panel::Bars | Panel::Approach => matches!(scene, Bar | Compare),
+            Panel::Xt => scene != Buildings,
+            Panel::Displacements | Panel::Impacts => matches!(scene, Buildings | Bridge),
+            Panel::Buildings | Panel::Gaps | Panel::Hysteresis => scene == Buildings,
+            Panel::Bridge | Panel::Openings | Panel::Joints => scene == Bridge,
         }
     }
 }

@@ -6,7 +6,7 @@ use super::expr::Expr;
 use super::solve::SceneSetup;
 use super::{Lesson, LessonError, LessonScene, Panel, Prediction, Step, Task};
 use crate::model::impact::ModelKind;
-use crate::model::settings::{BUILDING_SETTINGS, IMPACT_SETTINGS, concrete_keys};
+use crate::model::settings::concrete_keys;
 use toml::de::{DeTable, DeValue};
 
 type Spanned<T> = toml::Spanned<T>;
@@ -346,7 +346,10 @@ fn step(doc: &Doc, table: &DeTable, index: usize, line: usize) -> Result<Step, L
         doc.error(
             Some(scene_line),
             &f.field("scene"),
-            format!("unknown scene '{scene_name}': allowed bar|compare|buildings"),
+            format!(
+                "unknown scene '{scene_name}': allowed {}",
+                LessonScene::ALL.map(LessonScene::name).join("|")
+            ),
         )
     })?;
     let vocabulary = Vocabulary::for_scene(scene);
@@ -536,10 +539,8 @@ fn unlocked(
     scene: LessonScene,
     path: &str,
 ) -> Result<Vec<String>, LessonError> {
-    let (keys, command) = match scene {
-        LessonScene::Buildings => (concrete_keys(BUILDING_SETTINGS), "buildings"),
-        _ => (concrete_keys(IMPACT_SETTINGS), "impact"),
-    };
+    let (table, command) = scene.settings();
+    let keys = concrete_keys(table);
     items
         .into_iter()
         .map(|(k, l)| {

@@ -2,9 +2,11 @@
 
 use super::context::Context;
 use super::{LessonError, LessonScene, Step};
+use crate::io::bridge_settings::BridgeSetup;
 use crate::io::building_settings::BuildingSetup;
 use crate::io::preset;
 use crate::io::settings::{ImpactSetup, SettingValue};
+use crate::model::bridge::{BridgeResult, BridgeScenario};
 use crate::model::building::{BuildingResult, BuildingScenario, ContactModel};
 use crate::model::control::Control;
 use crate::model::error::InputError;
@@ -18,6 +20,7 @@ pub enum SceneSetup {
     /// The bar and compare scenes.
     Impact(ImpactSetup),
     Buildings(BuildingSetup),
+    Bridge(BridgeSetup),
 }
 
 impl SceneSetup {
@@ -35,6 +38,9 @@ impl SceneSetup {
             LessonScene::Buildings => SceneSetup::Buildings(
                 preset::load_for(name, "buildings").map_err(|e| e.to_string())?,
             ),
+            LessonScene::Bridge => {
+                SceneSetup::Bridge(preset::load_for(name, "bridge").map_err(|e| e.to_string())?)
+            }
         };
         for (k, v, _) in set {
             setup
@@ -50,6 +56,7 @@ impl SceneSetup {
         match self {
             SceneSetup::Impact(s) => s.apply(key, &v),
             SceneSetup::Buildings(s) => s.apply(key, &v),
+            SceneSetup::Bridge(s) => s.apply(key, &v),
         }
     }
 }
@@ -70,6 +77,13 @@ pub enum Solved {
         free: BuildingResult,
         motion_name: String,
     },
+    /// The run, and the same bridge without contact (the gaps each joint needs, the openings
+    /// and peaks without pounding).
+    Bridge {
+        setup: BridgeSetup,
+        result: BridgeResult,
+        free: BridgeResult,
+    },
 }
 
 impl Solved {
@@ -87,6 +101,11 @@ impl Solved {
                 free,
                 ..
             } => Context::buildings(setup, result, Some(free)),
+            Solved::Bridge {
+                setup,
+                result,
+                free,
+            } => Context::bridge(setup, result, Some(free)),
         }
     }
 
@@ -94,7 +113,7 @@ impl Solved {
     pub fn run(&self, model: ModelKind) -> Option<&ImpactResult> {
         match self {
             Solved::Impact { runs, .. } => runs.iter().find(|(m, _)| *m == model).map(|(_, r)| r),
-            Solved::Buildings { .. } => None,
+            Solved::Buildings { .. } | Solved::Bridge { .. } => None,
         }
     }
 }
@@ -158,6 +177,24 @@ pub fn solve_step(
                 result,
                 free,
                 motion_name: motion.name.clone(),
+            })
+        }
+        SceneSetup::Bridge(setup) => {
+            let motion = crate::io::motion::load(&setup.motion)
+                .map_err(|e| err(step.line, format!("motion: {e}")))?;
+            let solve = |sc: &BridgeScenario| {
+                crate::model::bridge::solve_with(sc, &motion, control)
+                    .map_err(|e| err(step.line, format!("the bridge could not solve: {e}")))
+            };
+            let result = solve(&setup.scenario)?;
+            let free = solve(&BridgeScenario {
+                contact: ContactModel::None,
+                ..setup.scenario.clone()
+            })?;
+            Ok(Solved::Bridge {
+                setup,
+                result,
+                free,
             })
         }
     }

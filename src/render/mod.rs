@@ -2,6 +2,8 @@
 //! drawing offscreen.
 
 pub mod animate;
+pub mod animate_bridge;
 pub mod animate_buildings;
+pub mod animate_view;
 pub mod bars;
 pub mod offscreen;

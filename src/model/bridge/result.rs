@@ -125,7 +125,8 @@ pub struct BridgeResult {
     /// How far the run had got [s]: `duration_s` once whole, less for a run still solving
     /// (see [`super::solve::solve_streaming`]).
     pub solved_to_s: f64,
-    /// What the reader must know besides the numbers.
+    /// What the reader must know besides the numbers: first one per entry of `unseating`, in
+    /// its order (a lesson step that hides the seats hides these), then the others.
     pub warnings: Vec<String>,
 }
 
