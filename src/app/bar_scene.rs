@@ -379,6 +379,6 @@ fn readouts_ui(
     }
     super::readouts::show(ui, "readouts", &rows);
     for w in &r.warnings {
-        super::readouts::warning(ui, &format!("warning: {w}"));
+        super::readouts::warning(ui, "warning", &w.to_string());
     }
 }

@@ -29,6 +29,9 @@ fn list_ui(
         // A list made for another count of spans: one value for all until given each.
         list.truncate(1);
     }
+    if !fields.shows(s.key) {
+        return;
+    }
     if list.len() == 1 || n == 1 {
         let mut v = list[0];
         if fields.row(ui, s.key, &spec, &mut v) {
@@ -59,33 +62,75 @@ fn list_ui(
     }
 }
 
+/// The settings of each group whose keys start the list (a lesson in lecture mode leaves out a
+/// group with nothing unlocked).
+const BRIDGE_KEYS: [&str; 3] = [
+    setting::SPANS.key,
+    setting::SEAT_LENGTH.key,
+    setting::DAMPING_RATIO.key,
+];
+const MEMBER_KEYS: [&str; 9] = [
+    setting::SPAN_LENGTH.key,
+    setting::SPAN_AREA.key,
+    setting::SPAN_YOUNGS_MODULUS.key,
+    setting::SPAN_DENSITY.key,
+    setting::SPAN_ADDED_MASS.key,
+    setting::SPAN_VELOCITY.key,
+    setting::PIER_MASS.key,
+    setting::PIER_STIFFNESS.key,
+    setting::BEARING_STIFFNESS.key,
+];
+const JOINT_KEYS: [&str; 6] = [
+    setting::JOINT_GAPS.key,
+    setting::CONTACT_MODEL.key,
+    setting::CONTACT_STIFFNESS.key,
+    setting::RESTITUTION.key,
+    setting::GIRDER_DAMPING.key,
+    setting::MERGE_GAP.key,
+];
+const SOLVER_KEYS: [&str; 3] = [
+    setting::TOLERANCE.key,
+    setting::MAX_STEP.key,
+    setting::MAX_STEPS.key,
+];
+
 pub fn ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BridgeSetup, path: &mut String) {
-    egui::CollapsingHeader::new("Bridge")
-        .default_open(true)
-        .show(ui, |ui| {
-            row(ui, fields, &setting::SPANS, setup);
-            row(ui, fields, &setting::SEAT_LENGTH, setup);
-            row(ui, fields, &setting::DAMPING_RATIO, setup);
-        });
-    egui::CollapsingHeader::new("Girders, piers and bearings")
-        .default_open(true)
-        .show(ui, |ui| spans_ui(ui, fields, setup));
-    egui::CollapsingHeader::new("Joints and contact")
-        .default_open(true)
-        .show(ui, |ui| contact_ui(ui, fields, setup));
-    egui::CollapsingHeader::new("Ground motion")
-        .default_open(true)
-        .show(ui, |ui| {
-            apparent_velocity_ui(ui, fields, setup);
-            super::motion_params::ui(ui, fields, setup, &BRIDGE, path);
-        });
-    egui::CollapsingHeader::new("Solver")
-        .default_open(false)
-        .show(ui, |ui| {
-            row(ui, fields, &setting::TOLERANCE, setup);
-            row(ui, fields, &setting::MAX_STEP, setup);
-            row(ui, fields, &setting::MAX_STEPS, setup);
-        });
+    if fields.shows_any(&BRIDGE_KEYS) {
+        egui::CollapsingHeader::new("Bridge")
+            .default_open(true)
+            .show(ui, |ui| {
+                row(ui, fields, &setting::SPANS, setup);
+                row(ui, fields, &setting::SEAT_LENGTH, setup);
+                row(ui, fields, &setting::DAMPING_RATIO, setup);
+            });
+    }
+    if fields.shows_any(&MEMBER_KEYS) {
+        egui::CollapsingHeader::new("Girders, piers and bearings")
+            .default_open(true)
+            .show(ui, |ui| spans_ui(ui, fields, setup));
+    }
+    if fields.shows_any(&JOINT_KEYS) {
+        egui::CollapsingHeader::new("Joints and contact")
+            .default_open(true)
+            .show(ui, |ui| contact_ui(ui, fields, setup));
+    }
+    if fields.shows(setting::APPARENT_VELOCITY.key) || fields.shows_group("motion.") {
+        egui::CollapsingHeader::new("Ground motion")
+            .default_open(true)
+            .show(ui, |ui| {
+                apparent_velocity_ui(ui, fields, setup);
+                super::motion_params::ui(ui, fields, setup, &BRIDGE, path);
+            });
+    }
+    if fields.shows_any(&SOLVER_KEYS) {
+        egui::CollapsingHeader::new("Solver")
+            .default_open(false)
+            .show(ui, |ui| {
+                row(ui, fields, &setting::TOLERANCE, setup);
+                row(ui, fields, &setting::MAX_STEP, setup);
+                row(ui, fields, &setting::MAX_STEPS, setup);
+            });
+    }
 }
 
 fn spans_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BridgeSetup) {
@@ -107,7 +152,11 @@ fn spans_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BridgeSetup) {
     let periods: Vec<String> = (0..n)
         .map(|i| format!("{:.2}", sc.frame_modes(i).periods_s()[0]))
         .collect();
-    ui.label(format!("frames' first periods: {} s", periods.join(", ")));
+    // Beside the frames' own settings only: a lecture's step that opens a girder's length alone
+    // leaves the piers' periods out.
+    if fields.shows_any(&MEMBER_KEYS[6..]) {
+        ui.label(format!("frames' first periods: {} s", periods.join(", ")));
+    }
 }
 
 fn contact_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BridgeSetup) {

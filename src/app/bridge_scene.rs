@@ -10,6 +10,7 @@ use super::bridge_view::{self, BridgeDrawing};
 use super::bridge_xt::DeckXt;
 use super::export::{Exporter, ShownPlot};
 use super::later::{Later, StageTimes, pending_note};
+use super::legend::Key;
 use super::params::Fields;
 use super::playback::Playback;
 use super::series::plot_lines;
@@ -20,7 +21,7 @@ use crate::model::bridge::{BridgeErrorEstimate, BridgeResult};
 use crate::model::motion::G;
 use crate::render::bars::XtShown;
 use eframe::egui::{self, Color32};
-use egui_plot::{HLine, Legend, Line, Plot, PlotBounds, VLine};
+use egui_plot::{HLine, Plot, PlotBounds, VLine};
 
 /// One request's run (whole, or as far as it has solved) and its later stages as they land.
 type Shown =
@@ -39,6 +40,8 @@ pub struct BridgeScene {
     joint: Option<usize>,
     /// The impact the deck's diagram is drawn around (`None`: the strongest).
     selected: Option<usize>,
+    /// The page of the impact list lecture mode shows.
+    impact_page: usize,
     xt_field: XtShown,
     motion_path: String,
     /// The view's rectangle last frame (for a screenshot of the view alone).
@@ -70,6 +73,7 @@ impl BridgeScene {
             zoom: None,
             joint: None,
             selected: None,
+            impact_page: 0,
             xt_field: XtShown::Stress,
             motion_path: String::new(),
             view_rect: None,
@@ -251,14 +255,28 @@ impl BridgeScene {
             .map_or("every support at once".to_string(), |v| {
                 format!("travelling along the bridge at {v} m/s")
             });
-        ui.label(format!(
-            "{}: {:.2} s at {} s, PGA {:.3} g, PGV {:.3} m/s; {travel}",
-            d.motion.name,
-            stats.duration_s,
-            d.motion.dt_s,
-            stats.pga_m_s2 / G,
-            stats.pgv_m_s,
-        ));
+        if super::lecture::on(ui.ctx()) {
+            // A hall needs the record, how strong it is and whether it travels.
+            let record = d.motion.name.split(" [").next().unwrap_or_default();
+            let travel = d
+                .setup
+                .scenario
+                .apparent_velocity_m_s
+                .map_or("uniform".to_string(), |v| format!("travelling at {v} m/s"));
+            ui.label(format!(
+                "{record}, PGA {:.2} g, {travel}",
+                stats.pga_m_s2 / G
+            ));
+        } else {
+            ui.label(format!(
+                "{}: {:.2} s at {} s, PGA {:.3} g, PGV {:.3} m/s; {travel}",
+                d.motion.name,
+                stats.duration_s,
+                d.motion.dt_s,
+                stats.pga_m_s2 / G,
+                stats.pgv_m_s,
+            ));
+        }
         let show = self.visibility.clone();
         if show.shows("bridge") {
             self.elevation_ui(ui);
@@ -283,14 +301,14 @@ impl BridgeScene {
         // panels show, and wait with them in a lesson step that asks about the seats.
         let shown = if seats { 0 } else { r.unseating.len() };
         for w in &r.warnings[shown.min(r.warnings.len())..] {
-            super::readouts::warning(ui, &format!("warning: {w}"));
+            super::readouts::warning(ui, "warning", &w.to_string());
         }
     }
 
     fn elevation_ui(&mut self, ui: &mut egui::Ui) {
         let Some(s) = &self.shown.solved else { return };
         let (rect, _) = ui.allocate_exact_size(
-            egui::vec2(ui.available_width(), 260.0),
+            egui::vec2(ui.available_width(), super::fill::height(ui, 260.0, 60.0)),
             egui::Sense::hover(),
         );
         bridge_view::draw(
@@ -301,6 +319,11 @@ impl BridgeScene {
             self.exaggeration,
         );
         self.view_rect = Some(rect);
+        // On a projector the view's caption gives the scale; the slider would take a row.
+        if super::lecture::on(ui.ctx()) {
+            self.playback.ui(ui);
+            return;
+        }
         ui.horizontal(|ui| {
             let label = ui
                 .label("exaggeration")
@@ -335,14 +358,22 @@ impl BridgeScene {
             .map_or(s.baseline.absent().to_string(), |b| {
                 mm(&b.peak_girder_displacement_m)
             });
-        ui.label(format!(
-            "{} impacts ({} contacts), max force {:.4e} N; girder peaks {} mm (without pounding {}); {:.1} kJ into the girders' waves; solve {} ({} steps, {:.1}% in contact)",
+        let run = format!(
+            "{} impacts ({} contacts), max force {}; girder peaks {} mm (without pounding {}); {} into the girders' waves",
             r.impacts.len(),
             r.contacts.len(),
-            r.max_pounding_force_n,
+            crate::model::settings::engineering(r.max_pounding_force_n, "N"),
             mm(&r.peak_girder_displacement_m),
             without,
-            r.energy.girder_waves_j * 1e-3,
+            crate::model::settings::engineering(r.energy.girder_waves_j, "J"),
+        );
+        // What the run cost and its error bound are the researcher's, not a class's.
+        if super::lecture::on(ui.ctx()) {
+            ui.label(run);
+            return;
+        }
+        ui.label(format!(
+            "{run}; solve {} ({} steps, {:.1}% in contact)",
             super::ms(self.slot.solve_time.as_secs_f64(), 1),
             r.stats.steps,
             100.0 * r.stats.contact_steps as f64 / r.stats.steps.max(1) as f64,
@@ -365,47 +396,62 @@ impl BridgeScene {
     }
 
     /// Per joint: its kind and place, its gap and the gap it needs (from the run without
-    /// contact), its largest force and opening, and its seat's margin.
+    /// contact), its largest force and opening, and its seat's margin. A projector's narrow
+    /// panel keeps the force, the opening (coloured by the seat's margin) and whether the
+    /// girder fell.
     fn joints_table_ui(&self, ui: &mut egui::Ui) {
         let Some(s) = &self.shown.solved else { return };
         let (r, sc) = (&s.drawing.result, &s.drawing.setup.scenario);
         let seat = sc.seat_length_m;
+        let full = !super::lecture::on(ui.ctx());
+        let headers: &[&str] = if full {
+            &[
+                "joint",
+                "between",
+                "at [m]",
+                "gap [mm]",
+                "gap needed [mm]",
+                "max force [MN]",
+                "max opening [mm]",
+                "seat margin [mm]",
+                "unseated",
+            ]
+        } else {
+            &["joint", "force [MN]", "opening", "unseated"]
+        };
         egui::Grid::new("bridge-joints")
             .striped(true)
-            .num_columns(9)
+            .num_columns(headers.len())
             .show(ui, |ui| {
-                for h in [
-                    "joint",
-                    "between",
-                    "at [m]",
-                    "gap [mm]",
-                    "gap needed [mm]",
-                    "max force [MN]",
-                    "max opening [mm]",
-                    "seat margin [mm]",
-                    "unseated",
-                ] {
-                    ui.strong(h);
+                for h in headers {
+                    ui.strong(*h);
                 }
                 ui.end_row();
                 for (j, joint) in r.joints.iter().enumerate() {
                     ui.label(format!("{j}"));
-                    ui.label(joint.kind());
-                    ui.label(format!("{:.1}", joint.position_m + 0.0));
-                    ui.label(format!("{:.1}", joint.gap_m * 1e3));
-                    let needed = s.baseline.ready().map_or(s.baseline.absent().into(), |b| {
-                        let g = b.max_closing_m[j].max(0.0);
-                        let verdict = if g <= joint.gap_m { "" } else { " (pounds)" };
-                        format!("{:.1}{verdict}", g * 1e3)
-                    });
-                    ui.label(needed);
+                    if full {
+                        ui.label(joint.kind());
+                        ui.label(format!("{:.1}", joint.position_m + 0.0));
+                    }
+                    if full {
+                        ui.label(format!("{:.1}", joint.gap_m * 1e3));
+                        let needed = s.baseline.ready().map_or(s.baseline.absent().into(), |b| {
+                            let g = b.max_closing_m[j].max(0.0);
+                            let verdict = if g <= joint.gap_m { "" } else { " (pounds)" };
+                            format!("{:.1}{verdict}", g * 1e3)
+                        });
+                        ui.label(needed);
+                    }
                     ui.label(format!("{:.2}", r.max_force_by_joint_n[j] * 1e-6));
-                    ui.label(format!("{:.1}", r.max_opening_m[j].max(0.0) * 1e3));
-                    let margin = seat - r.max_opening_m[j].max(0.0);
-                    ui.colored_label(
-                        bridge_view::seat_colour(1.0 - margin / seat, margin < 0.0),
-                        format!("{:.1}", margin * 1e3),
-                    );
+                    let opening = r.max_opening_m[j].max(0.0);
+                    let margin = seat - opening;
+                    let colour = bridge_view::seat_colour(1.0 - margin / seat, margin < 0.0);
+                    if full {
+                        ui.label(format!("{:.1}", opening * 1e3));
+                        ui.colored_label(colour, format!("{:.1}", margin * 1e3));
+                    } else {
+                        ui.colored_label(colour, format!("{:.1} mm", opening * 1e3));
+                    }
                     let when = r.unseating.iter().find(|u| u.joint == j);
                     ui.label(when.map_or("no".into(), |u| format!("at {:.2} s", u.time_s)));
                     ui.end_row();
@@ -417,26 +463,27 @@ impl BridgeScene {
         let Some(s) = &self.shown.solved else { return };
         let count = s.drawing.result.joints.len();
         let t = self.playback.shown_t();
-        let h = 160.0;
         let show = self.visibility.clone();
         // The joints the force and opening plots and the impact list show: one, or all.
         let picks = ["force", "openings", "impacts"]
             .iter()
             .any(|p| show.shows(p));
-        if picks {
+        // A lecture shows every joint: the choice would take a row of the projector's screen.
+        if picks && !super::lecture::on(ui.ctx()) {
             self.joint_choice_ui(ui);
         }
+        let choice = self.joint.filter(|_| !super::lecture::on(ui.ctx()));
         let joints: Vec<usize> = (0..count)
-            .filter(|&j| self.joint.is_none_or(|k| k == j))
+            .filter(|&j| choice.is_none_or(|k| k == j))
             .collect();
         if show.shows("force") {
-            self.force_plot_ui(ui, exporter, &joints, h, t);
+            self.force_plot_ui(ui, exporter, &joints, t);
         }
         if show.shows("openings") {
-            self.openings_plot_ui(ui, exporter, &joints, h, t);
+            self.openings_plot_ui(ui, exporter, &joints, t);
         }
         if show.shows("displacements") {
-            self.girders_plot_ui(ui, exporter, h, t);
+            self.girders_plot_ui(ui, exporter, t);
         }
     }
 
@@ -469,14 +516,7 @@ impl BridgeScene {
         });
     }
 
-    fn force_plot_ui(
-        &mut self,
-        ui: &mut egui::Ui,
-        exporter: &Exporter,
-        joints: &[usize],
-        h: f32,
-        t: f64,
-    ) {
+    fn force_plot_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter, joints: &[usize], t: f64) {
         let Some(s) = &self.shown.solved else { return };
         let r = &s.drawing.result;
         let width = super::lecture::line_width(ui);
@@ -491,16 +531,25 @@ impl BridgeScene {
             .collect();
         let (forces, drawn) = plot_lines(lines, 1e-6, shown, px);
         let top = r.max_pounding_force_n.max(1.0) * 1e-6;
+        let keys: Vec<Key> = joints
+            .iter()
+            .map(|&j| Key::line(named(j), super::legend::okabe_ito(j), false))
+            .collect();
+        super::legend::row(ui, &keys);
+        let h = super::fill::height(ui, 160.0, 70.0);
         let force_plot = Plot::new("bridge-force")
             .height(h)
-            .legend(Legend::default())
             .x_axis_label("time [s]")
-            .y_axis_label("joint force [MN]")
+            .y_axis_label(if super::lecture::on(ui.ctx()) {
+                "force [MN]"
+            } else {
+                "joint force [MN]"
+            })
             .show(ui, |p| {
-                for ((name, _), pts) in forces.iter().zip(drawn) {
-                    p.line(Line::new(name.as_str(), pts).width(width));
+                for (key, pts) in keys.iter().zip(drawn) {
+                    p.line(key.plot_line(pts, width));
                 }
-                p.vline(VLine::new("t", t));
+                p.vline(VLine::new("t", t).color(Color32::GRAY));
                 if let Some((a, b)) = zoom {
                     p.set_plot_bounds(PlotBounds::from_min_max([a, -0.05 * top], [b, 1.1 * top]));
                 }
@@ -536,7 +585,6 @@ impl BridgeScene {
         ui: &mut egui::Ui,
         exporter: &Exporter,
         joints: &[usize],
-        h: f32,
         t: f64,
     ) {
         let Some(s) = &self.shown.solved else { return };
@@ -554,21 +602,32 @@ impl BridgeScene {
             })
             .collect();
         let (openings, drawn) = plot_lines(lines, 1e3, shown, px);
+        let seat_colour = Color32::from_rgb(225, 40, 40);
+        let mut keys: Vec<Key> = joints
+            .iter()
+            .map(|&j| Key::line(format!("joint {j}"), super::legend::okabe_ito(j), false))
+            .collect();
+        keys.push(Key::line("seat length", seat_colour, true));
+        super::legend::row(ui, &keys);
+        let h = super::fill::height(ui, 160.0, 70.0);
         let plot = Plot::new("bridge-openings")
             .height(h)
-            .legend(Legend::default())
             .x_axis_label("time [s]")
-            .y_axis_label("joint opening [mm]")
+            .y_axis_label(if super::lecture::on(ui.ctx()) {
+                "opening [mm]"
+            } else {
+                "joint opening [mm]"
+            })
             .show(ui, |p| {
-                for ((name, _), pts) in openings.iter().zip(drawn) {
-                    p.line(Line::new(name.as_str(), pts).width(width));
+                for (key, pts) in keys.iter().zip(drawn) {
+                    p.line(key.plot_line(pts, width));
                 }
                 p.hline(
                     HLine::new("seat length", seat * 1e3)
-                        .color(Color32::from_rgb(225, 40, 40))
+                        .color(seat_colour)
                         .style(egui_plot::LineStyle::dashed_loose()),
                 );
-                p.vline(VLine::new("t", t));
+                p.vline(VLine::new("t", t).color(Color32::GRAY));
             });
         let b = plot.transform.bounds();
         let mut series = openings;
@@ -586,7 +645,7 @@ impl BridgeScene {
         exporter.buttons(ui, &self.shown_openings, "joint-openings");
     }
 
-    fn girders_plot_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter, h: f32, t: f64) {
+    fn girders_plot_ui(&mut self, ui: &mut egui::Ui, exporter: &Exporter, t: f64) {
         let Some(s) = &self.shown.solved else { return };
         let r = &s.drawing.result;
         let width = super::lecture::line_width(ui);
@@ -606,21 +665,27 @@ impl BridgeScene {
             }
         }
         let (lines, drawn) = plot_lines(sources, 1e3, shown, px);
+        // Each girder keeps its colour; its run without pounding is dashed.
+        let keys: Vec<Key> = lines
+            .iter()
+            .enumerate()
+            .map(|(k, (name, _))| Key::line(name, super::legend::okabe_ito(k % spans), k >= spans))
+            .collect();
+        super::legend::row(ui, &keys);
+        let h = super::fill::height(ui, 160.0, 70.0);
         let plot = Plot::new("bridge-girders")
             .height(h)
-            .legend(Legend::default())
             .x_axis_label("time [s]")
-            .y_axis_label("girder displacement [mm]")
+            .y_axis_label(if super::lecture::on(ui.ctx()) {
+                "girder [mm]"
+            } else {
+                "girder displacement [mm]"
+            })
             .show(ui, |p| {
-                for (k, ((name, _), pts)) in lines.iter().zip(drawn).enumerate() {
-                    let l = Line::new(name.as_str(), pts).width(width);
-                    p.line(if k >= spans {
-                        l.style(egui_plot::LineStyle::dashed_loose())
-                    } else {
-                        l
-                    });
+                for (key, pts) in keys.iter().zip(drawn) {
+                    p.line(key.plot_line(pts, width));
                 }
-                p.vline(VLine::new("t", t));
+                p.vline(VLine::new("t", t).color(Color32::GRAY));
             });
         let b = plot.transform.bounds();
         self.shown_girders = ShownPlot {
@@ -650,45 +715,17 @@ impl BridgeScene {
     fn impacts_ui(&mut self, ui: &mut egui::Ui) {
         let Some(s) = &self.shown.solved else { return };
         let r = &s.drawing.result;
-        let mut clicked = None;
-        ui.label("impacts (click one here or in the force plot to zoom on it):");
-        egui::ScrollArea::vertical()
-            .id_salt("bridge-impacts")
-            .max_height(170.0)
-            .show(ui, |ui| {
-                egui::Grid::new("bridge-impact-grid")
-                    .striped(true)
-                    .num_columns(7)
-                    .show(ui, |ui| {
-                        for h in [
-                            "#",
-                            "joint",
-                            "start [s]",
-                            "duration [ms]",
-                            "peak force [N]",
-                            "approach [m/s]",
-                            "contacts",
-                        ] {
-                            ui.strong(h);
-                        }
-                        ui.end_row();
-                        for (i, e) in r.impacts.iter().enumerate() {
-                            if self.joint.is_some_and(|j| j != e.level) {
-                                continue;
-                            }
-                            if ui.button(format!("{}", i + 1)).clicked() {
-                                clicked = Some(i);
-                            }
-                            ui.label(format!("{}", e.level));
-                            ui.label(format!("{:.4}", e.start_s));
-                            ui.label(format!("{:.3}", e.duration_s() * 1e3));
-                            ui.label(format!("{:.4e}", e.peak_force_n));
-                            ui.label(format!("{:.4}", e.approach_velocity_m_s));
-                            ui.label(format!("{}", e.contacts.len()));
-                            ui.end_row();
-                        }
-                    });
-            });
+        let choice = self.joint.filter(|_| !super::lecture::on(ui.ctx()));
+        let shown: Vec<usize> = (0..r.impacts.len())
+            .filter(|&i| choice.is_none_or(|j| j == r.impacts[i].level))
+            .collect();
+        let clicked = super::impact_list::ui(
+            ui,
+            &r.impacts,
+            &shown,
+            super::impact_list::Place::Joint,
+            &mut self.impact_page,
+        );
         if let Some(i) = clicked {
             self.pick(i);
         }
@@ -740,7 +777,7 @@ impl BridgeScene {
             .fold(0.0, f64::max);
         let margin = (0.5 * e.duration_s()).max(trip);
         let (t_start, t_end) = ((e.start_s - margin).max(0.0), e.end_s + 2.0 * margin);
-        ui.horizontal(|ui| {
+        ui.horizontal_wrapped(|ui| {
             ui.label("deck x-t diagram:");
             ui.selectable_value(&mut self.xt_field, XtShown::Stress, "stress")
                 .on_hover_text("Axial stress: compression blue, tension red");
@@ -763,7 +800,12 @@ impl BridgeScene {
             stress_scale_pa: (e.peak_force_n / area).max(1.0),
             velocity_scale_m_s: e.approach_velocity_m_s.abs().max(1e-3),
         }
-        .show(ui, 280.0, self.playback.shown_t(), self.xt_field);
+        .show(
+            ui,
+            super::fill::height(ui, 280.0, 100.0),
+            self.playback.shown_t(),
+            self.xt_field,
+        );
         if let Some(t) = clicked {
             self.playback.t = t;
             self.playback.playing = false;

@@ -15,7 +15,6 @@ use super::visibility::Visibility;
 use super::worker::SolveSlot;
 use super::xt_view::{XtDiagram, XtOptions, XtSource};
 use crate::io::building_settings::BuildingSetup;
-use crate::model::building::result::BuildingResult;
 use crate::model::motion::G;
 use eframe::egui::{self, Color32};
 use egui_plot::{Plot, PlotBounds, VLine};
@@ -207,7 +206,7 @@ impl BuildingScene {
             .result
             .warnings
         {
-            super::readouts::warning(ui, &format!("warning: {w}"));
+            super::readouts::warning(ui, "warning", &w.to_string());
         }
     }
 
@@ -567,11 +566,13 @@ impl BuildingScene {
             })
         });
         if show.shows("impacts") {
-            let picked = if super::lecture::on(ui.ctx()) {
-                impact_pages_ui(ui, r, &shown, &mut self.impact_page)
-            } else {
-                impact_list_ui(ui, r, &shown)
-            };
+            let picked = super::impact_list::ui(
+                ui,
+                &r.impacts,
+                &shown,
+                super::impact_list::Place::Level,
+                &mut self.impact_page,
+            );
             clicked = clicked.or(picked);
         }
         if let Some(i) = clicked {
@@ -590,109 +591,6 @@ impl BuildingScene {
 fn lecture_record(d: &building_view::BuildingDrawing) -> String {
     let record = d.motion.name.split(" [").next().unwrap_or_default();
     format!("{record}, PGA {:.2} g", d.motion_stats.pga_m_s2 / G)
-}
-
-/// The impact list in a box of its own that scrolls, so the slabs' diagram below stays in
-/// reach; returns the impact clicked.
-fn impact_list_ui(ui: &mut egui::Ui, r: &BuildingResult, shown: &[usize]) -> Option<usize> {
-    ui.label("impacts (click one here or in the force plot to zoom on it):");
-    egui::ScrollArea::vertical()
-        .id_salt("impact-list")
-        .max_height(190.0)
-        .show(ui, |ui| impact_rows_ui(ui, r, shown))
-        .inner
-}
-
-/// The impact list a page at a time, as many rows as the panel holds: on a projector nothing
-/// scrolls out of sight.
-fn impact_pages_ui(
-    ui: &mut egui::Ui,
-    r: &BuildingResult,
-    shown: &[usize],
-    page: &mut usize,
-) -> Option<usize> {
-    // A row's pitch and the page's own rows (its title, the table's header), as measured last
-    // frame; a first guess from the font before that.
-    let measured = egui::Id::unique("impact-page-measure");
-    let guess = ui.text_style_height(&egui::TextStyle::Button) + 2.0 * ui.spacing().item_spacing.y;
-    let (pitch, overhead): (f32, f32) = ui
-        .ctx()
-        .data(|d| d.get_temp(measured))
-        .unwrap_or((guess, 3.0 * guess));
-    let h = super::fill::height(ui, overhead + 4.0 * pitch, overhead + pitch);
-    let rows = (((h - overhead) / pitch).floor() as usize).max(1);
-    let pages = shown.len().div_ceil(rows).max(1);
-    *page = (*page).min(pages - 1);
-    let first = *page * rows;
-    let last = (first + rows).min(shown.len());
-    let top = ui.cursor().min.y;
-    ui.horizontal(|ui| {
-        ui.label(format!(
-            "impacts {}-{last} of {}",
-            (first + 1).min(last),
-            shown.len()
-        ));
-        if ui.add_enabled(*page > 0, egui::Button::new("<")).clicked() {
-            *page -= 1;
-        }
-        if ui
-            .add_enabled(*page + 1 < pages, egui::Button::new(">"))
-            .clicked()
-        {
-            *page += 1;
-        }
-    });
-    let table_top = ui.cursor().min.y;
-    let clicked = impact_rows_ui(ui, r, &shown[first..last]);
-    let (bottom, n) = (ui.cursor().min.y, (last - first) as f32);
-    // The header is a row of the table: n + 1 rows between the table's top and its bottom.
-    let pitch = (bottom - table_top) / (n + 1.0);
-    ui.ctx()
-        .data_mut(|d| d.insert_temp(measured, (pitch, bottom - top - n * pitch)));
-    clicked
-}
-
-/// One row an impact, in an engineer's numbers; returns the impact whose number was clicked.
-/// A projector's narrow panel keeps when, how hard, how fast and where.
-fn impact_rows_ui(ui: &mut egui::Ui, r: &BuildingResult, shown: &[usize]) -> Option<usize> {
-    use crate::model::building::result::ImpactEvent as Impact;
-    use crate::model::settings::engineering;
-    type Column = (&'static str, bool, fn(&Impact) -> String);
-    const COLUMNS: [Column; 7] = [
-        ("start", true, |e| format!("{:.4} s", e.start_s)),
-        ("duration", false, |e| engineering(e.duration_s(), "s")),
-        ("peak force", true, |e| engineering(e.peak_force_n, "N")),
-        ("impulse", false, |e| engineering(e.impulse_ns, "N s")),
-        ("approach", true, |e| {
-            format!("{:.3} m/s", e.approach_velocity_m_s)
-        }),
-        ("contacts", false, |e| e.contacts.len().to_string()),
-        ("level", true, |e| (e.level + 1).to_string()),
-    ];
-    let lecture = super::lecture::on(ui.ctx());
-    let columns: Vec<&Column> = COLUMNS.iter().filter(|c| c.1 || !lecture).collect();
-    let mut clicked = None;
-    egui::Grid::new("impacts")
-        .striped(true)
-        .num_columns(columns.len() + 1)
-        .show(ui, |ui| {
-            ui.strong("#");
-            for c in &columns {
-                ui.strong(c.0);
-            }
-            ui.end_row();
-            for &i in shown {
-                let e = &r.impacts[i];
-                if ui.button(format!("{}", i + 1)).clicked() {
-                    clicked = Some(i);
-                }
-                for c in &columns {
-                    ui.label((c.2)(e));
-                }
-                ui.end_row();
-            }
-        });
-    clicked
 }
 
 /// The first file dropped on the window this frame, if any.

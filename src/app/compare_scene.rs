@@ -418,7 +418,7 @@ fn compare_table(ui: &mut egui::Ui, peers: &[(ModelKind, Solved)]) {
     // the table is read with what its model says about it.
     for (m, s) in peers {
         for w in &s.result.warnings {
-            super::readouts::warning(ui, &format!("{}: {w}", m.name()));
+            super::readouts::warning(ui, m.name(), &w.to_string());
         }
     }
 }

@@ -74,3 +74,13 @@ pub fn height(ui: &egui::Ui, natural: f32, min: f32) -> f32 {
         h
     })
 }
+
+/// Corrects the last view's account: it was given `given` and took `took` (a view that draws
+/// whole rows takes less than its share; the rest is the fixed rows', not its own).
+pub fn took(ctx: &egui::Context, given: f32, took: f32) {
+    ctx.data_mut(|d| {
+        let mut now: Ledger = d.get_temp(id(false)).unwrap_or_default();
+        now.flexible += took - given;
+        d.insert_temp(id(false), now);
+    });
+}

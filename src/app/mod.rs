@@ -22,6 +22,7 @@ mod export;
 mod export_animation;
 mod fill;
 mod hysteresis_view;
+mod impact_list;
 mod impact_params;
 mod impact_scene;
 mod job_error;

@@ -87,13 +87,15 @@ pub fn show(ui: &mut egui::Ui, id: &str, rows: &[Readout]) {
 
 const WARN: Color32 = Color32::from_rgb(220, 140, 40);
 
-/// A warning the model gives about a run. On a projector it keeps its first clause (what
-/// went wrong) and holds the rest (the numbers, what to do) for its tooltip.
-pub fn warning(ui: &mut egui::Ui, text: &str) {
+/// A warning the model gives about a run, under `whose` name ("warning", a model's). On a
+/// projector it keeps its first clause (what went wrong) and holds the rest (the numbers, what
+/// to do) for its tooltip.
+pub fn warning(ui: &mut egui::Ui, whose: &str, text: &str) {
     if !super::lecture::on(ui.ctx()) {
-        ui.colored_label(WARN, text);
+        ui.colored_label(WARN, format!("{whose}: {text}"));
         return;
     }
     let head = text.split([':', ';']).next().unwrap_or(text);
-    ui.colored_label(WARN, head).on_hover_text(text);
+    ui.colored_label(WARN, format!("{whose}: {head}"))
+        .on_hover_text(text);
 }
