@@ -53,6 +53,9 @@ pub(super) struct Storeys {
     by_mode: Vec<Vec<f64>>,
     /// The corrections now [N], and their load on each mode.
     c0: Vec<f64>,
+    /// The largest correction each storey has carried so far [N]: a piece's departure is
+    /// measured against it where the correction is smaller now.
+    c_peak: Vec<f64>,
     pub load0: Vec<f64>,
     /// How fast each mode's load moved over the last step committed [N/s].
     trend: Vec<f64>,
@@ -116,6 +119,7 @@ impl Storeys {
             drift,
             by_mode,
             c0: vec![0.0; n],
+            c_peak: vec![0.0; n],
             load0: vec![0.0; modes],
             trend: vec![0.0; modes],
             load1: vec![0.0; modes],
@@ -348,8 +352,9 @@ impl Storeys {
 
     /// How far the corrections a step's plan reaches at a point `theta` of its way (a length
     /// `len` in) depart from the line between its ends, each storey's departure over
-    /// `allowed` times its force scale (its correction at either end, or the share of its yield
-    /// force it may correct, or of its elastic force where that is less): the largest, where
+    /// `allowed` times its force scale (its correction at either end or the largest it has
+    /// been, or the share of its yield force it may correct, or of its elastic force where that
+    /// is less): the largest, where
     /// storey j stands at the drift and rate `at(j)` there. Infinite where a state is not
     /// finite. The ends' corrections are those [`Storeys::end_loads`] left.
     fn departure(
@@ -376,7 +381,9 @@ impl Storeys {
             let (a, b) = (self.c0[j], c1[j]);
             let line = a + theta * (b - a);
             let own = (1.0 - law.hardening) * law.yield_force_n.min(law.stiffness_n_m * reach);
-            let scale = a.abs().max(b.abs()).max(own);
+            // A correction passing through zero is measured against the largest it has been,
+            // not its value there: a load's error weighs against the loads the storey carries.
+            let scale = a.abs().max(b.abs()).max(own).max(self.c_peak[j]);
             let off = (c - line).abs();
             if off > 0.0 {
                 worst = worst.max(off / (allowed * scale));
@@ -414,6 +421,7 @@ impl Storeys {
             let c = Self::correction(&self.laws[j], &self.state[j]);
             moved |= c != self.c0[j];
             self.c0[j] = c;
+            self.c_peak[j] = self.c_peak[j].max(c.abs());
         }
         // Unmoved corrections keep their loads, to the bit.
         if moved || self.load0.len() != self.by_mode.len() {
@@ -447,6 +455,7 @@ impl Storeys {
             let c = Self::correction(&self.laws[j], &s);
             moved |= c != self.c0[j];
             self.c0[j] = c;
+            self.c_peak[j] = self.c_peak[j].max(c.abs());
         }
         if moved {
             let len = t1 - t0;
