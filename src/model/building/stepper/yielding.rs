@@ -231,6 +231,11 @@ impl Storeys {
         }
     }
 
+    /// Whether the storeys' laws are smooth (Bouc-Wen): their corrections have no corners.
+    pub fn smooth(&self) -> bool {
+        self.laws.first().map(|l| l.kind) == Some(Hysteresis::BoucWen)
+    }
+
     /// How many storeys.
     pub fn count(&self) -> usize {
         self.laws.len()
@@ -536,6 +541,15 @@ impl Storeys {
     }
 }
 
+/// Whether a free step's fixed point, whose last two passes changed its loads by `last` and then
+/// `change`, has settled: the free step takes the loads the last pass made, so what it leaves
+/// is the next pass's change, about `change` times the contraction `change / last` the passes
+/// show, and that is round-off. Only a smooth law's map contracts at the rate its passes show;
+/// a bilinear storey's slope jumps where a pass moves it across its yield.
+fn settled(change: f64, last: f64) -> bool {
+    change <= 0.1 * last && change * change <= 1e-13 * last
+}
+
 /// The first yield of a bilinear storey of `side` strictly inside a step of length `len` from
 /// the augmented modal states `y0` (the planned loads in them), if any: the corner where its
 /// correction starts to move, a jump in the correction's slope that a line across it would
@@ -743,6 +757,7 @@ impl Stepper<'_> {
                     .collect()
             });
             let mut passes = MAX_PASSES + 1;
+            let mut last = f64::INFINITY;
             for pass in 1..=MAX_PASSES {
                 self.initial_on(s, ground, &mut y0);
                 let props = own
@@ -758,10 +773,11 @@ impl Stepper<'_> {
                 let start = |j: usize| (st.state[j].drift_m, st.rate[j]);
                 let change = st.end_loads(end, start, len, &mut load1);
                 st.load1 = load1;
-                if change <= 1e-13 {
+                if change <= 1e-13 || (st.smooth() && settled(change, last)) {
                     passes = pass;
                     break;
                 }
+                last = change;
             }
             most = most.max(passes);
             let st = self.sides[s].storeys.as_mut().expect("checked");
