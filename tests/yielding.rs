@@ -430,3 +430,46 @@ fn a_storey_flowing_the_whole_record_takes_at_most_three_times_the_steps_of_one_
         );
     }
 }
+
+#[test]
+fn the_error_estimate_of_a_multi_storey_bouc_wen_pair_bounds_a_tenfold_refined_run() {
+    // Three storeys beside five, every storey Bouc-Wen at the automatic yield force: contact
+    // steps that take the loads of storeys followed on the trial before, where the modes moved
+    // too little since for following them again to change a load beyond round-off.
+    let m = record(3.0);
+    for contact in [ContactModel::Linear, ContactModel::Hertz] {
+        let setup: BuildingSetup =
+            pounding::io::preset::load("mdof-3-5").expect("the preset loads");
+        let mut sc = setup.scenario;
+        sc.contact = contact;
+        for b in [&mut sc.left, &mut sc.right] {
+            b.hysteresis = Hysteresis::BoucWen;
+            b.yield_forces_n = None;
+        }
+        let r = run(&sc, &m);
+        assert!(r.stats.contact_steps > 0, "{contact:?}");
+        assert!(r.hysteretic_energy_j.iter().flatten().any(|&e| e > 0.0));
+        let est = estimate_error(&sc, &m, &r).expect("estimate");
+        let truth = run(&refined(&sc, 10.0), &m);
+        let force = rel(r.max_pounding_force_n, truth.max_pounding_force_n);
+        assert!(
+            force <= est.max_force.max(1e-12),
+            "{contact:?}: max force error {force:e} over the bound {:e}",
+            est.max_force
+        );
+        for s in 0..2 {
+            for (floor, (a, b)) in r.peak_floor_displacement_m[s]
+                .iter()
+                .zip(&truth.peak_floor_displacement_m[s])
+                .enumerate()
+            {
+                let peak = rel(*a, *b);
+                assert!(
+                    peak <= est.peak_displacement.max(1e-12),
+                    "{contact:?} side {s} floor {floor}: peak error {peak:e} over the bound {:e}",
+                    est.peak_displacement
+                );
+            }
+        }
+    }
+}

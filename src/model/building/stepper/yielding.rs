@@ -73,6 +73,9 @@ pub(super) struct Storeys {
     synced: [Vec<f64>; 2],
     /// Each storey's drift per unit of modal displacement at most: the length of its row.
     reach: Vec<f64>,
+    /// How far a mode's load from the corrections can move per unit of modal displacement at
+    /// most, the largest over the modes: a correction's slope is within (1 - b) k of its drift.
+    load_reach: f64,
     /// Buffers a step's planning reuses: the modes' augmented states, their ends, and the
     /// corrections at the end (a fine step is planned hundreds of thousands of times a run).
     plan: Plan,
@@ -103,14 +106,25 @@ impl Storeys {
             })
             .collect();
         let modes = shapes.len();
-        let by_mode = (0..modes)
+        let by_mode: Vec<Vec<f64>> = (0..modes)
             .map(|k| drift.iter().map(|d| d[k]).collect())
             .collect();
         let reach = drift
             .iter()
             .map(|d| d.iter().map(|x| x * x).sum::<f64>().sqrt())
             .collect();
+        let load_reach = by_mode
+            .iter()
+            .map(|d| {
+                d.iter()
+                    .zip(&laws)
+                    .zip(&reach)
+                    .map(|((x, l), r)| x.abs() * (1.0 - l.hardening) * l.stiffness_n_m * r)
+                    .sum::<f64>()
+            })
+            .fold(0.0, f64::max);
         Storeys {
+            load_reach,
             stale: false,
             synced: [Vec::new(), Vec::new()],
             reach,
@@ -234,6 +248,18 @@ impl Storeys {
     /// Whether the storeys' laws are smooth (Bouc-Wen): their corrections have no corners.
     pub fn smooth(&self) -> bool {
         self.laws.first().map(|l| l.kind) == Some(Hysteresis::BoucWen)
+    }
+
+    /// Whether loads `loads`, made by following the storeys over a contact step, are settled
+    /// for a trial that moved the modes `moved` (in norm) from the one they were followed on:
+    /// following them again would move no load by more than 1e-13 of the largest. Bouc-Wen
+    /// sides only: a bilinear side's contact steps are mostly quiet, where no pass follows it.
+    pub fn settled_by(&self, moved: f64, loads: &[f64]) -> bool {
+        let scale = loads.iter().fold(0.0f64, |m, l| m.max(l.abs()));
+        // A storey's drift moves by its row's length times `moved`; where its path turns inside
+        // the step, the turn moves by at most 1 + 8/27 times that (the cubic's rate at the end
+        // moves by twice the drift over the step) and counts on both legs: four times in all.
+        self.smooth() && scale > 0.0 && 4.0 * self.load_reach * moved <= 1e-13 * scale
     }
 
     /// How many storeys.
