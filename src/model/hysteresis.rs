@@ -198,9 +198,11 @@ impl StoreyLaw {
             return;
         }
         let uy = self.yield_drift_m();
+        // One division: a contact step follows every storey of a tall side on every pass.
+        let per_uy = 1.0 / uy;
         let dir = du_total.signum();
-        let mut x = du_total.abs() / uy;
-        let mut w = (dir * s.inner_m / uy).clamp(-1.0, 1.0);
+        let mut x = du_total.abs() * per_uy;
+        let mut w = (dir * s.inner_m * per_uy).clamp(-1.0, 1.0);
         if w < 0.0 {
             let back = x.min(-w);
             w += back;
@@ -214,7 +216,7 @@ impl StoreyLaw {
             w = w.max(0.0);
         }
         let n = self.bouc_wen_n;
-        let (w1, dissipated) = if x <= 1.0 / (16.0 * n.max(1.0)) {
+        let (w1, dissipated) = if 16.0 * n.max(1.0) * x <= 1.0 {
             short_loading(w, x, n)
         } else {
             loading_branch(w, x, n)

@@ -210,7 +210,8 @@ impl Building {
     ///
     /// A tall building's are remembered for the last few buildings asked for: a run, its error
     /// estimate's companion, the run without contact and the window's next change ask for the
-    /// same buildings, and 100 storeys take 3e7 instructions each time. The modes are a function
+    /// same buildings, and a tall building's eigenproblem is the costliest part of setting up
+    /// a run. The modes are a function
     /// of the masses, the stiffnesses and the damping alone, so a remembered answer is the one
     /// computing it again would give, bit for bit.
     pub fn modes(&self) -> Modes {

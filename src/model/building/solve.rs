@@ -142,12 +142,9 @@ fn plan(
     // A free stretch is checked every 2.4 / w_max at most: between two checks the cubic through
     // them is then within (2.4^4 / 384) of the motion's amplitude (a part in 12), so that a check
     // clears all but the parts that come close to the gap or to a peak, and those are halved.
-    // Checks every 0.3 / w_max (a part in 20 000) cleared more of each stretch but took more
-    // checks: 6.22e8 instructions for `pounding gaps` over 20 records (mdof-3-5) against 4.95e8
-    // at 1.2 / w_max, when a stretch was a free step. Over a whole sample of the record, 2.4
-    // takes mdof-3-5's command from 3.117e8 to 3.071e8 and mdof-unequal's from 1.770e8 to
-    // 1.708e8 (0.6: 3.168e8; 5 and more as 2.4: its stretch is then one check); what a run finds
-    // is the same, bit for bit.
+    // Denser checks clear more of each stretch but cost more checks than they save; sparser
+    // ones leave whole stretches to be halved. What a run finds is the same whatever the
+    // spacing, bit for bit: only the bounds' work changes.
     let w_max = modes
         .iter()
         .flat_map(|m| m.omega_rad_s.iter())

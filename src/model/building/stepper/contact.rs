@@ -80,6 +80,8 @@ pub(super) struct Scratch {
     /// The trial's storeys were followed to its end ([`Stepper::contact_end_loads`]) with the
     /// modes it moved: its commit takes their ends as they are.
     followed: bool,
+    /// Each side's dq of the trial whose storeys were last followed.
+    followed_dq: [Vec<f64>; 2],
     /// Per point, its slabs' predictions for the step, made by the trial, read by the commit
     /// (a live slab's, of every point the step reads: a point far out of reach has no live
     /// slab).
@@ -491,6 +493,13 @@ impl Stepper<'_> {
                 cs.quiet = true;
                 return;
             }
+            if pass > 0 && self.trial_is_settled(cs) {
+                cs.followed = true;
+                break;
+            }
+            for (keep, dq) in cs.followed_dq.iter_mut().zip(&cs.trial.dq) {
+                keep.clone_from(dq);
+            }
             let mut pseudo1 = std::mem::take(&mut cs.pseudo1);
             let change = self.contact_end_loads(&cs.trial.dq, hh, &mut pseudo1);
             cs.pseudo1 = pseudo1;
@@ -499,6 +508,25 @@ impl Stepper<'_> {
                 break;
             }
         }
+    }
+
+    /// Whether the trial just made, with the loads the last pass's storeys left, moved the modes
+    /// so little from the trial those storeys followed that following them again would change
+    /// the loads by round-off ([`Storeys::settled_by`](super::yielding::Storeys::settled_by)):
+    /// its commit takes that pass's ends, whose loads it was made with.
+    fn trial_is_settled(&self, cs: &Scratch) -> bool {
+        (0..2).all(|s| {
+            let Some(st) = self.sides[s].storeys.as_ref() else {
+                return true;
+            };
+            let moved = cs.trial.dq[s]
+                .iter()
+                .zip(&cs.followed_dq[s])
+                .map(|(a, b)| (a - b) * (a - b))
+                .sum::<f64>()
+                .sqrt();
+            st.settled_by(moved, &cs.pseudo1[s])
+        })
     }
 
     /// Whether the trial just made, with the corrections as they are, leaves every yielding

@@ -282,8 +282,7 @@ impl Stepper<'_> {
     /// mode's size over the whole stretch, what it must be checked for at all (the root of its
     /// halving): a point whose closing motion cannot reach the gap or its largest value, a signal
     /// that cannot reach its peak, are left alone for the whole stretch.
-    // Once a stretch, out of line: inlined, it weighs on the loop every step runs through
-    // (-5e6 instructions over `pounding gaps` on paper-buildings' 20 records).
+    // Once a stretch, out of line: inlined, it weighs on the loop every step runs through.
     #[inline(never)]
     fn prepare(&mut self, w: &mut Scratch, t0: f64, len: usize) {
         let span = len as f64 * self.grid.h;
@@ -791,8 +790,8 @@ impl Stepper<'_> {
     }
 
     /// A point's closing motion u_left - u_right and its rate, from modal states. Inlined where
-    /// it is read: out of line (as the compiler left it once a tall side's sums took a branch
-    /// of their own), `pounding gaps` took 5% more instructions.
+    /// it is read: the compiler leaves it out of line where a tall side's sums take a branch of
+    /// their own, and the call then weighs on every check of a free stretch.
     #[inline(always)]
     pub(super) fn point_state(&self, p: &Point, q: [&[f64]; 2], v: [&[f64]; 2]) -> (f64, f64) {
         (

@@ -321,7 +321,7 @@ fn fixed_signed(seed: u64, n: usize) -> Vec<f64> {
 }
 
 /// [`lanes::dot`] out of the few modes' way: the loops that read a few modes' points keep
-/// their registers (the paper's pair took 1% more instructions with the call inlined).
+/// their registers, which the call inlined would take.
 #[cold]
 #[inline(never)]
 fn dot_tall(a: &[f64], b: &[f64]) -> f64 {
@@ -372,8 +372,8 @@ pub(super) struct Stepper<'a> {
     /// inside a step).
     n: usize,
     /// n as a float, kept equal to it (by [`Stepper::at_step`], and by a contact step's advance
-    /// of one): the time is read at every stage, and an unsigned integer's conversion takes
-    /// several instructions on x86-64.
+    /// of one): the time is read at every stage, and an unsigned integer's conversion is a
+    /// sequence of operations on x86-64, not one.
     n_f: f64,
     offset: f64,
     pub ledger: Ledger,

@@ -53,6 +53,9 @@ pub(super) struct Storeys {
     by_mode: Vec<Vec<f64>>,
     /// The corrections now [N], and their load on each mode.
     c0: Vec<f64>,
+    /// The largest correction each storey has carried so far [N]: a piece's departure is
+    /// measured against it where the correction is smaller now.
+    c_peak: Vec<f64>,
     pub load0: Vec<f64>,
     /// How fast each mode's load moved over the last step committed [N/s].
     trend: Vec<f64>,
@@ -70,6 +73,9 @@ pub(super) struct Storeys {
     synced: [Vec<f64>; 2],
     /// Each storey's drift per unit of modal displacement at most: the length of its row.
     reach: Vec<f64>,
+    /// How far a mode's load from the corrections can move per unit of modal displacement at
+    /// most, the largest over the modes: a correction's slope is within (1 - b) k of its drift.
+    load_reach: f64,
     /// Buffers a step's planning reuses: the modes' augmented states, their ends, and the
     /// corrections at the end (a fine step is planned hundreds of thousands of times a run).
     plan: Plan,
@@ -100,14 +106,25 @@ impl Storeys {
             })
             .collect();
         let modes = shapes.len();
-        let by_mode = (0..modes)
+        let by_mode: Vec<Vec<f64>> = (0..modes)
             .map(|k| drift.iter().map(|d| d[k]).collect())
             .collect();
         let reach = drift
             .iter()
             .map(|d| d.iter().map(|x| x * x).sum::<f64>().sqrt())
             .collect();
+        let load_reach = by_mode
+            .iter()
+            .map(|d| {
+                d.iter()
+                    .zip(&laws)
+                    .zip(&reach)
+                    .map(|((x, l), r)| x.abs() * (1.0 - l.hardening) * l.stiffness_n_m * r)
+                    .sum::<f64>()
+            })
+            .fold(0.0, f64::max);
         Storeys {
+            load_reach,
             stale: false,
             synced: [Vec::new(), Vec::new()],
             reach,
@@ -116,6 +133,7 @@ impl Storeys {
             drift,
             by_mode,
             c0: vec![0.0; n],
+            c_peak: vec![0.0; n],
             load0: vec![0.0; modes],
             trend: vec![0.0; modes],
             load1: vec![0.0; modes],
@@ -225,6 +243,23 @@ impl Storeys {
         } else {
             out.extend(self.load0.iter().zip(&self.trend).map(|(l, r)| l + r * len));
         }
+    }
+
+    /// Whether the storeys' laws are smooth (Bouc-Wen): their corrections have no corners.
+    pub fn smooth(&self) -> bool {
+        self.laws.first().map(|l| l.kind) == Some(Hysteresis::BoucWen)
+    }
+
+    /// Whether loads `loads`, made by following the storeys over a contact step, are settled
+    /// for a trial that moved the modes `moved` (in norm) from the one they were followed on:
+    /// following them again would move no load by more than 1e-13 of the largest. Bouc-Wen
+    /// sides only: a bilinear side's contact steps are mostly quiet, where no pass follows it.
+    pub fn settled_by(&self, moved: f64, loads: &[f64]) -> bool {
+        let scale = loads.iter().fold(0.0f64, |m, l| m.max(l.abs()));
+        // A storey's drift moves by its row's length times `moved`; where its path turns inside
+        // the step, the turn moves by at most 1 + 8/27 times that (the cubic's rate at the end
+        // moves by twice the drift over the step) and counts on both legs: four times in all.
+        self.smooth() && scale > 0.0 && 4.0 * self.load_reach * moved <= 1e-13 * scale
     }
 
     /// How many storeys.
@@ -348,8 +383,9 @@ impl Storeys {
 
     /// How far the corrections a step's plan reaches at a point `theta` of its way (a length
     /// `len` in) depart from the line between its ends, each storey's departure over
-    /// `allowed` times its force scale (its correction at either end, or the share of its yield
-    /// force it may correct, or of its elastic force where that is less): the largest, where
+    /// `allowed` times its force scale (its correction at either end or the largest it has
+    /// been, or the share of its yield force it may correct, or of its elastic force where that
+    /// is less): the largest, where
     /// storey j stands at the drift and rate `at(j)` there. Infinite where a state is not
     /// finite. The ends' corrections are those [`Storeys::end_loads`] left.
     fn departure(
@@ -376,7 +412,9 @@ impl Storeys {
             let (a, b) = (self.c0[j], c1[j]);
             let line = a + theta * (b - a);
             let own = (1.0 - law.hardening) * law.yield_force_n.min(law.stiffness_n_m * reach);
-            let scale = a.abs().max(b.abs()).max(own);
+            // A correction passing through zero is measured against the largest it has been,
+            // not its value there: a load's error weighs against the loads the storey carries.
+            let scale = a.abs().max(b.abs()).max(own).max(self.c_peak[j]);
             let off = (c - line).abs();
             if off > 0.0 {
                 worst = worst.max(off / (allowed * scale));
@@ -414,6 +452,7 @@ impl Storeys {
             let c = Self::correction(&self.laws[j], &self.state[j]);
             moved |= c != self.c0[j];
             self.c0[j] = c;
+            self.c_peak[j] = self.c_peak[j].max(c.abs());
         }
         // Unmoved corrections keep their loads, to the bit.
         if moved || self.load0.len() != self.by_mode.len() {
@@ -447,6 +486,7 @@ impl Storeys {
             let c = Self::correction(&self.laws[j], &s);
             moved |= c != self.c0[j];
             self.c0[j] = c;
+            self.c_peak[j] = self.c_peak[j].max(c.abs());
         }
         if moved {
             let len = t1 - t0;
@@ -525,6 +565,15 @@ impl Storeys {
             })
             .sum()
     }
+}
+
+/// Whether a free step's fixed point, whose last two passes changed its loads by `last` and then
+/// `change`, has settled: the free step takes the loads the last pass made, so what it leaves
+/// is the next pass's change, about `change` times the contraction `change / last` the passes
+/// show, and that is round-off. Only a smooth law's map contracts at the rate its passes show;
+/// a bilinear storey's slope jumps where a pass moves it across its yield.
+fn settled(change: f64, last: f64) -> bool {
+    change <= 0.1 * last && change * change <= 1e-13 * last
 }
 
 /// The first yield of a bilinear storey of `side` strictly inside a step of length `len` from
@@ -734,6 +783,7 @@ impl Stepper<'_> {
                     .collect()
             });
             let mut passes = MAX_PASSES + 1;
+            let mut last = f64::INFINITY;
             for pass in 1..=MAX_PASSES {
                 self.initial_on(s, ground, &mut y0);
                 let props = own
@@ -749,10 +799,11 @@ impl Stepper<'_> {
                 let start = |j: usize| (st.state[j].drift_m, st.rate[j]);
                 let change = st.end_loads(end, start, len, &mut load1);
                 st.load1 = load1;
-                if change <= 1e-13 {
+                if change <= 1e-13 || (st.smooth() && settled(change, last)) {
                     passes = pass;
                     break;
                 }
+                last = change;
             }
             most = most.max(passes);
             let st = self.sides[s].storeys.as_mut().expect("checked");
