@@ -21,8 +21,8 @@ fn row(
 }
 
 /// The most storeys a building may have: the panel offers what the command line and a preset
-/// take. (It offered 20, and egui's field clamps the value it shows: a preset of 100 storeys
-/// opened as 20, its per-storey lists cut short.)
+/// take, since egui's field clamps the value it shows (a smaller limit would open a taller
+/// preset cut short, its per-storey lists with it).
 const MAX_STOREYS: usize = match setting::STOREYS.kind {
     crate::model::settings::Kind::Count { max, .. } => max as usize,
     _ => 1,
