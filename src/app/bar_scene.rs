@@ -7,6 +7,7 @@ use super::export::{Exporter, ShownPlot};
 use super::impact_scene::{
     ImpactCore, ImpactScene, context_of, force_line, plot_height, series, xt_diagram, xt_title,
 };
+use super::legend::Key;
 use super::worker::SolveSlot;
 use crate::io::settings::ImpactSetup;
 use crate::lesson::Context;
@@ -17,7 +18,7 @@ use crate::model::scenario::Reading;
 use crate::model::xt::XtField;
 use crate::render::bars::XtShown;
 use eframe::egui::{self, Color32};
-use egui_plot::{Legend, Line, Plot, VLine};
+use egui_plot::{Plot, VLine};
 use std::time::Duration;
 
 /// The model solved, its result, and the result's error estimate (one more, coarser solve).
@@ -54,7 +55,7 @@ impl BarScene {
     pub fn new(ctx: &egui::Context, setup: ImpactSetup) -> Self {
         let waker = ctx.clone();
         let mut s = BarScene {
-            core: ImpactCore::new(setup),
+            core: ImpactCore::new(setup, "bar-plots"),
             slot: SolveSlot::new(run_job, move || waker.request_repaint()),
             solved: None,
             fresh: false,
@@ -224,7 +225,13 @@ impl BarScene {
             core.force_plot_ui(ui, exporter, plot_height(ui), t_ms, vec![line], title);
         }
         if show.shows("approach") {
-            self.shown_approach = approach_ui(ui, &solved.result, plot_height(ui), t_ms, model);
+            self.shown_approach = approach_ui(
+                ui,
+                &solved.result,
+                (plot_height(ui), t_ms),
+                model,
+                core.plot_link,
+            );
             exporter.buttons(ui, &self.shown_approach, "approach");
         }
         // Where the energy goes, once the run of the model chosen has landed.
@@ -270,22 +277,23 @@ impl ImpactScene for BarScene {
 fn approach_ui(
     ui: &mut egui::Ui,
     r: &ImpactResult,
-    h: f32,
-    t_ms: f64,
+    (h, t_ms): (f32, f64),
     model: ModelKind,
+    link: egui::Id,
 ) -> ShownPlot {
     let pts = series(r, &|j| r.approach_m[j] * 1e6);
     let width = super::lecture::line_width(ui);
+    let key = Key::line("approach", super::legend::okabe_ito(0), false);
+    super::legend::row(ui, std::slice::from_ref(&key));
     let response = Plot::new("approach")
         .y_grid_spacer(super::plot_view::nice_marks)
         .height(h)
-        .legend(Legend::default())
         .x_axis_label("time [ms]")
         .y_axis_label("approach [um]")
-        .link_axis(egui::Id::unique("bar-plots"), [true, false])
+        .link_axis(link, [true, false])
         .show(ui, |p| {
-            p.line(Line::new("approach", pts.clone()).width(width));
-            p.vline(VLine::new("t", t_ms));
+            p.line(key.plot_line(pts.clone(), width));
+            p.vline(VLine::new("t", t_ms).color(egui::Color32::GRAY));
         });
     let b = response.transform.bounds();
     ShownPlot {

@@ -62,21 +62,7 @@ fn building_ui(ui: &mut egui::Ui, fields: &mut Fields, setup: &mut BuildingSetup
                 .labelled_by(label)
                 .changed()
         }) {
-            for list in [
-                &mut b.masses_kg,
-                &mut b.stiffnesses_n_m,
-                &mut b.heights_m,
-                &mut b.slab_lengths_m,
-                &mut b.slab_widths_m,
-                &mut b.slab_thicknesses_m,
-                &mut b.slab_youngs_pa,
-            ] {
-                if list.len() > 1 {
-                    let last = *list.last().expect("not empty");
-                    list.resize(n, last);
-                }
-            }
-            b.storeys = n;
+            b.set_storeys(n);
         }
         let periods = b.modes().periods_s();
         let shown: Vec<String> = periods.iter().take(3).map(|t| format!("{t:.3}")).collect();

@@ -66,7 +66,7 @@ impl CompareScene {
     pub fn new(ctx: &egui::Context, setup: ImpactSetup) -> Self {
         let waker = ctx.clone();
         let mut s = CompareScene {
-            core: ImpactCore::new(setup),
+            core: ImpactCore::new(setup, "compare-plots"),
             slot: SolveSlot::new(run_job, move || waker.request_repaint()),
             models: COMPARED.to_vec(),
             runs: vec![],

@@ -1,5 +1,5 @@
-//! Views that take the space there is: a scene's plots and diagrams share the height its fixed
-//! rows (readouts, tables, controls, legends) leave in the central panel. The fixed rows are
+//! Views that take the space there is, in lecture mode: a scene's plots and diagrams share the
+//! height its fixed rows (readouts, tables, controls, legends) leave in the central panel. The fixed rows are
 //! measured the frame before, so a step's views settle to fill the panel within a frame.
 
 use eframe::egui;
@@ -49,14 +49,13 @@ pub fn end(ctx: &egui::Context, used: f32) {
 /// proportion to its `natural` height (a diagram takes more than a strip of bars), at least
 /// `min`; `natural` until there is a frame to go by.
 ///
-/// Only a lecture's screen shrinks a view below its natural height (down to `min`): everything
-/// must fit the projector. The window otherwise grows views into spare room and scrolls.
+/// Only a lecture's screen is shared out, down to `min`: everything must fit the projector.
+/// The window otherwise draws each view at its natural height and scrolls, the same whatever
+/// was on screen before.
 pub fn height(ui: &egui::Ui, natural: f32, min: f32) -> f32 {
-    let min = if super::lecture::on(ui.ctx()) {
-        min
-    } else {
-        natural
-    };
+    if !super::lecture::on(ui.ctx()) {
+        return natural;
+    }
     ui.ctx().data_mut(|d| {
         let last: Option<Ledger> = d.get_temp(id(true));
         let mut now: Ledger = d.get_temp(id(false)).unwrap_or_default();

@@ -29,12 +29,15 @@ pub struct ImpactCore {
     /// The panels drawn (a lesson step's, or all).
     pub visibility: Visibility,
     pub(super) shown_force: ShownPlot,
+    /// The scene's plots pan and zoom together in time, and only they: the scenes' own links.
+    pub(super) plot_link: egui::Id,
     pub(super) shown_energy: ShownPlot,
 }
 
 impl ImpactCore {
-    pub fn new(setup: ImpactSetup) -> Self {
+    pub fn new(setup: ImpactSetup, plot_link: &'static str) -> Self {
         ImpactCore {
+            plot_link: egui::Id::unique(plot_link),
             setup,
             fields: Fields::default(),
             xt: XtOptions::default(),
@@ -79,7 +82,7 @@ impl ImpactCore {
             .height(h)
             .x_axis_label("time [ms]")
             .y_axis_label("force [kN]")
-            .link_axis(egui::Id::unique("bar-plots"), [true, false])
+            .link_axis(self.plot_link, [true, false])
             .show(ui, |p| {
                 // Sears on top: the curves that lie on it (FE, a stiff contact's wave theory)
                 // are dashed beneath it.
@@ -157,9 +160,14 @@ pub(super) fn context_of(runs: &[(ModelKind, &Solved)]) -> Option<Context> {
     Some(Context::impact(&first.setup, &results))
 }
 
-/// The height of one of the stacked plots: its share of the panel.
+/// The height of one of the stacked plots: its share of a lecture's panel, or half of what is
+/// left below it in the window.
 pub(super) fn plot_height(ui: &egui::Ui) -> f32 {
-    super::fill::height(ui, 200.0, 80.0)
+    if super::lecture::on(ui.ctx()) {
+        super::fill::height(ui, 200.0, 80.0)
+    } else {
+        ((ui.available_height() - 160.0) / 2.0).clamp(120.0, 260.0)
+    }
 }
 
 /// A run's x-t diagram title: its waves, or for a lumped model its uniform stress.

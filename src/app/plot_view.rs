@@ -2,10 +2,11 @@
 //! export. A geometric axis is drawn against log10 of the value, with the values on its ticks.
 
 use super::export::ShownPlot;
+use super::legend::Key;
 use crate::export::plot::LinePlot;
 use crate::export::plot::{log_axis_pays, tick_label};
 use eframe::egui;
-use egui_plot::{GridInput, GridMark, Legend, Line, Plot, Points};
+use egui_plot::{GridInput, GridMark, Plot, Points};
 
 /// Grid marks of a log10 axis: every decade (labelled first), 2 and 5 times it, then the other
 /// digits, so a decade a few hundred points wide reads 1, 2, 5, 10 and a wider one each digit.
@@ -122,9 +123,16 @@ pub fn draw(
         }
     };
     let width = super::lecture::line_width(ui);
+    // A model's series in its palette colour, any other in the palette's order; the legend a
+    // row above the data.
+    let keys: Vec<Key> = series
+        .iter()
+        .enumerate()
+        .map(|(k, (name, _))| Key::of_series(name, k))
+        .collect();
+    super::legend::row(ui, &keys);
     let mut p = Plot::new(id)
         .height(height)
-        .legend(Legend::default())
         .x_axis_label(label(&plot.x_label, log_x))
         .y_axis_label(label(&plot.y_label, log_y));
     if log_x {
@@ -143,15 +151,15 @@ pub fn draw(
         p = p.link_axis(link, [true, false]);
     }
     let response = p.show(ui, |p| {
-        for (name, pts) in &series {
+        for (key, (name, pts)) in keys.iter().zip(&series) {
             // Wave theory's jumps (repeated x): no band aggregation, which would fill them.
-            p.line(
-                Line::new(name.as_str(), pts.clone())
-                    .allow_band(false)
-                    .width(width),
-            );
+            p.line(key.plot_line(pts.clone(), width).allow_band(false));
             if plot.markers {
-                p.points(Points::new(name.as_str(), pts.clone()).radius(2.5));
+                p.points(
+                    Points::new(name.as_str(), pts.clone())
+                        .radius(2.5)
+                        .color(key.colour),
+                );
             }
         }
     });

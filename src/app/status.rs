@@ -21,7 +21,7 @@ impl PoundingApp {
         }
         let frame = self.panel_frame(egui::Frame::side_top_panel(ui.style()));
         egui::Panel::bottom("status").frame(frame).show(ui, |ui| {
-            ui.horizontal_wrapped(|ui| {
+            ui.horizontal(|ui| {
                 if timings {
                     self.timings_ui(ui);
                 }

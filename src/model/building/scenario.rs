@@ -116,6 +116,29 @@ pub struct Building {
 pub const AUTO_YIELD_DRIFT_RATIO: f64 = 0.005;
 
 impl Building {
+    /// Gives the building `n` storeys. A list with a value for each storey keeps its top
+    /// storey's value for the storeys added and drops those removed; a list of one value for
+    /// every storey stays as it is.
+    pub fn set_storeys(&mut self, n: usize) {
+        let each = [
+            &mut self.masses_kg,
+            &mut self.stiffnesses_n_m,
+            &mut self.heights_m,
+            &mut self.slab_lengths_m,
+            &mut self.slab_widths_m,
+            &mut self.slab_thicknesses_m,
+            &mut self.slab_youngs_pa,
+        ];
+        for list in each.into_iter().chain(self.yield_forces_n.as_mut()) {
+            if list.len() > 1
+                && let Some(&top) = list.last()
+            {
+                list.resize(n, top);
+            }
+        }
+        self.storeys = n;
+    }
+
     /// A one-storey building with the given mass, stiffness, height and slab, 5% modal damping.
     pub fn one_storey(mass_kg: f64, stiffness_n_m: f64, height_m: f64, slab: Slab) -> Self {
         Building {
@@ -622,6 +645,40 @@ fn spread_of_modes(side: usize, b: &Building) -> Result<(), InputError> {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn a_new_storey_count_resizes_each_per_storey_list_and_leaves_single_values() {
+        let mut b = super::Building::one_storey(
+            1e5,
+            1e7,
+            3.0,
+            super::Slab {
+                length_m: 10.0,
+                width_m: 1.0,
+                thickness_m: 0.2,
+                youngs_modulus_pa: 3e10,
+            },
+        );
+        b.masses_kg = vec![1e5, 2e5, 3e5];
+        b.yield_forces_n = Some(vec![4e5, 5e5, 6e5]);
+        b.storeys = 3;
+        b.set_storeys(5);
+        assert_eq!(b.storeys, 5);
+        assert_eq!(b.masses_kg, [1e5, 2e5, 3e5, 3e5, 3e5]);
+        assert_eq!(
+            b.yield_forces_n.as_deref(),
+            Some(&[4e5, 5e5, 6e5, 6e5, 6e5][..])
+        );
+        assert_eq!(
+            b.stiffnesses_n_m,
+            [1e7],
+            "one value for every storey stays one"
+        );
+        b.set_storeys(2);
+        assert_eq!(b.masses_kg, [1e5, 2e5]);
+        assert_eq!(b.yield_forces_n.as_deref(), Some(&[4e5, 5e5][..]));
+        assert!(b.validate(0).is_ok(), "{:?}", b.validate(0));
+    }
+
     use super::*;
 
     /// A building of `storeys` storeys of the paper's left building's values.
