@@ -6,7 +6,7 @@
 
 use eframe::egui;
 use egui_kittest::Harness;
-use egui_kittest::kittest::Queryable;
+use egui_kittest::kittest::{NodeT, Queryable};
 use pounding::app::{HIDE_TIMINGS, Launch, PoundingApp, SceneKind};
 use pounding::lesson::{self, LessonScene};
 
@@ -345,4 +345,125 @@ fn a_launch_time_holds_a_bridge_lesson_steps_animation_there_paused() {
     go_to(&mut h, 3, "waves-in-a-bridge step 4");
     h.run_steps(5);
     assert_eq!(h.state().animation_time(), 2.5);
+}
+
+/// The locked settings of `step` and their values now.
+fn locked_values(
+    h: &Harness<'static, PoundingApp>,
+    step: &lesson::Step,
+) -> Vec<(String, Option<String>)> {
+    pounding::model::settings::concrete_keys(step.scene.settings().0)
+        .into_iter()
+        .filter(|key| {
+            !step
+                .unlock
+                .iter()
+                .any(|u| key == u || key.starts_with(&format!("{u}.")))
+        })
+        .map(|key| {
+            let v = h.state().lesson_setting(&key);
+            (key, v)
+        })
+        .collect()
+}
+
+/// The lesson's own controls (they turn steps, answer, leave), the menus (they open popups;
+/// their items are tried by the tabs-and-presets test) and the buttons that write files (the
+/// exports, Save): every other widget is tried.
+const LESSON_CONTROLS: [&str; 16] = [
+    "png",
+    "svg",
+    "csv",
+    "Save",
+    "Open",
+    "File",
+    "Lessons",
+    "View",
+    "Leave",
+    "< Back",
+    "Next >",
+    "Reset",
+    "Reset step",
+    "Hint",
+    "Answer",
+    "On to the task >",
+];
+
+#[test]
+fn every_widget_of_every_step_leaves_the_scene_and_the_locked_settings_as_they_were() {
+    if common::adapter_or_skip().is_none() {
+        return;
+    }
+    use egui::accesskit::Role;
+    let tried = [
+        Role::Button,
+        Role::CheckBox,
+        Role::RadioButton,
+        Role::ComboBox,
+        Role::Slider,
+        Role::SpinButton,
+        Role::DisclosureTriangle,
+    ];
+    for name in lesson::builtin_names() {
+        let lesson = lesson::builtin(name).expect("shipped lessons parse");
+        let mut h = lesson_window(name, egui::vec2(1600.0, 1000.0));
+        for (k, step) in lesson.steps.iter().enumerate() {
+            let at = format!("{name} step {}", k + 1);
+            go_to(&mut h, k, &at);
+            if let Some(p) = &step.prediction {
+                common::answer(&mut h, p, &at);
+            }
+            let locked = locked_values(&h, step);
+            let widgets: Vec<(Role, String)> = h
+                .root()
+                .children_recursive()
+                .filter_map(|n| {
+                    let a = n.accesskit_node();
+                    let label = a.label()?;
+                    (tried.contains(&a.role()) && !LESSON_CONTROLS.contains(&label.as_str()))
+                        .then(|| (a.role(), label))
+                })
+                .collect();
+            assert!(
+                widgets.len() > 3,
+                "{at}: only {} widgets found",
+                widgets.len()
+            );
+            for (i, (role, label)) in widgets.iter().enumerate() {
+                // The same label twice (each plot's png button): its own occurrence.
+                let nth = widgets[..i]
+                    .iter()
+                    .filter(|w| w == &&(*role, label.clone()))
+                    .count();
+                let Some(node) = h.query_all_by_role_and_label(*role, label).nth(nth) else {
+                    continue;
+                };
+                if matches!(role, Role::Slider | Role::SpinButton) {
+                    // A slider or a field moves from the keyboard.
+                    node.focus();
+                    h.run_steps(1);
+                    h.key_press(egui::Key::ArrowRight);
+                } else {
+                    node.click();
+                }
+                h.run_steps(2);
+                // A popup a click opened closes again.
+                h.key_press(egui::Key::Escape);
+                h.run_steps(1);
+                assert_eq!(
+                    h.state().scene_kind(),
+                    scene_of(step.scene),
+                    "{at}: {role:?} '{label}' changed the scene"
+                );
+            }
+            common::settle(&mut h, &format!("{at}: after every widget"));
+            for (key, before) in &locked {
+                assert_eq!(
+                    &h.state().lesson_setting(key),
+                    before,
+                    "{at}: the locked {key} changed"
+                );
+            }
+        }
+    }
 }
