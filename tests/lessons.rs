@@ -538,13 +538,7 @@ fn a_bridge_name_of_a_joint_the_bridge_lacks_has_no_value_and_a_misspelt_one_is_
 fn a_bridge_prediction_whose_answer_an_earlier_openings_plot_shows_fails_the_check() {
     let ask = |first_show: &str| {
         let text = format!(
-            r#"title = "t"
-audience = "a"
-duration_min = 5
-goals = ["g"]
-teacher_notes = "n"
-
-[[step]]
+            r#"{HEADER}[[step]]
 title = "Openings"
 text = "The bridge."
 scene = "bridge"
@@ -642,15 +636,13 @@ fn the_command_line_lists_checks_and_writes_a_handout() {
 
 /// Two compare steps of the paper's base case: the first shows `first_show`, the second asks
 /// wave theory's e.
+/// A test lesson's lines before its first step.
+const HEADER: &str =
+    "title = \"t\"\naudience = \"a\"\nduration_min = 5\ngoals = [\"g\"]\nteacher_notes = \"n\"\n\n";
+
 fn ask_after_showing(first_show: &str) -> Result<lesson::CheckReport, lesson::LessonError> {
     let text = format!(
-        r#"title = "t"
-audience = "a"
-duration_min = 5
-goals = ["g"]
-teacher_notes = "n"
-
-[[step]]
+        r#"{HEADER}[[step]]
 title = "Five models"
 text = "The base case."
 scene = "compare"
@@ -690,13 +682,7 @@ fn a_compare_step_solves_only_the_models_it_names() {
 /// A one-step compare lesson naming `models` whose statement reads `read`.
 fn compare_lesson_naming(models: &str, read: &str) -> Result<lesson::Lesson, lesson::LessonError> {
     let text = format!(
-        r#"title = "t"
-audience = "a"
-duration_min = 5
-goals = ["g"]
-teacher_notes = "n"
-
-[[step]]
+        r#"{HEADER}[[step]]
 title = "Two models"
 text = "The base case."
 scene = "compare"

@@ -181,7 +181,6 @@ fn every_step_holds_its_scene_and_locked_settings_against_tabs_presets_and_choic
     if common::adapter_or_skip().is_none() {
         return;
     }
-    use pounding::model::settings::concrete_keys;
     let labels = tempting_labels();
     for name in lesson::builtin_names() {
         let lesson = lesson::builtin(name).expect("shipped lessons parse");
@@ -192,20 +191,7 @@ fn every_step_holds_its_scene_and_locked_settings_against_tabs_presets_and_choic
             if let Some(p) = &step.prediction {
                 common::answer(&mut h, p, &format!("{name} step {}", k + 1));
             }
-            let keys = concrete_keys(step.scene.settings().0);
-            let locked: Vec<(String, Option<String>)> = keys
-                .into_iter()
-                .filter(|key| {
-                    !step
-                        .unlock
-                        .iter()
-                        .any(|u| key == u || key.starts_with(&format!("{u}.")))
-                })
-                .map(|key| {
-                    let v = h.state().lesson_setting(&key);
-                    (key, v)
-                })
-                .collect();
+            let locked = locked_values(&h, step);
             for label in &labels {
                 let nodes: Vec<_> = h.query_all_by_label(label).collect();
                 if nodes.is_empty() {
@@ -222,13 +208,7 @@ fn every_step_holds_its_scene_and_locked_settings_against_tabs_presets_and_choic
                 );
             }
             common::settle(&mut h, &format!("{at}: after the clicks"));
-            for (key, before) in &locked {
-                assert_eq!(
-                    &h.state().lesson_setting(key),
-                    before,
-                    "{at}: the locked {key} changed"
-                );
-            }
+            assert_still(&h, &locked, &at);
             // A scripted change of a locked key is refused by name.
             if let Some((key, _)) = locked.iter().find(|(_, v)| v.is_some()) {
                 let e = h.state_mut().lesson_set(key, "1").unwrap_err();
@@ -367,6 +347,17 @@ fn locked_values(
         .collect()
 }
 
+/// Every locked setting still has the value it had.
+fn assert_still(h: &Harness<'static, PoundingApp>, locked: &[(String, Option<String>)], at: &str) {
+    for (key, before) in locked {
+        assert_eq!(
+            &h.state().lesson_setting(key),
+            before,
+            "{at}: the locked {key} changed"
+        );
+    }
+}
+
 /// The lesson's own controls (they turn steps, answer, leave), the menus (they open popups;
 /// their items are tried by the tabs-and-presets test) and the buttons that write files (the
 /// exports, Save): every other widget is tried.
@@ -457,13 +448,7 @@ fn every_widget_of_every_step_leaves_the_scene_and_the_locked_settings_as_they_w
                 );
             }
             common::settle(&mut h, &format!("{at}: after every widget"));
-            for (key, before) in &locked {
-                assert_eq!(
-                    &h.state().lesson_setting(key),
-                    before,
-                    "{at}: the locked {key} changed"
-                );
-            }
+            assert_still(&h, &locked, &at);
         }
     }
 }

@@ -257,7 +257,7 @@ impl BridgeScene {
             });
         if super::lecture::on(ui.ctx()) {
             // A hall needs the record, how strong it is and whether it travels.
-            let record = d.motion.name.split(" [").next().unwrap_or_default();
+            let record = d.motion.short_name();
             let travel = d
                 .setup
                 .scenario

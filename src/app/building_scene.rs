@@ -589,7 +589,7 @@ impl BuildingScene {
 
 /// The record and its peak acceleration, as a lecture shows them.
 fn lecture_record(d: &building_view::BuildingDrawing) -> String {
-    let record = d.motion.name.split(" [").next().unwrap_or_default();
+    let record = d.motion.short_name();
     format!("{record}, PGA {:.2} g", d.motion_stats.pga_m_s2 / G)
 }
 

@@ -295,20 +295,8 @@ impl<'a> Scene<'a> {
             if s == 0 { "left" } else { "right" },
             b.storeys,
             if b.storeys == 1 { "" } else { "s" },
-            self.floor_u(s, b.storeys - 1) * 1e3
+            roof_u(self.d, s, self.t) * 1e3
         )
-    }
-
-    /// How many storeys have yielded by now.
-    fn yielded(&self) -> usize {
-        let r = &self.d.result;
-        (0..2)
-            .map(|s| {
-                (0..r.first_yield_s[s].len())
-                    .filter(|&j| r.yielded_by(s, j, self.t))
-                    .count()
-            })
-            .sum()
     }
 
     /// A mark at each level on each side, red while it carries force.
@@ -357,7 +345,7 @@ impl<'a> Scene<'a> {
             lecture::font(painter.ctx(), 12.0),
             text,
         );
-        let yielded = self.yielded();
+        let yielded = yielded(self.d, self.t);
         if r.storey_shear_n.iter().any(|s| !s.is_empty()) {
             painter.text(
                 Pos2::new(rect.right() - 8.0, rect.top() + 22.0),
@@ -370,30 +358,36 @@ impl<'a> Scene<'a> {
     }
 }
 
+/// Building `s`'s roof displacement at time `t` [m].
+fn roof_u(d: &BuildingDrawing, s: usize, t: f64) -> f64 {
+    let r = &d.result;
+    let roof = &r.floor_displacement_m[s];
+    interpolate(&r.time_s, &roof[roof.len() - 1], t)
+}
+
+/// How many storeys have yielded by time `t`.
+fn yielded(d: &BuildingDrawing, t: f64) -> usize {
+    let r = &d.result;
+    (0..2)
+        .map(|s| {
+            (0..r.first_yield_s[s].len())
+                .filter(|&j| r.yielded_by(s, j, t))
+                .count()
+        })
+        .sum()
+}
+
 /// What the view's captions say, as a row of labels above it in lecture mode, where a hall's
 /// font size would run labels painted over the buildings into each other.
 pub fn caption(ui: &mut egui::Ui, record: &str, d: &BuildingDrawing, t: f64, exaggeration: f64) {
-    let scene = Scene::new(
-        egui::Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(400.0, 300.0)),
-        d,
-        t,
-        exaggeration,
-    );
     let r = &d.result;
     ui.horizontal_wrapped(|ui| {
         ui.spacing_mut().item_spacing.x = 24.0;
         ui.label(record);
         ui.label(format!("t = {t:.3} s, drift x{exaggeration:.0}"));
         for s in 0..2 {
-            let roof = scene.floor_u(
-                s,
-                [&d.setup.scenario.left, &d.setup.scenario.right][s].storeys - 1,
-            );
-            ui.label(format!(
-                "{} roof {:+.2} mm",
-                ["left", "right"][s],
-                roof * 1e3
-            ));
+            let roof = roof_u(d, s, t) * 1e3;
+            ui.label(format!("{} roof {roof:+.2} mm", ["left", "right"][s]));
         }
         let f = interpolate(&r.time_s, &r.force_n, t);
         if f > 0.0 {
@@ -405,7 +399,7 @@ pub fn caption(ui: &mut egui::Ui, record: &str, d: &BuildingDrawing, t: f64, exa
         if r.storey_shear_n.iter().any(|s| !s.is_empty()) {
             ui.colored_label(
                 YIELDED,
-                format!("storeys yielded so far: {} (orange)", scene.yielded()),
+                format!("storeys yielded so far: {} (orange)", yielded(d, t)),
             );
         }
     });

@@ -68,14 +68,14 @@ impl Fields {
         key: &str,
         add: impl FnOnce(&mut egui::Ui) -> bool,
     ) -> bool {
-        match &self.lock {
-            None => add(ui),
-            Some(l) if l.opens(key) => add(ui),
-            Some(l) if l.hide_locked => false,
-            Some(_) => {
-                ui.add_enabled_ui(false, add);
-                false
-            }
+        if !self.shows(key) {
+            return false;
+        }
+        if self.lock.as_ref().is_none_or(|l| l.opens(key)) {
+            add(ui)
+        } else {
+            ui.add_enabled_ui(false, add);
+            false
         }
     }
 
@@ -100,10 +100,10 @@ impl Fields {
 
     /// Shows one row; returns whether the value changed.
     pub fn row(&mut self, ui: &mut egui::Ui, id: &str, spec: &Spec, value: &mut f64) -> bool {
-        let open = self.lock.as_ref().is_none_or(|l| l.opens(id));
-        if !open && self.lock.as_ref().is_some_and(|l| l.hide_locked) {
+        if !self.shows(id) {
             return false;
         }
+        let open = self.lock.as_ref().is_none_or(|l| l.opens(id));
         let changed = ui
             .add_enabled_ui(open, |ui| self.row_widgets(ui, id, spec, value))
             .inner;

@@ -48,7 +48,7 @@ fn write_animation(
     let title = format!(
         "A bridge: {} contact, {}",
         result.contact.name(),
-        super::buildings::slide_record(motion)
+        motion.short_name()
     );
     let mut animation = pounding::render::animate_bridge::BridgeAnimation::new(
         setup.clone(),
@@ -58,12 +58,12 @@ fn write_animation(
         a.animate_size,
         a.animate_frames,
     );
-    let end = animation.t_range.1;
-    let default = match &args.animate_around {
-        None => animation.t_range,
-        Some(which) => super::buildings::around(&result.impacts, which, end)?,
-    };
-    animation.t_range = a.range(default, end)?;
+    animation.t_range = super::buildings::frames_range(
+        a,
+        args.animate_around.as_deref(),
+        &result.impacts,
+        animation.t_range,
+    )?;
     a.write(
         args.common.json || args.common.quiet,
         |target, path, progress| animation.write(target, path, a.animate_fps, progress),

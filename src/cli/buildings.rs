@@ -80,7 +80,7 @@ fn write_animation(
     let title = format!(
         "Two buildings: {} contact, {}",
         result.contact.name(),
-        slide_record(motion)
+        motion.short_name()
     );
     let mut animation = pounding::render::animate_buildings::BuildingAnimation::new(
         setup.clone(),
@@ -91,33 +91,38 @@ fn write_animation(
         a.animate_frames,
     );
     animation.exaggeration = args.animate_drift;
-    let end = animation.t_range.1;
-    let default = match &args.animate_around {
-        None => animation.t_range,
-        Some(which) => around(&result.impacts, which, end)?,
-    };
-    animation.t_range = a.range(default, end)?;
+    animation.t_range = frames_range(
+        a,
+        args.animate_around.as_deref(),
+        &result.impacts,
+        animation.t_range,
+    )?;
     a.write(
         args.common.json || args.common.quiet,
         |target, path, progress| animation.write(target, path, a.animate_fps, progress),
     )
 }
 
-/// The record's name for a slide's title: without the note of where it came from.
+/// The frames' time range: slow motion `around` an impact, else the whole run, within
+/// `--animate-from` and `--animate-to`.
 #[cfg(feature = "gui")]
-pub(super) fn slide_record(motion: &GroundMotion) -> &str {
-    motion
-        .name
-        .split(" [")
-        .next()
-        .unwrap_or(&motion.name)
-        .trim()
+pub(super) fn frames_range(
+    a: &super::impact::AnimateArgs,
+    around_which: Option<&str>,
+    impacts: &[pounding::model::building::result::ImpactEvent],
+    whole: (f64, f64),
+) -> anyhow::Result<(f64, f64)> {
+    let default = match around_which {
+        None => whole,
+        Some(which) => around(impacts, which, whole.1)?,
+    };
+    a.range(default, whole.1)
 }
 
 /// The frames' range around one impact (`strongest`, or K from 1): twice its duration before
 /// and after it, at least 20 ms a side, within the run.
 #[cfg(feature = "gui")]
-pub(super) fn around(
+fn around(
     impacts: &[pounding::model::building::result::ImpactEvent],
     which: &str,
     end: f64,

@@ -89,6 +89,12 @@ pub struct MotionStats {
 }
 
 impl GroundMotion {
+    /// The record's name without the note of where it came from (`[built in: ...]`), as a
+    /// slide or a lecture shows it.
+    pub fn short_name(&self) -> &str {
+        self.name.split(" [").next().unwrap_or(&self.name).trim()
+    }
+
     /// Length of the record [s].
     pub fn duration_s(&self) -> f64 {
         self.dt_s * self.accel_m_s2.len().saturating_sub(1) as f64
